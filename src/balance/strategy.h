@@ -1,0 +1,90 @@
+#pragma once
+// Strategy: a load-balancing policy as a pure decision object. It never touches MPI, threads,
+// mutexes or the clock: the master state machine feeds it events (start, a worker's request
+// for more, queue lengths, a lost worker) and carries out the decisions it returns. The same
+// object therefore runs unchanged under the local-thread driver, the MPI driver and the
+// simulator, and is unit-tested with scripted events.
+//
+// Tasks are pixel indices 0 .. taskCount-1 in scan-line order. Workers are 0 .. c-1.
+// Not thread-safe: one master owns one strategy.
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "core/task_set.h"
+
+namespace prt {
+
+// Give `tasks` to `worker`; they go to the back of its queue.
+struct Assign {
+  int worker = 0;
+  TaskSet tasks;
+  bool operator==(const Assign&) const = default;
+};
+
+// Nothing for `worker` now. It waits; it may still get tasks later (a transfer, a lost
+// worker's tasks). The master stops every worker once the image is complete.
+struct NoMoreWork {
+  int worker = 0;
+  bool operator==(const NoMoreWork&) const = default;
+};
+
+// Ask every live worker for its queue length; the answers come back in onQueueLengths().
+struct QueryQueues {
+  bool operator==(const QueryQueues&) const = default;
+};
+
+// Worker `from` sends up to `count` tasks from the back of its queue straight to worker `to`
+// (fewer if its queue has shrunk meanwhile; possibly none).
+struct Transfer {
+  int from = 0;
+  int to = 0;
+  uint64_t count = 0;
+  bool operator==(const Transfer&) const = default;
+};
+
+using Decision = std::variant<Assign, NoMoreWork, QueryQueues, Transfer>;
+using Decisions = std::vector<Decision>;
+
+struct StrategyOptions {
+  double initialPercent = 80;  // reservoir: share of tasks handed out at the start, (0, 100]
+  uint64_t chunk = 64;         // self: tasks per hand-out, >= 1
+};
+
+struct StartInfo {
+  uint64_t taskCount = 0;                 // tasks are 0 .. taskCount-1
+  std::vector<double> speedIndexSeconds;  // one per worker; lower is faster; size is c >= 1
+};
+
+class Strategy {
+ public:
+  virtual ~Strategy() = default;
+
+  virtual std::string name() const = 0;
+
+  // Called once, before anything else. Typically returns the initial assignments.
+  virtual Decisions start(const StartInfo& info) = 0;
+
+  // `worker` has an empty queue and asks for more. The answer must contain, for this worker,
+  // an Assign, a NoMoreWork, or (diffusion) a QueryQueues whose outcome answers it later.
+  virtual Decisions onRequest(int worker) = 0;
+
+  // Answers to the last QueryQueues: lengths[w] is worker w's queue length (0 for lost
+  // workers). Only strategies that emit QueryQueues receive this.
+  virtual Decisions onQueueLengths(const std::vector<uint64_t>& lengths);
+
+  // `worker` is gone; `unfinished` are the tasks it held and had not returned. The strategy
+  // must see that they are rendered by live workers, and never give `worker` anything again.
+  // The default puts them in a recovery pool drained by onRequest of strategies built on
+  // PooledStrategy, or spreads them over idle live workers (see strategy.cpp).
+  virtual Decisions onWorkerLost(int worker, const TaskSet& unfinished) = 0;
+};
+
+// Creates a strategy by name; an unknown name throws InputError listing the valid names.
+std::unique_ptr<Strategy> makeStrategy(const std::string& name, const StrategyOptions& options);
+std::vector<std::string> strategyNames();
+
+}  // namespace prt
