@@ -73,18 +73,29 @@ class Strategy {
   virtual Decisions onRequest(int worker) = 0;
 
   // Answers to the last QueryQueues: lengths[w] is worker w's queue length (0 for lost
-  // workers). Only strategies that emit QueryQueues receive this.
+  // workers). Only strategies that emit QueryQueues receive this; the default ignores it.
   virtual Decisions onQueueLengths(const std::vector<uint64_t>& lengths);
 
   // `worker` is gone; `unfinished` are the tasks it held and had not returned. The strategy
-  // must see that they are rendered by live workers, and never give `worker` anything again.
-  // The default puts them in a recovery pool drained by onRequest of strategies built on
-  // PooledStrategy, or spreads them over idle live workers (see strategy.cpp).
+  // must see that they are rendered by live workers, and never give `worker` anything again
+  // (a later request from it is answered with NoMoreWork). Two policies exist:
+  //  - dynamic strategies (PooledStrategy: reservoir, self, guided, factoring) put the tasks
+  //    back at the front of their pool, so they go out first, and at once serve the live
+  //    workers that were told NoMoreWork and would otherwise never ask again;
+  //  - static ones (StaticStrategy: scatter, blocks; and hybrid) assign them at once to the
+  //    live workers, split evenly into contiguous pieces.
+  // It may be called again for a worker already lost, with tasks that reached it afterwards
+  // (a transfer in flight); they are treated the same way. When no worker is left alive it
+  // returns nothing: the master reports the failure.
   virtual Decisions onWorkerLost(int worker, const TaskSet& unfinished) = 0;
 };
 
-// Creates a strategy by name; an unknown name throws InputError listing the valid names.
+// Creates a strategy by name; an unknown name or an invalid option (initialPercent outside
+// (0, 100], chunk 0) throws InputError listing the valid names or the valid range.
 std::unique_ptr<Strategy> makeStrategy(const std::string& name, const StrategyOptions& options);
-std::vector<std::string> strategyNames();
+std::vector<std::string> strategyNames();  // in the order the help text lists them
+
+// Throws InputError when an option is out of range (whichever strategy would use it).
+void validateStrategyOptions(const StrategyOptions& options);
 
 }  // namespace prt

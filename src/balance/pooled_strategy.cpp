@@ -1,0 +1,72 @@
+#include "balance/pooled_strategy.h"
+
+#include <algorithm>
+
+#include "balance/reservoir_math.h"
+#include "core/check.h"
+
+namespace prt {
+
+Decisions PooledStrategy::start(const StartInfo& info) {
+  validateStartInfo(info);
+  const int workerCount = static_cast<int>(info.speedIndexSeconds.size());
+  pool_ = TaskSet::range(0, info.taskCount);
+  workers_.reset(workerCount);
+  idle_.assign(static_cast<size_t>(workerCount), false);
+  speedIndexSeconds_ = info.speedIndexSeconds;
+  prepare(info);
+
+  Decisions out;
+  for (int w = 0; w < workerCount && !pool_.empty(); ++w) {
+    const uint64_t count = std::min(initialSize(w), pool_.size());
+    if (count > 0) out.push_back(give(w, count));
+  }
+  return out;
+}
+
+Decisions PooledStrategy::onRequest(int worker) {
+  if (!workers_.isLive(worker)) return {NoMoreWork{worker}};
+  if (pool_.empty()) {
+    idle_[static_cast<size_t>(worker)] = true;
+    return {NoMoreWork{worker}};
+  }
+  return {give(worker, handOutSize(worker))};
+}
+
+Decisions PooledStrategy::onWorkerLost(int worker, const TaskSet& unfinished) {
+  workers_.markLost(worker);
+  TaskSet pool = unfinished;
+  pool.append(pool_);
+  pool_ = std::move(pool);
+  if (workers_.liveCount() == 0) return {};
+  onLiveWorkersChanged();
+
+  Decisions out;
+  for (int w : workers_.liveList()) {
+    if (pool_.empty()) break;
+    if (idle_[static_cast<size_t>(w)]) out.push_back(give(w, handOutSize(w)));
+  }
+  return out;
+}
+
+std::vector<double> PooledStrategy::liveDivisionOfLabor() const {
+  const std::vector<int> live = workers_.liveList();
+  std::vector<double> speeds;
+  for (int w : live) speeds.push_back(speedIndexSeconds_[static_cast<size_t>(w)]);
+  std::vector<double> division(speedIndexSeconds_.size(), 0.0);
+  if (live.empty()) return division;
+  const std::vector<double> liveDivision = divisionOfLabor(speeds);
+  for (size_t i = 0; i < live.size(); ++i) {
+    division[static_cast<size_t>(live[i])] = liveDivision[i];
+  }
+  return division;
+}
+
+Decision PooledStrategy::give(int worker, uint64_t count) {
+  PRT_CHECK(workers_.isLive(worker) && !pool_.empty());
+  count = std::clamp<uint64_t>(count, 1, pool_.size());
+  idle_[static_cast<size_t>(worker)] = false;
+  return Assign{worker, pool_.takeFront(count)};
+}
+
+}  // namespace prt

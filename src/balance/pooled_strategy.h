@@ -1,0 +1,51 @@
+#pragma once
+// PooledStrategy: the skeleton of the dynamic strategies (reservoir, self-scheduling, guided,
+// factoring). All tasks start in one pool in scan-line order; start() serves each worker in
+// worker order from the front of the pool, and every request takes the next tasks from the
+// front. Subclasses only say how many tasks each hand-out holds.
+//
+// Lost workers: their unfinished tasks go back to the FRONT of the pool (so they go out
+// first) and every live worker that was told NoMoreWork, and so would never ask again, is
+// served at once as if it had just asked. A request from a lost worker gets NoMoreWork.
+// Not thread-safe.
+
+#include <cstdint>
+#include <vector>
+
+#include "balance/strategy.h"
+#include "balance/task_split.h"
+
+namespace prt {
+
+class PooledStrategy : public Strategy {
+ public:
+  Decisions start(const StartInfo& info) final;
+  Decisions onRequest(int worker) final;
+  Decisions onWorkerLost(int worker, const TaskSet& unfinished) final;
+
+ protected:
+  // Called by start() when the pool holds every task and every worker is live.
+  virtual void prepare(const StartInfo& info) = 0;
+  // Tasks start() gives `worker`; may be 0. Defaults to one hand-out.
+  virtual uint64_t initialSize(int worker) { return handOutSize(worker); }
+  // Tasks a hand-out to live `worker` takes from the non-empty pool; the caller clamps the
+  // answer to [1, remaining()]. Called exactly once per hand-out, so it may keep state.
+  virtual uint64_t handOutSize(int worker) = 0;
+  // Called after a worker is marked lost and its tasks are back in the pool.
+  virtual void onLiveWorkersChanged() {}
+
+  uint64_t remaining() const { return pool_.size(); }
+  const LiveWorkers& workers() const { return workers_; }
+  // The reservoir's division of labour over the live workers; 0 for lost workers.
+  std::vector<double> liveDivisionOfLabor() const;
+
+ private:
+  Decision give(int worker, uint64_t count);
+
+  TaskSet pool_;
+  LiveWorkers workers_;
+  std::vector<bool> idle_;  // told NoMoreWork and given nothing since
+  std::vector<double> speedIndexSeconds_;
+};
+
+}  // namespace prt

@@ -1,0 +1,31 @@
+#pragma once
+// StaticStrategy: the skeleton of strategies that split every task at the start and hand
+// out nothing afterwards (scatter, blocks; hybrid adds diffusion on top). A request gets
+// NoMoreWork. A lost worker's unfinished tasks are assigned at once to the live workers,
+// split evenly into contiguous pieces in worker order: nothing is held back, so no live
+// worker needs to ask for them. Not thread-safe.
+
+#include <cstdint>
+#include <vector>
+
+#include "balance/strategy.h"
+#include "balance/task_split.h"
+
+namespace prt {
+
+class StaticStrategy : public Strategy {
+ public:
+  Decisions start(const StartInfo& info) override;
+  Decisions onRequest(int worker) override;
+  Decisions onWorkerLost(int worker, const TaskSet& unfinished) override;
+
+ protected:
+  // Every task, split over the workers: element w goes to worker w.
+  virtual std::vector<TaskSet> shares(uint64_t taskCount, int workerCount) const = 0;
+  const LiveWorkers& workers() const { return workers_; }
+
+ private:
+  LiveWorkers workers_;
+};
+
+}  // namespace prt

@@ -1,0 +1,39 @@
+#pragma once
+// Helpers shared by the strategies: splitting a TaskSet into near-equal contiguous pieces and
+// tracking which workers are still alive. Plain values; not thread-safe.
+
+#include <cstdint>
+#include <vector>
+
+#include "balance/strategy.h"
+#include "core/task_set.h"
+
+namespace prt {
+
+// Splits `tasks` front to back into `parts` >= 1 contiguous pieces whose sizes differ by at
+// most one, the larger pieces first. Pieces may be empty when parts > tasks.size().
+std::vector<TaskSet> splitEvenly(const TaskSet& tasks, uint64_t parts);
+
+// Which of the c workers are alive. Everyone starts alive; a lost worker never comes back.
+class LiveWorkers {
+ public:
+  void reset(int workerCount) { live_.assign(static_cast<size_t>(workerCount), true); }
+  int workerCount() const { return static_cast<int>(live_.size()); }
+  bool isLive(int worker) const;
+  void markLost(int worker);  // ignores unknown workers
+  int liveCount() const;
+  std::vector<int> liveList() const;  // in worker order
+
+ private:
+  std::vector<bool> live_;
+};
+
+// Assign decisions that give `tasks` to the live workers, split evenly in worker order
+// (empty pieces are skipped). Returns nothing when no worker is alive.
+Decisions spreadOverLiveWorkers(const TaskSet& tasks, const LiveWorkers& workers);
+
+// Throws InputError unless there is at least one worker and every speed index is positive
+// and finite.
+void validateStartInfo(const StartInfo& info);
+
+}  // namespace prt

@@ -1,0 +1,15 @@
+#pragma once
+// The prt subcommands. Each registers its flags on the CLI11 app and returns the action to run
+// once parsing succeeded. Commands are thin: parse, validate, call the libraries.
+
+#include <CLI/CLI.hpp>
+#include <functional>
+
+namespace prt::cli {
+
+using Action = std::function<int()>;  // returns the process exit code
+
+Action addRenderCommand(CLI::App& app);
+Action addSpeedIndexCommand(CLI::App& app);
+
+}  // namespace prt::cli

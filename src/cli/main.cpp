@@ -1,0 +1,35 @@
+// prt: the command-line entry point. Exit codes: 0 success, 1 runtime failure, 2 bad input.
+
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <exception>
+
+#include "cli/commands.h"
+#include "core/input_error.h"
+
+int main(int argc, char** argv) {
+  CLI::App app{"PRT: a ray tracer for networks of computers of different speeds"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "prt 0.1.0");
+  const prt::cli::Action render = prt::cli::addRenderCommand(app);
+  const prt::cli::Action speedIndex = prt::cli::addSpeedIndexCommand(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? 0 : 2;
+  }
+  try {
+    for (CLI::App* sub : app.get_subcommands()) {
+      if (sub->get_name() == "render") return render();
+      if (sub->get_name() == "speed-index") return speedIndex();
+    }
+  } catch (const prt::InputError& e) {
+    std::fprintf(stderr, "%s\n", e.format().c_str());
+    return 2;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "prt: error: %s\n", e.what());
+    return 1;
+  }
+  return 1;
+}

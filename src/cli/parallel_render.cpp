@@ -1,0 +1,207 @@
+#include "cli/parallel_render.h"
+
+#include <cstdio>
+#include <cstdlib>
+#include <tuple>
+
+#include "core/input_error.h"
+#include "core/speed_index.h"
+#include "drive/local_driver.h"
+#include "image/atomic_file.h"
+#include "image/image_io.h"
+#include "metrics/chrome_trace.h"
+#include "trace/renderer.h"
+#ifdef PRT_HAVE_MPI
+#include "mpi/mpi_driver.h"
+#endif
+
+namespace prt::cli {
+namespace {
+
+std::vector<FaultInjection> parseFaults(const std::vector<std::string>& specs) {
+  std::vector<FaultInjection> faults;
+  for (const std::string& spec : specs) {
+    FaultInjection f;
+    char kind[16] = {};
+    unsigned long long pixels = 0;
+    if (std::sscanf(spec.c_str(), "%d:%llu:%15s", &f.worker, &pixels, kind) != 3 ||
+        (std::string(kind) != "crash" && std::string(kind) != "hang")) {
+      throw InputError("--inject-fault '" + spec + "': expected WORKER:PIXELS:crash|hang");
+    }
+    f.afterPixels = pixels;
+    f.kind = std::string(kind) == "crash" ? FaultInjection::Kind::Crash
+                                          : FaultInjection::Kind::Hang;
+    faults.push_back(f);
+  }
+  return faults;
+}
+
+// Serial time for speed-up: given, or measured here by rendering serially on one thread.
+std::optional<double> serialSeconds(const RenderOptions& o, const Scene& scene,
+                                    const RenderSettings& settings) {
+  if (o.serialSeconds) return o.serialSeconds;
+  if (!o.measureSerial) return std::nullopt;
+  if (!o.quiet) std::fprintf(stderr, "measuring the serial time (one thread)...\n");
+  const World world(scene);
+  RenderStats stats;
+  renderImage(Renderer(world, settings), 1, &stats);
+  return stats.seconds;
+}
+
+void writeText(const std::string& path, const std::string& text) {
+  writeFileAtomically(path, [&](std::FILE* f) { std::fwrite(text.data(), 1, text.size(), f); });
+}
+
+}  // namespace
+
+void addParallelOptions(CLI::App& cmd, RenderOptions& o) {
+  const std::string parallel = "Parallel";
+  cmd.add_option("--workers", o.workers,
+                 "Render in parallel with N worker threads, each emulating one machine "
+                 "(local driver); not under mpirun")
+      ->check(CLI::Range(1, 4096))
+      ->group(parallel);
+  std::string names;
+  for (const auto& n : strategyNames()) names += (names.empty() ? "" : ", ") + n;
+  cmd.add_option("--strategy", o.strategy, "Load balancing: " + names + " (default reservoir)")
+      ->group(parallel);
+  cmd.add_option("--initial-percent", o.initialPercent,
+                 "Reservoir: percentage of the tasks handed out at the start, in (0, 100]")
+      ->capture_default_str()
+      ->group(parallel);
+  cmd.add_option("--chunk", o.chunk, "Self-scheduling: tasks per hand-out")
+      ->capture_default_str()
+      ->group(parallel);
+  cmd.add_option("--slowdown", o.slowdowns,
+                 "Comma-separated factors k_i >= 1, one per worker: worker i runs k_i times "
+                 "slower (faithful while the sum of 1/k_i fits the free cores)")
+      ->delimiter(',')
+      ->group(parallel);
+  cmd.add_option("--batch", o.batchPixels, "Pixels a worker renders between returning results")
+      ->capture_default_str()
+      ->group(parallel);
+  cmd.add_option("--worker-timeout", o.workerTimeoutSeconds,
+                 "Seconds of silence after which a worker that owes an answer is declared lost")
+      ->capture_default_str()
+      ->group(parallel);
+  cmd.add_option("--serial-seconds", o.serialSeconds,
+                 "The serial render time, for speed-up and ASU")
+      ->check(CLI::PositiveNumber)
+      ->group(parallel);
+  cmd.add_flag("--measure-serial", o.measureSerial,
+               "Render serially on one thread first to measure the serial time")
+      ->group(parallel);
+  cmd.add_option("--report", o.reportPath, "Write the load-balancing report as JSON")
+      ->group(parallel);
+  cmd.add_option("--trace", o.tracePath,
+                 "Write a Chrome trace-event timeline (open in Perfetto)")
+      ->group(parallel);
+  cmd.add_option("--ownership", o.ownershipPath,
+                 "Write the image coloured by the worker that rendered each pixel")
+      ->group(parallel);
+  cmd.add_option("--inject-fault", o.faults,
+                 "Testing: WORKER:PIXELS:crash|hang makes a local worker fail after rendering "
+                 "that many pixels")
+      ->group(parallel);
+}
+
+bool launchedByMpirun() {
+  for (const char* v : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_RANK"}) {
+    if (std::getenv(v) != nullptr) return true;
+  }
+  return false;
+}
+
+ParallelOptions toParallelOptions(const RenderOptions& o, int workers) {
+  ParallelOptions p;
+  p.workers = workers;
+  p.strategy = o.strategy.value_or("reservoir");
+  p.strategyOptions.initialPercent = o.initialPercent;
+  p.strategyOptions.chunk = o.chunk;
+  p.slowdowns = o.slowdowns;
+  p.batchPixels = o.batchPixels;
+  p.workerTimeoutSeconds = o.workerTimeoutSeconds;
+  p.faults = parseFaults(o.faults);
+  return p;
+}
+
+int finishParallelRun(const RenderOptions& o, const Scene& scene, const ParallelRun& run) {
+  writeImage(run.image, scene.image.output);
+  if (!o.reportPath.empty()) writeText(o.reportPath, run.report.toJson());
+  if (!o.tracePath.empty()) {
+    writeText(o.tracePath, chromeTraceJson(run.events, static_cast<int>(run.report.workers.size()),
+                                           run.report.elapsedSeconds));
+  }
+  if (!o.ownershipPath.empty()) writeImage(ownershipImage(run.image, run.owner), o.ownershipPath);
+  if (!o.quiet) {
+    std::printf("%s: %dx%d, %d spp, DRT %d\n%s", scene.image.output.c_str(), scene.image.width,
+                scene.image.height, run.report.info.samplesPerPixel, run.report.info.drtRate,
+                run.report.toTable().c_str());
+  }
+  return 0;
+}
+
+int renderParallelLocal(const RenderOptions& o, const Scene& scene, const RenderSettings& s) {
+  LocalRunRequest request;
+  request.scene = scene;
+  request.settings = s;
+  request.options = toParallelOptions(o, o.workers.value_or(4));
+  validateParallelOptions(request.options,
+                          static_cast<uint64_t>(scene.image.width) * scene.image.height);
+  request.serialSeconds = serialSeconds(o, scene, s);
+  request.masterSpeedIndexSeconds = measureSpeedIndexSeconds();
+  return finishParallelRun(o, scene, renderLocal(request));
+}
+
+// --- MPI hook (the driver is in src/mpi; this is only the command-line glue) ---------------
+int renderParallelMpi(const RenderOptions& o, const SceneLoader& loadScene) {
+#ifdef PRT_HAVE_MPI
+  MpiSession session;
+  if (!session.isMaster()) {
+    // Every rank parses the same command line. Options that are bad here are bad on the
+    // master too, which reports them once and releases the workers; until then run with
+    // defaults.
+    ParallelOptions options;
+    try {
+      options = toParallelOptions(o, session.workerCount());
+    } catch (const InputError&) {
+    }
+    return runMpiWorker(session, options);
+  }
+  try {
+    if (session.size() < 2) {
+      throw InputError("prt render under MPI needs at least 2 ranks: mpirun -np N+1 prt render "
+                       "... (rank 0 is the master, ranks 1..N the workers)");
+    }
+    MpiRunRequest request;
+    std::tie(request.scene, request.settings) = loadScene();
+    request.options = toParallelOptions(o, session.workerCount());
+    if (!o.slowdowns.empty() && o.slowdowns.size() != static_cast<size_t>(session.workerCount())) {
+      throw InputError("--slowdown lists " + std::to_string(o.slowdowns.size()) +
+                       " values but mpirun started " + std::to_string(session.workerCount()) +
+                       " workers (ranks 1.." + std::to_string(session.workerCount()) +
+                       "; rank 0 is the master); give one per worker");
+    }
+    validateParallelOptions(request.options, static_cast<uint64_t>(request.scene.image.width) *
+                                                 request.scene.image.height);
+    request.serialSeconds = serialSeconds(o, request.scene, request.settings);
+    request.masterSpeedIndexSeconds = measureSpeedIndexSeconds();
+    // From here a lost worker or an MPI failure ends the whole job with a message.
+    const ParallelRun run = renderMpiMaster(session, request);
+    return finishParallelRun(o, request.scene, run);
+  } catch (const InputError&) {
+    session.releaseWorkers(2);  // before the run: the workers exit quietly; main reports
+    throw;
+  } catch (...) {
+    session.releaseWorkers(1);
+    throw;
+  }
+#else
+  (void)o;
+  (void)loadScene;
+  throw InputError("this prt was built without MPI; rebuild with Open MPI installed");
+#endif
+}
+// --- end MPI hook --------------------------------------------------------------------------
+
+}  // namespace prt::cli

@@ -1,0 +1,124 @@
+#include <cstdio>
+#include <cstdlib>
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+
+#include "cli/commands.h"
+#include "cli/parallel_render.h"
+#include "cli/progress_bar.h"
+#include "core/input_error.h"
+#include "image/image_io.h"
+#include "scene/scene_file.h"
+#include "trace/render_settings.h"
+#include "trace/renderer.h"
+
+namespace prt::cli {
+namespace {
+
+// Applies the command line over the scene's own settings; --spp and --drt win over --case.
+RenderSettings resolveSettings(const RenderOptions& o, Scene& scene) {
+  RenderSettings s{scene.sampling.samplesPerPixel, scene.sampling.drtRate};
+  if (!o.testCase.empty()) s = *paperTestCase(o.testCase);
+  if (o.spp) s.samplesPerPixel = *o.spp;
+  if (o.drt) s.drtRate = *o.drt;
+  if (o.width) scene.image.width = *o.width;
+  if (o.height) scene.image.height = *o.height;
+  if (!o.output.empty()) scene.image.output = o.output;
+  const uint64_t pixels = static_cast<uint64_t>(scene.image.width) * scene.image.height;
+  if (pixels > (1ull << 28)) {
+    throw InputError("image too large: " + std::to_string(scene.image.width) + "x" +
+                     std::to_string(scene.image.height) + " exceeds 2^28 pixels");
+  }
+  for (const std::string& path : {scene.image.output, o.ownershipPath}) {
+    if (path.empty() || isSupportedImagePath(path)) continue;
+    std::string list;
+    for (const auto& e : supportedImageExtensions()) list += (list.empty() ? "" : ", ") + e;
+    throw InputError("image file '" + path + "' has an unsupported extension; use " + list);
+  }
+  return s;
+}
+
+int renderSerial(const RenderOptions& o, const Scene& scene, const RenderSettings& settings) {
+  const World world(scene);
+  const Renderer renderer(world, settings);
+  RenderStats stats;
+  Image image = [&] {
+    ProgressBar bar("px", !o.quiet);
+    return renderImage(renderer, o.threads, &stats,
+                       [&](uint64_t done, uint64_t total) { bar.update(done, total); });
+  }();
+  writeImage(image, scene.image.output);
+  if (!o.quiet) {
+    std::printf("%s: %dx%d, %d spp, DRT %d, %.3f s, %llu rays, %.2f Mrays/s\n",
+                scene.image.output.c_str(), scene.image.width, scene.image.height,
+                settings.samplesPerPixel, settings.drtRate, stats.seconds,
+                static_cast<unsigned long long>(stats.rays),
+                stats.seconds > 0 ? static_cast<double>(stats.rays) / stats.seconds / 1e6 : 0.0);
+  }
+  return 0;
+}
+
+int runRender(const RenderOptions& o) {
+  const bool mpi = launchedByMpirun();
+  if (mpi && o.workers) {
+    throw InputError("--workers cannot be used under mpirun: the worker count is the number of "
+                     "ranks minus one (rank 0 is the master)");
+  }
+  // --- MPI hook: only rank 0 reads the scene file; the workers get the scene from it.
+  if (mpi) {
+    return renderParallelMpi(o, [&] {
+      Scene scene = loadSceneFile(o.scenePath);
+      const RenderSettings settings = resolveSettings(o, scene);
+      return std::pair{std::move(scene), settings};
+    });
+  }
+  // --- end MPI hook
+  Scene scene = loadSceneFile(o.scenePath);
+  const RenderSettings settings = resolveSettings(o, scene);
+  if (o.workers || o.strategy) return renderParallelLocal(o, scene, settings);
+  for (const bool parallelOnly : {!o.reportPath.empty(), !o.tracePath.empty(),
+                                  !o.ownershipPath.empty(), !o.slowdowns.empty()}) {
+    if (parallelOnly) {
+      throw InputError("--report, --trace, --ownership and --slowdown describe a parallel run; "
+                       "add --workers N (and optionally --strategy NAME)");
+    }
+  }
+  return renderSerial(o, scene, settings);
+}
+
+}  // namespace
+
+Action addRenderCommand(CLI::App& app) {
+  auto o = std::make_shared<RenderOptions>();
+  auto* cmd = app.add_subcommand(
+      "render",
+      "Render a .scene file to an image, serially or in parallel (--workers N, or under "
+      "mpirun with rank 0 as the master)");
+  cmd->add_option("scene", o->scenePath, "Scene file (.scene)")->required();
+  cmd->add_option("-o,--output", o->output,
+                  "Output image; the extension picks the format (.png, .ppm, .pfm). "
+                  "Default: the scene's output file");
+  cmd->add_option("--width", o->width, "Image width in pixels")->check(CLI::Range(1, 32768));
+  cmd->add_option("--height", o->height, "Image height in pixels")->check(CLI::Range(1, 32768));
+  cmd->add_option("--spp", o->spp, "Supersampling: samples per pixel (SS)")
+      ->check(CLI::Range(1, 4096));
+  cmd->add_option("--drt", o->drt,
+                  "Distributed ray tracing rate: rays per glossy reflection, blurry "
+                  "transmission and area light at each hit (DRT)")
+      ->check(CLI::Range(1, 64));
+  cmd->add_option("--case", o->testCase,
+                  "The paper's test cases: A (DRT 1, SS 8), B (1, 16), C (2, 8), D (2, 16); "
+                  "--spp and --drt override")
+      ->check(CLI::IsMember({"A", "B", "C", "D"}));
+  cmd->add_option("--threads", o->threads,
+                  "Rendering threads of a serial render (0: all cores)")
+      ->check(CLI::Range(0, 1024))
+      ->capture_default_str();
+  cmd->add_flag("-q,--quiet", o->quiet, "No progress bar, summary or report table");
+  addParallelOptions(*cmd, *o);
+  return [o] { return runRender(*o); };
+}
+
+}  // namespace prt::cli

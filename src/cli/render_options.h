@@ -1,0 +1,37 @@
+#pragma once
+// RenderOptions: everything `prt render` accepts, serial and parallel.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace prt::cli {
+
+struct RenderOptions {
+  std::string scenePath;
+  std::string output;         // empty: the scene's own output file
+  std::optional<int> width;   // overrides the scene's image width, pixels
+  std::optional<int> height;  // overrides the scene's image height, pixels
+  std::optional<int> spp;     // SS: samples per pixel
+  std::optional<int> drt;     // DRT rate
+  std::string testCase;       // A|B|C|D: sets DRT and SS as in the paper's Table III
+  int threads = 0;            // serial render threads, 0: all cores
+  bool quiet = false;
+
+  // Parallel rendering.
+  std::optional<int> workers;              // local driver: worker threads
+  std::optional<std::string> strategy;     // load balancing; default reservoir
+  double initialPercent = 80;              // reservoir: share handed out at the start
+  unsigned long long chunk = 64;           // self-scheduling chunk
+  std::vector<double> slowdowns;           // per worker, >= 1
+  unsigned long long batchPixels = 128;    // pixels per returned batch
+  double workerTimeoutSeconds = 30;        // silence before a worker is declared lost
+  std::optional<double> serialSeconds;     // serial time for speed-up
+  bool measureSerial = false;              // render serially first to measure it
+  std::string reportPath;                  // --report FILE.json
+  std::string tracePath;                   // --trace FILE.json
+  std::string ownershipPath;               // --ownership FILE.png
+  std::vector<std::string> faults;         // --inject-fault W:PIXELS:crash|hang
+};
+
+}  // namespace prt::cli

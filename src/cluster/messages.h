@@ -1,0 +1,89 @@
+#pragma once
+// The master-worker protocol as typed messages, with an explicit binary encoding so every
+// transport (threads, MPI) moves and counts the same bytes. The flow, as in the paper:
+//   master -> worker  SceneMsg            the scene text and render settings
+//   worker -> master  SpeedIndexMsg       the worker's Towers of Hanoi time
+//   master -> worker  TasksMsg            pixels to render (also worker -> worker, diffusion)
+//   worker -> master  ResultsMsg          a batch of rendered pixels with their positions
+//   worker -> master  RequestMsg          "request for more": the worker's queue is empty
+//   master -> worker  QueryQueueMsg       diffusion: how long is your queue?
+//   worker -> master  QueueLengthMsg      the answer
+//   master -> worker  TransferOrderMsg    diffusion: send up to `count` tasks to worker `to`
+//   worker -> master  TransferNoticeMsg   which tasks it sent, so the master can recover them
+//   master -> worker  StopMsg             the image is complete
+// Endpoints are worker indices 0..c-1 and kMaster.
+
+#include <cstdint>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "core/task_set.h"
+
+namespace prt {
+
+inline constexpr int kMaster = -1;
+
+struct SceneMsg {
+  std::string sceneText;  // the scene in .scene syntax, written by writeScene()
+  int samplesPerPixel = 1;
+  int drtRate = 1;
+  bool operator==(const SceneMsg&) const = default;
+};
+struct SpeedIndexMsg {
+  double seconds = 0;
+  bool operator==(const SpeedIndexMsg&) const = default;
+};
+struct TasksMsg {
+  TaskSet tasks;
+  bool operator==(const TasksMsg&) const = default;
+};
+struct ResultsMsg {
+  TaskSet tasks;
+  std::vector<float> rgb;  // 3 floats per task, in task order, linear RGB
+  bool operator==(const ResultsMsg&) const = default;
+};
+struct RequestMsg {
+  bool operator==(const RequestMsg&) const = default;
+};
+struct QueryQueueMsg {
+  bool operator==(const QueryQueueMsg&) const = default;
+};
+struct QueueLengthMsg {
+  uint64_t length = 0;
+  bool operator==(const QueueLengthMsg&) const = default;
+};
+struct TransferOrderMsg {
+  int to = 0;
+  uint64_t count = 0;
+  bool operator==(const TransferOrderMsg&) const = default;
+};
+struct TransferNoticeMsg {
+  int to = 0;
+  TaskSet tasks;
+  bool operator==(const TransferNoticeMsg&) const = default;
+};
+struct StopMsg {
+  bool operator==(const StopMsg&) const = default;
+};
+
+using Message = std::variant<SceneMsg, SpeedIndexMsg, TasksMsg, ResultsMsg, RequestMsg,
+                             QueryQueueMsg, QueueLengthMsg, TransferOrderMsg, TransferNoticeMsg,
+                             StopMsg>;
+
+// A message and where it goes.
+struct Envelope {
+  int to = kMaster;
+  Message message;
+};
+using Outbox = std::vector<Envelope>;
+
+using Bytes = std::vector<uint8_t>;
+Bytes encode(const Message& message);
+// Throws std::runtime_error on a malformed buffer (a transport fault, not user input).
+Message decode(const uint8_t* data, size_t size);
+inline Message decode(const Bytes& bytes) { return decode(bytes.data(), bytes.size()); }
+
+const char* messageName(const Message& message);  // "Tasks", "Results", ... for traces and logs
+
+}  // namespace prt

@@ -1,0 +1,65 @@
+#include "cluster/worker.h"
+
+#include "core/check.h"
+
+namespace prt {
+
+Worker::Worker(int id, WorkerOptions options) : id_(id), options_(options) {
+  PRT_CHECK(options_.batchPixels >= 1);
+}
+
+Outbox Worker::setupDone(double speedIndexSeconds) {
+  PRT_CHECK(needsSetup());
+  setUp_ = true;
+  return {Envelope{kMaster, SpeedIndexMsg{speedIndexSeconds}}};
+}
+
+TaskSet Worker::nextBatch() {
+  PRT_CHECK(hasWork());
+  return queue_.takeFront(options_.batchPixels);
+}
+
+Outbox Worker::batchDone(const TaskSet& batch, std::vector<float> rgb) {
+  PRT_CHECK(rgb.size() == 3 * batch.size());
+  Outbox out;
+  if (!batch.empty()) out.push_back({kMaster, ResultsMsg{batch, std::move(rgb)}});
+  requestIfIdle(out);
+  return out;
+}
+
+// "Request for more" once the queue is empty, never twice for the same emptiness: a request
+// answered with nothing leaves the worker waiting until new tasks (or Stop) arrive. A worker
+// the strategy never gave anything does not ask: that was the strategy's decision.
+void Worker::requestIfIdle(Outbox& out) {
+  if (queue_.empty() && !requestOutstanding_ && !stopped_ && setUp_ && tasksReceived_ > 0) {
+    requestOutstanding_ = true;
+    out.push_back({kMaster, RequestMsg{}});
+  }
+}
+
+Outbox Worker::onMessage(int from, const Message& message) {
+  Outbox out;
+  if (stopped_) return out;
+  if (const auto* s = std::get_if<SceneMsg>(&message)) {
+    PRT_CHECK(from == kMaster && !scene_.has_value());
+    scene_ = *s;
+  } else if (const auto* t = std::get_if<TasksMsg>(&message)) {
+    ++tasksReceived_;
+    queue_.append(t->tasks);
+    requestOutstanding_ = false;
+    // An empty transfer (the sender's queue drained meanwhile) leaves us idle: ask again.
+    requestIfIdle(out);
+  } else if (std::holds_alternative<QueryQueueMsg>(message)) {
+    out.push_back({kMaster, QueueLengthMsg{queue_.size()}});
+  } else if (const auto* order = std::get_if<TransferOrderMsg>(&message)) {
+    TaskSet moved = queue_.takeBack(order->count);
+    out.push_back({order->to, TasksMsg{moved}});
+    out.push_back({kMaster, TransferNoticeMsg{order->to, std::move(moved)}});
+    requestIfIdle(out);
+  } else if (std::holds_alternative<StopMsg>(message)) {
+    stopped_ = true;
+  }
+  return out;
+}
+
+}  // namespace prt

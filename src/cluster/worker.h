@@ -1,0 +1,54 @@
+#pragma once
+// Worker: a worker's side of the protocol as an I/O-free state machine. It keeps the task
+// queue and decides what to send; the driver does the effects it asks for — loading the scene
+// and measuring the speed index (needsSetup), rendering batches (nextBatch) — and sends what
+// comes back. The same object runs under threads, MPI and the simulator.
+// Not thread-safe: one driver thread calls it.
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "cluster/messages.h"
+
+namespace prt {
+
+struct WorkerOptions {
+  uint64_t batchPixels = 128;  // pixels rendered between returning results and reading mail
+};
+
+class Worker {
+ public:
+  Worker(int id, WorkerOptions options);
+
+  int id() const { return id_; }
+  Outbox onMessage(int from, const Message& message);
+
+  // After the scene arrives: the driver loads it, measures the speed index, then reports.
+  bool needsSetup() const { return scene_.has_value() && !setUp_; }
+  const SceneMsg& scene() const { return *scene_; }
+  Outbox setupDone(double speedIndexSeconds);
+
+  // Rendering: take the next batch off the front of the queue, render it, hand it back.
+  bool hasWork() const { return setUp_ && !queue_.empty() && !stopped_; }
+  TaskSet nextBatch();
+  Outbox batchDone(const TaskSet& batch, std::vector<float> rgb);
+
+  bool stopped() const { return stopped_; }
+  uint64_t queueLength() const { return queue_.size(); }
+  uint64_t tasksReceived() const { return tasksReceived_; }  // task messages received
+
+ private:
+  void requestIfIdle(Outbox& out);
+
+  int id_;
+  WorkerOptions options_;
+  std::optional<SceneMsg> scene_;
+  bool setUp_ = false;
+  bool stopped_ = false;
+  bool requestOutstanding_ = false;
+  TaskSet queue_;
+  uint64_t tasksReceived_ = 0;
+};
+
+}  // namespace prt

@@ -1,0 +1,118 @@
+#include "drive/local_driver.h"
+
+#include <gtest/gtest.h>
+
+#include "core/input_error.h"
+#include "trace/renderer.h"
+
+namespace prt {
+namespace {
+
+Scene smallScene() {
+  Scene scene;
+  scene.image.width = 20;
+  scene.image.height = 14;
+  scene.camera.eye = Vec3(0, 1.5, -5);
+  scene.camera.lookAt = Vec3(0, 0.8, 0);
+  scene.lights.push_back({SphereLight{{3, 5, -3}, 0.6}, Color(1)});
+  Material glass;
+  glass.transmissivity = 0.8;
+  glass.ior = 1.5;
+  glass.diffuse = 0.1;
+  Material floor;
+  floor.reflectivity = 0.4;
+  floor.glossDegrees = 3;
+  scene.objects.push_back({SphereShape{{0, 1, 0}, 1}, glass});
+  scene.objects.push_back({PlaneShape{{0, 0, 0}, {0, 1, 0}}, floor});
+  return scene;
+}
+
+LocalRunRequest request(const std::string& strategy, int workers) {
+  LocalRunRequest r;
+  r.scene = smallScene();
+  r.settings = RenderSettings{2, 2};
+  r.options.workers = workers;
+  r.options.strategy = strategy;
+  r.options.batchPixels = 16;
+  r.options.speedIndexDiscs = 10;
+  r.options.strategyOptions.chunk = 9;
+  return r;
+}
+
+const Image& serialReference() {
+  static const Image image = [] {
+    const World world(smallScene());
+    return renderImage(Renderer(world, RenderSettings{2, 2}), 1);
+  }();
+  return image;
+}
+
+class LocalDriverTest : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(LocalDriverTest, ImageIsBitIdenticalToSerialForAnyWorkerCount) {
+  for (int workers : {1, 2, 3, 5, 8, 16}) {
+    const ParallelRun run = renderLocal(request(GetParam(), workers));
+    EXPECT_TRUE(run.image == serialReference()) << workers << " workers";
+    uint64_t pixels = 0;
+    for (const WorkerReport& w : run.report.workers) pixels += w.pixels;
+    EXPECT_EQ(pixels, serialReference().pixelCount()) << "every pixel rendered exactly once";
+    for (int16_t owner : run.owner) ASSERT_GE(owner, 0);
+  }
+}
+
+TEST_P(LocalDriverTest, CrashedWorkerIsReplacedAndImageUnchanged) {
+  LocalRunRequest r = request(GetParam(), 3);
+  r.options.faults.push_back({1, 16, FaultInjection::Kind::Crash});
+  const ParallelRun run = renderLocal(r);
+  EXPECT_TRUE(run.image == serialReference());
+  EXPECT_TRUE(run.report.workers[1].lost);
+}
+
+INSTANTIATE_TEST_SUITE_P(AllStrategies, LocalDriverTest, ::testing::ValuesIn(strategyNames()));
+
+TEST(LocalDriverFaultTest, HungWorkerIsDetectedByTimeout) {
+  LocalRunRequest r = request("reservoir", 3);
+  r.options.workerTimeoutSeconds = 1.0;
+  r.options.faults.push_back({2, 0, FaultInjection::Kind::Hang});
+  const ParallelRun run = renderLocal(r);
+  EXPECT_TRUE(run.image == serialReference());
+  EXPECT_TRUE(run.report.workers[2].lost);
+  EXPECT_FALSE(run.report.workers[0].lost);
+}
+
+TEST(LocalDriverFaultTest, EveryWorkerCrashingFailsInsteadOfHanging) {
+  LocalRunRequest r = request("self", 2);
+  r.options.faults.push_back({0, 0, FaultInjection::Kind::Crash});
+  r.options.faults.push_back({1, 0, FaultInjection::Kind::Crash});
+  EXPECT_THROW(renderLocal(r), std::runtime_error);
+}
+
+TEST(LocalDriverOptionsTest, BadOptionsAreInputErrors) {
+  LocalRunRequest r = request("reservoir", 2);
+  r.options.slowdowns = {1, 2, 3};
+  EXPECT_THROW(renderLocal(r), InputError);
+  r.options.slowdowns = {1, 0.5};
+  EXPECT_THROW(renderLocal(r), InputError);
+  r.options.slowdowns.clear();
+  r.options.strategy = "nonesuch";
+  EXPECT_THROW(renderLocal(r), InputError);
+  r.options.strategy = "reservoir";
+  r.options.workers = 20 * 14 + 1;
+  EXPECT_THROW(renderLocal(r), InputError);
+}
+
+TEST(LocalDriverReportTest, ReportCountsMessagesAndSpeedIndices) {
+  LocalRunRequest r = request("reservoir", 2);
+  r.options.slowdowns = {1, 3};
+  r.masterSpeedIndexSeconds = 0.01;
+  r.serialSeconds = 1.0;
+  const ParallelRun run = renderLocal(r);
+  EXPECT_GT(run.report.messages, 4u);
+  EXPECT_GT(run.report.workers[1].speedIndexSeconds, run.report.workers[0].speedIndexSeconds);
+  EXPECT_TRUE(run.report.speedup.has_value());
+  EXPECT_GT(run.report.efficiency, 0.0);
+  EXPECT_LE(run.report.efficiency, 1.0 + 1e-9);
+}
+
+}  // namespace
+}  // namespace prt

@@ -1,0 +1,40 @@
+#pragma once
+// ParallelOptions: how a parallel render is organised, whatever drives it (threads or MPI).
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "balance/strategy.h"
+#include "core/speed_index.h"
+
+namespace prt {
+
+// Test and demonstration hook: make a worker fail part-way through.
+struct FaultInjection {
+  enum class Kind { Crash, Hang };
+  int worker = 0;
+  uint64_t afterPixels = 0;  // fails once it has rendered at least this many pixels
+  Kind kind = Kind::Crash;   // Crash: the connection drops; Hang: it goes silent
+};
+
+struct ParallelOptions {
+  int workers = 4;                     // local driver: worker threads; MPI: ranks - 1
+  std::string strategy = "reservoir";  // see strategyNames()
+  StrategyOptions strategyOptions;
+  std::vector<double> slowdowns;       // per worker, each >= 1; empty: all 1
+  uint64_t batchPixels = 128;          // pixels per returned batch of results
+  double workerTimeoutSeconds = 30;    // silence after which a worker owing an answer is lost
+  int speedIndexDiscs = kSpeedIndexDiscs;  // size of each worker's Towers of Hanoi run
+  std::vector<FaultInjection> faults;  // local driver only
+
+  double slowdownOf(int worker) const {
+    return slowdowns.empty() ? 1.0 : slowdowns[static_cast<size_t>(worker)];
+  }
+};
+
+// Throws InputError for options no driver can run: a slowdown list of the wrong length or
+// with values below 1, an unknown strategy or bad strategy options, more workers than pixels.
+void validateParallelOptions(const ParallelOptions& options, uint64_t pixelCount);
+
+}  // namespace prt

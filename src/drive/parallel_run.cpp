@@ -1,0 +1,69 @@
+#include "drive/parallel_run.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/check.h"
+#include "core/input_error.h"
+#include "scene/scene_file.h"
+
+namespace prt {
+
+void validateParallelOptions(const ParallelOptions& o, uint64_t pixelCount) {
+  if (o.workers < 1) throw InputError("--workers must be at least 1");
+  if (static_cast<uint64_t>(o.workers) > pixelCount) {
+    throw InputError("more workers (" + std::to_string(o.workers) + ") than pixels (" +
+                     std::to_string(pixelCount) + ")");
+  }
+  if (!o.slowdowns.empty()) {
+    if (o.slowdowns.size() != static_cast<size_t>(o.workers)) {
+      throw InputError("--slowdown lists " + std::to_string(o.slowdowns.size()) +
+                       " values for " + std::to_string(o.workers) +
+                       " workers; give one per worker");
+    }
+    for (double k : o.slowdowns) {
+      if (!(k >= 1.0) || !std::isfinite(k)) {
+        throw InputError("--slowdown values must be finite and at least 1 (got " +
+                         std::to_string(k) + ")");
+      }
+    }
+  }
+  if (o.batchPixels < 1) throw InputError("--batch must be at least 1");
+  if (!(o.workerTimeoutSeconds > 0)) throw InputError("--worker-timeout must be positive");
+  makeStrategy(o.strategy, o.strategyOptions);  // throws for unknown names and bad options
+}
+
+ImageAssembler::ImageAssembler(int width, int height)
+    : image_(width, height), owner_(static_cast<size_t>(width) * height, -1) {}
+
+void ImageAssembler::add(int worker, const TaskSet& tasks, const std::vector<float>& rgb) {
+  PRT_CHECK(rgb.size() == 3 * tasks.size());
+  size_t i = 0;
+  tasks.forEach([&](uint64_t pixel) {
+    image_.set(pixel, Color(rgb[i], rgb[i + 1], rgb[i + 2]));
+    owner_[pixel] = static_cast<int16_t>(worker);
+    i += 3;
+  });
+}
+
+SceneMsg makeSceneMessage(const Scene& scene, const RenderSettings& settings) {
+  return SceneMsg{writeScene(scene), settings.samplesPerPixel, settings.drtRate};
+}
+
+Image ownershipImage(const Image& image, const std::vector<int16_t>& owner) {
+  // A qualitative palette (Tableau 10), repeated for more workers.
+  static const Color kPalette[] = {{0.12, 0.47, 0.71}, {1.0, 0.50, 0.05}, {0.17, 0.63, 0.17},
+                                   {0.84, 0.15, 0.16}, {0.58, 0.40, 0.74}, {0.55, 0.34, 0.29},
+                                   {0.89, 0.47, 0.76}, {0.50, 0.50, 0.50}, {0.74, 0.74, 0.13},
+                                   {0.09, 0.75, 0.81}};
+  Image out(image.width(), image.height());
+  for (size_t p = 0; p < owner.size(); ++p) {
+    const Color c = image.at(p);
+    const double luminance = std::clamp(0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z, 0.0, 1.0);
+    const Color base = owner[p] < 0 ? Color(0) : kPalette[owner[p] % 10];
+    out.set(p, base * (0.45 + 0.55 * std::sqrt(luminance)));
+  }
+  return out;
+}
+
+}  // namespace prt

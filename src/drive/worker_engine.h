@@ -1,0 +1,37 @@
+#pragma once
+// WorkerEngine: the effects a worker state machine asks its driver for, shared by the thread
+// and MPI drivers: build the renderer from the scene the master sent, measure the speed index,
+// render a batch — all under the worker's slowdown. One engine per worker; not shared.
+
+#include <memory>
+#include <vector>
+
+#include "cluster/messages.h"
+#include "drive/throttle.h"
+#include "trace/renderer.h"
+
+namespace prt {
+
+class WorkerEngine {
+ public:
+  WorkerEngine(double slowdown, int speedIndexDiscs)
+      : throttle_(slowdown), speedIndexDiscs_(speedIndexDiscs) {}
+
+  // Parses the scene text (the master already validated it) and prepares the renderer.
+  void load(const SceneMsg& scene);
+  // The Towers of Hanoi time, slowed down like everything else this worker computes.
+  double measureSpeedIndex() const;
+  // Renders `batch` on one thread; returns 3 floats per pixel. `seconds` receives the wall
+  // time including the slowdown wait, `rays` the rays traced.
+  std::vector<float> render(const TaskSet& batch, double& seconds, uint64_t& rays) const;
+
+  const Throttle& throttle() const { return throttle_; }
+
+ private:
+  Throttle throttle_;
+  int speedIndexDiscs_;
+  std::unique_ptr<World> world_;
+  std::unique_ptr<Renderer> renderer_;
+};
+
+}  // namespace prt

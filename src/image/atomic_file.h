@@ -1,0 +1,28 @@
+#pragma once
+// Atomic file replacement: a reader of `path` sees either its previous contents (or no file)
+// or the complete new contents, never a half-written file, even if the write fails or the
+// process dies part-way.
+//
+// How: the contents go to a temporary file in the same directory (so the final rename stays
+// on one file system), named `path + ".tmp-<pid>-<counter>"`; it is flushed, synced and
+// closed with every step checked, then renamed onto `path`. On any failure the temporary
+// file is removed and an exception propagates.
+//
+// Thread-safe: concurrent calls use distinct temporary names. Two concurrent writers to the
+// same `path` both succeed and one of the complete files wins.
+
+#include <cstdio>
+#include <functional>
+#include <string>
+
+namespace prt {
+
+// Calls writeContents with the open temporary file (binary mode); it writes the whole file
+// and may throw to abort. Stream errors it leaves set on the FILE are detected afterwards.
+// Throws InputError "cannot write '<path>': <reason>" for I/O failures (missing directory,
+// permission denied, disk full, target is a directory); rethrows whatever writeContents
+// throws, unchanged.
+void writeFileAtomically(const std::string& path,
+                         const std::function<void(std::FILE*)>& writeContents);
+
+}  // namespace prt

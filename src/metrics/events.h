@@ -1,0 +1,40 @@
+#pragma once
+// The one event stream every driver emits (threads, MPI, the simulator). Metrics, the report,
+// the Chrome trace and the ownership map are all computed from it; strategies, master and
+// worker keep no timers of their own. Times are seconds since the run started.
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace prt {
+
+enum class EventKind {
+  Setup,        // a worker loading the scene and measuring its speed index [start, end]
+  Compute,      // a worker rendering a batch of `pixels` pixels [start, end]
+  MessageSent,  // `bytes` sent to `peer` at `start`
+  MessageReceived,  // `bytes` received from `peer` at `start`
+  WorkerLost,   // the master declared `worker` lost at `start`
+};
+
+struct Event {
+  EventKind kind = EventKind::Compute;
+  int worker = 0;     // the endpoint the event happened on: worker index, or -1 for the master
+  double start = 0;   // seconds since the run began
+  double end = 0;     // = start for instantaneous events
+  uint64_t pixels = 0;  // Compute: pixels rendered
+  uint64_t bytes = 0;   // messages: encoded size
+  int peer = 0;         // messages: the other endpoint
+  std::string label;    // messages: the message type ("Tasks", "Results", ...)
+};
+
+// Collects events from one thread; drivers keep one log per thread and merge at the end.
+struct EventLog {
+  std::vector<Event> events;
+  void add(Event e) { events.push_back(std::move(e)); }
+  void merge(const EventLog& other) {
+    events.insert(events.end(), other.events.begin(), other.events.end());
+  }
+};
+
+}  // namespace prt

@@ -1,0 +1,152 @@
+#include "metrics/run_report.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <nlohmann/json.hpp>
+
+namespace prt {
+
+double maximumAchievableSpeedup(double serialSpeedIndex, const std::vector<double>& speedIndices) {
+  double masu = 0;
+  for (double s : speedIndices) {
+    if (s > 0) masu += serialSpeedIndex / s;
+  }
+  return masu;
+}
+
+RunReport makeReport(const RunInfo& info, const std::vector<Event>& events,
+                     double elapsedSeconds) {
+  RunReport r;
+  r.info = info;
+  r.elapsedSeconds = elapsedSeconds;
+  const size_t n = info.workerSpeedIndexSeconds.size();
+  r.workers.resize(n);
+  for (size_t w = 0; w < n; ++w) {
+    WorkerReport& wr = r.workers[w];
+    wr.worker = static_cast<int>(w);
+    wr.speedIndexSeconds = info.workerSpeedIndexSeconds[w];
+    wr.slowdown = w < info.slowdowns.size() ? info.slowdowns[w] : 1.0;
+    wr.tasks = w < info.tasksReceived.size() ? info.tasksReceived[w] : 0;
+  }
+  for (const Event& e : events) {
+    if (e.kind == EventKind::WorkerLost) {
+      if (e.worker >= 0 && static_cast<size_t>(e.worker) < n) {
+        r.workers[static_cast<size_t>(e.worker)].lost = true;
+      }
+      continue;
+    }
+    if (e.kind == EventKind::MessageSent) {
+      ++r.messages;
+      r.bytes += e.bytes;
+    }
+    if (e.worker < 0 || static_cast<size_t>(e.worker) >= n) continue;
+    WorkerReport& wr = r.workers[static_cast<size_t>(e.worker)];
+    switch (e.kind) {
+      case EventKind::Compute:
+        wr.busySeconds += e.end - e.start;
+        wr.pixels += e.pixels;
+        break;
+      case EventKind::MessageSent:
+        ++wr.messagesSent;
+        wr.bytesSent += e.bytes;
+        break;
+      case EventKind::MessageReceived:
+        ++wr.messagesReceived;
+        wr.bytesReceived += e.bytes;
+        break;
+      default:
+        break;
+    }
+  }
+  double busy = 0;
+  for (WorkerReport& wr : r.workers) {
+    wr.idleSeconds = std::max(0.0, elapsedSeconds - wr.busySeconds);
+    busy += wr.busySeconds;
+  }
+  r.efficiency = elapsedSeconds > 0 && n > 0 ? busy / (elapsedSeconds * static_cast<double>(n)) : 0;
+  r.masu = maximumAchievableSpeedup(info.masterSpeedIndexSeconds, info.workerSpeedIndexSeconds);
+  if (info.serialSeconds && elapsedSeconds > 0) {
+    r.speedup = *info.serialSeconds / elapsedSeconds;
+    if (r.masu > 0) r.asu = *r.speedup / r.masu;
+  }
+  return r;
+}
+
+std::string RunReport::toJson() const {
+  using nlohmann::json;
+  json j;
+  j["driver"] = info.driver;
+  j["strategy"] = info.strategy;
+  j["width"] = info.width;
+  j["height"] = info.height;
+  j["samples_per_pixel"] = info.samplesPerPixel;
+  j["drt"] = info.drtRate;
+  j["workers_count"] = workers.size();
+  j["elapsed_s"] = elapsedSeconds;
+  j["serial_s"] = info.serialSeconds ? json(*info.serialSeconds) : json(nullptr);
+  j["speedup"] = speedup ? json(*speedup) : json(nullptr);
+  j["efficiency"] = efficiency;
+  j["masu"] = masu;
+  j["asu"] = asu ? json(*asu) : json(nullptr);
+  j["master_speed_index_s"] = info.masterSpeedIndexSeconds;
+  j["messages"] = messages;
+  j["bytes"] = bytes;
+  j["rays"] = info.rays;
+  json ws = json::array();
+  for (const WorkerReport& w : workers) {
+    ws.push_back({{"worker", w.worker},
+                  {"speed_index_s", w.speedIndexSeconds},
+                  {"slowdown", w.slowdown},
+                  {"tasks", w.tasks},
+                  {"pixels", w.pixels},
+                  {"busy_s", w.busySeconds},
+                  {"idle_s", w.idleSeconds},
+                  {"messages_sent", w.messagesSent},
+                  {"messages_received", w.messagesReceived},
+                  {"bytes_sent", w.bytesSent},
+                  {"bytes_received", w.bytesReceived},
+                  {"lost", w.lost}});
+  }
+  j["workers"] = ws;
+  return j.dump(2) + "\n";
+}
+
+std::string RunReport::toTable() const {
+  std::string out;
+  char line[256];
+  std::snprintf(line, sizeof line, "%-7s %9s %8s %6s %9s %9s %9s %7s %10s\n", "worker", "speed_s",
+                "slowdown", "tasks", "pixels", "busy_s", "idle_s", "msgs", "bytes");
+  out += line;
+  for (const WorkerReport& w : workers) {
+    std::snprintf(line, sizeof line, "%-7s %9.4f %8.2f %6llu %9llu %9.3f %9.3f %7llu %10llu\n",
+                  (std::to_string(w.worker) + (w.lost ? "!" : "")).c_str(), w.speedIndexSeconds,
+                  w.slowdown, static_cast<unsigned long long>(w.tasks),
+                  static_cast<unsigned long long>(w.pixels), w.busySeconds, w.idleSeconds,
+                  static_cast<unsigned long long>(w.messagesSent + w.messagesReceived),
+                  static_cast<unsigned long long>(w.bytesSent + w.bytesReceived));
+    out += line;
+  }
+  auto opt = [](const std::optional<double>& v, const char* fmt) {
+    if (!v) return std::string("n/a");
+    char b[32];
+    std::snprintf(b, sizeof b, fmt, *v);
+    return std::string(b);
+  };
+  std::snprintf(line, sizeof line,
+                "strategy %s (%s), %zu workers: elapsed %.3f s, speed-up %s, efficiency %.1f%%, "
+                "MASU %.2f, ASU %s, %llu messages, %llu bytes\n",
+                info.strategy.c_str(), info.driver.c_str(), workers.size(), elapsedSeconds,
+                opt(speedup, "%.2f").c_str(), 100 * efficiency, masu,
+                asu ? opt(std::optional<double>(100 * *asu), "%.1f%%").c_str() : "n/a",
+                static_cast<unsigned long long>(messages), static_cast<unsigned long long>(bytes));
+  out += line;
+  if (!speedup) out += "(speed-up and ASU need --serial-seconds T or --measure-serial)\n";
+  for (const WorkerReport& w : workers) {
+    if (w.lost) {
+      out += "worker " + std::to_string(w.worker) + " was lost; its tasks were reassigned\n";
+    }
+  }
+  return out;
+}
+
+}  // namespace prt

@@ -1,0 +1,66 @@
+#pragma once
+// RunReport: the paper's measurements of one parallel run, computed from the event stream.
+//   speedup    = serial seconds / elapsed seconds (the SRT's time over the PRT's)
+//   efficiency = sum of workers' execution (busy) time / (elapsed * workers)
+//   masu       = sum over workers of speed_SRT / speed_i (speed indices are times; the serial
+//                machine's index is the master's)
+//   asu        = speedup / masu
+// Busy time is time spent rendering, including the wait a --slowdown adds to emulate a slower
+// machine; idle time is the rest of the elapsed time.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "metrics/events.h"
+
+namespace prt {
+
+struct WorkerReport {
+  int worker = 0;
+  double speedIndexSeconds = 0;
+  double slowdown = 1;
+  uint64_t tasks = 0;   // task messages received (assignments and transfers)
+  uint64_t pixels = 0;  // pixels rendered
+  double busySeconds = 0;
+  double idleSeconds = 0;
+  uint64_t messagesSent = 0, messagesReceived = 0;
+  uint64_t bytesSent = 0, bytesReceived = 0;
+  bool lost = false;
+};
+
+struct RunInfo {
+  std::string driver;    // "local", "mpi", "simulated"
+  std::string strategy;
+  int width = 0, height = 0;
+  int samplesPerPixel = 1, drtRate = 1;
+  double masterSpeedIndexSeconds = 0;   // the serial machine's speed index
+  std::vector<double> workerSpeedIndexSeconds;
+  std::vector<double> slowdowns;        // per worker, 1 = full speed
+  std::vector<uint64_t> tasksReceived;  // per worker
+  std::optional<double> serialSeconds;  // for speed-up; absent: speed-up not reported
+  uint64_t rays = 0;
+};
+
+struct RunReport {
+  RunInfo info;
+  double elapsedSeconds = 0;
+  std::optional<double> speedup;
+  double efficiency = 0;
+  double masu = 0;
+  std::optional<double> asu;
+  uint64_t messages = 0, bytes = 0;
+  std::vector<WorkerReport> workers;
+
+  std::string toJson() const;       // keys: elapsed_s, speedup, efficiency, masu, asu, ...
+  std::string toTable() const;      // a readable table for the terminal
+};
+
+// `elapsedSeconds` is the master's wall time from sending the scene to writing the image.
+RunReport makeReport(const RunInfo& info, const std::vector<Event>& events, double elapsedSeconds);
+
+// Maximum achievable speed-up: sum of speedIndexSerial / speedIndex_i.
+double maximumAchievableSpeedup(double serialSpeedIndex, const std::vector<double>& speedIndices);
+
+}  // namespace prt

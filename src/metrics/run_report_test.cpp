@@ -1,0 +1,89 @@
+#include "metrics/run_report.h"
+
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "metrics/chrome_trace.h"
+
+namespace prt {
+namespace {
+
+// The paper's Table 2: SRT 0.3 s, four workers -> theoretical speed-ups 98.28 %, 46.52 %,
+// 99.56 %, 97.43 %, MASU 341.79 %.
+TEST(RunReportTest, MasuMatchesThePapersTable2) {
+  const std::vector<double> speeds = {0.30525, 0.644833, 0.301333, 0.307917};
+  EXPECT_NEAR(0.3 / speeds[1], 0.4652, 5e-5);
+  EXPECT_NEAR(maximumAchievableSpeedup(0.3, speeds), 3.4179, 5e-4);
+}
+
+RunInfo twoWorkers() {
+  RunInfo info;
+  info.driver = "local";
+  info.strategy = "reservoir";
+  info.masterSpeedIndexSeconds = 0.1;
+  info.workerSpeedIndexSeconds = {0.1, 0.2};
+  info.slowdowns = {1, 2};
+  info.tasksReceived = {3, 1};
+  info.serialSeconds = 6.0;
+  return info;
+}
+
+TEST(RunReportTest, EfficiencySpeedupAndAsuFromEvents) {
+  std::vector<Event> events;
+  events.push_back({EventKind::Compute, 0, 0.0, 3.0, 100, 0, 0, ""});
+  events.push_back({EventKind::Compute, 0, 3.5, 4.0, 20, 0, 0, ""});
+  events.push_back({EventKind::Compute, 1, 0.0, 2.0, 30, 0, 0, ""});
+  events.push_back({EventKind::MessageSent, 0, 1.0, 1.0, 0, 500, -1, "Results"});
+  events.push_back({EventKind::MessageReceived, -1, 1.0, 1.0, 0, 500, 0, "Results"});
+  const RunReport r = makeReport(twoWorkers(), events, 4.0);
+  EXPECT_DOUBLE_EQ(r.workers[0].busySeconds, 3.5);
+  EXPECT_DOUBLE_EQ(r.workers[0].idleSeconds, 0.5);
+  EXPECT_EQ(r.workers[0].pixels, 120u);
+  EXPECT_DOUBLE_EQ(r.workers[1].idleSeconds, 2.0);
+  EXPECT_DOUBLE_EQ(r.efficiency, 5.5 / 8.0);
+  EXPECT_DOUBLE_EQ(*r.speedup, 1.5);
+  EXPECT_DOUBLE_EQ(r.masu, 1.5);
+  EXPECT_DOUBLE_EQ(*r.asu, 1.0);
+  EXPECT_EQ(r.messages, 1u);
+  EXPECT_EQ(r.bytes, 500u);
+  EXPECT_EQ(r.workers[0].messagesSent, 1u);
+}
+
+TEST(RunReportTest, JsonHasThePapersKeysAtTopLevel) {
+  const RunReport r = makeReport(twoWorkers(), {}, 2.0);
+  const auto j = nlohmann::json::parse(r.toJson());
+  for (const char* key : {"elapsed_s", "speedup", "efficiency", "masu", "asu", "messages",
+                          "bytes", "workers"}) {
+    EXPECT_TRUE(j.contains(key)) << key;
+  }
+  EXPECT_EQ(j["workers"].size(), 2u);
+  EXPECT_DOUBLE_EQ(j["speedup"].get<double>(), 3.0);
+}
+
+TEST(RunReportTest, WithoutSerialTimeSpeedupIsNull) {
+  RunInfo info = twoWorkers();
+  info.serialSeconds.reset();
+  const RunReport r = makeReport(info, {}, 2.0);
+  EXPECT_FALSE(r.speedup.has_value());
+  EXPECT_TRUE(nlohmann::json::parse(r.toJson())["speedup"].is_null());
+  EXPECT_NE(r.toTable().find("--measure-serial"), std::string::npos);
+}
+
+TEST(ChromeTraceTest, OneTrackPerWorkerWithWaitingSpans) {
+  std::vector<Event> events;
+  events.push_back({EventKind::Compute, 0, 0.5, 1.0, 10, 0, 0, ""});
+  const auto j = nlohmann::json::parse(chromeTraceJson(events, 2, 2.0));
+  int rendering = 0, waiting = 0, names = 0;
+  for (const auto& e : j["traceEvents"]) {
+    if (e["name"] == "rendering") ++rendering;
+    if (e["name"] == "waiting") ++waiting;
+    if (e["name"] == "thread_name") ++names;
+  }
+  EXPECT_EQ(rendering, 1);
+  EXPECT_EQ(waiting, 3);  // worker 0 before and after its span, worker 1 throughout
+  EXPECT_EQ(names, 3);    // master and two workers
+}
+
+}  // namespace
+}  // namespace prt

@@ -1,0 +1,105 @@
+#include "mpi/mpi_session.h"
+
+#include <algorithm>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <numeric>
+#include <stdexcept>
+#include <vector>
+
+#include "mpi/mpi_comm.h"
+#include "mpi/mpi_transport.h"
+
+namespace prt {
+namespace {
+
+using mpi_detail::check;
+
+// Finds the worker ranks sharing this rank's node (MPI_COMM_TYPE_SHARED) and records this
+// rank's neighbours among them, in rank order.
+void findNodeNeighbours(MpiComm& c, int rank) {
+  MPI_Comm node = MPI_COMM_NULL;
+  check(MPI_Comm_split_type(c.comm, MPI_COMM_TYPE_SHARED, rank, MPI_INFO_NULL, &node),
+        "MPI_Comm_split_type", -1);
+  int nodeSize = 0;
+  check(MPI_Comm_size(node, &nodeSize), "MPI_Comm_size", -1);
+  MPI_Group nodeGroup = MPI_GROUP_NULL, allGroup = MPI_GROUP_NULL;
+  check(MPI_Comm_group(node, &nodeGroup), "MPI_Comm_group", -1);
+  check(MPI_Comm_group(c.comm, &allGroup), "MPI_Comm_group", -1);
+  std::vector<int> local(static_cast<size_t>(nodeSize)), global(static_cast<size_t>(nodeSize));
+  std::iota(local.begin(), local.end(), 0);
+  check(MPI_Group_translate_ranks(nodeGroup, nodeSize, local.data(), allGroup, global.data()),
+        "MPI_Group_translate_ranks", -1);
+  MPI_Group_free(&nodeGroup);
+  MPI_Group_free(&allGroup);
+  MPI_Comm_free(&node);
+  std::sort(global.begin(), global.end());
+  for (int r : global) {
+    if (r >= 1 && r < rank) c.previousWorkerOnNode = r;
+    if (r > rank && c.nextWorkerOnNode < 0) c.nextWorkerOnNode = r;
+  }
+}
+
+}  // namespace
+
+MpiSession::MpiSession() : comm_(std::make_unique<MpiComm>()) {
+  int initialized = 0;
+  MPI_Initialized(&initialized);
+  if (initialized) throw std::runtime_error("MPI is already initialised in this process");
+  int provided = MPI_THREAD_SINGLE;
+  if (MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided) != MPI_SUCCESS) {
+    throw std::runtime_error("MPI_Init_thread failed");
+  }
+  try {
+    if (provided < MPI_THREAD_FUNNELED) {
+      throw std::runtime_error("the MPI library does not support MPI_THREAD_FUNNELED");
+    }
+    // A communicator of our own, so a failure is returned to us instead of aborting inside
+    // MPI with a message that does not say what went wrong.
+    check(MPI_Comm_dup(MPI_COMM_WORLD, &comm_->comm), "MPI_Comm_dup", -1);
+    check(MPI_Comm_set_errhandler(comm_->comm, MPI_ERRORS_RETURN), "MPI_Comm_set_errhandler",
+          -1);
+    check(MPI_Comm_rank(comm_->comm, &rank_), "MPI_Comm_rank", -1);
+    check(MPI_Comm_size(comm_->comm, &size_), "MPI_Comm_size", -1);
+    findNodeNeighbours(*comm_, rank_);
+  } catch (const std::exception& e) {
+    abort(e.what(), 1);
+  }
+}
+
+MpiSession::~MpiSession() {
+  int finalized = 0;
+  MPI_Finalized(&finalized);
+  if (finalized) return;
+  if (comm_->comm != MPI_COMM_NULL) MPI_Comm_free(&comm_->comm);
+  MPI_Finalize();
+}
+
+void MpiSession::releaseWorkers(int exitCode) {
+  if (!isMaster() || comm_->runStarted || comm_->released) return;
+  comm_->released = true;
+  try {
+    mpi_detail::MpiTransport transport(comm_->comm);
+    const auto code = static_cast<int32_t>(exitCode);
+    const auto* p = reinterpret_cast<const uint8_t*>(&code);
+    for (int r = 1; r < size_; ++r) {
+      transport.send(r, mpi_detail::kReleaseTag, Bytes(p, p + sizeof code));
+    }
+    if (!transport.flush(10.0)) {
+      throw std::runtime_error("the workers did not take the release message within 10 s");
+    }
+  } catch (const std::exception& e) {
+    abort(std::string("could not release the workers: ") + e.what(), exitCode);
+  }
+}
+
+void MpiSession::abort(const std::string& message, int exitCode) const {
+  std::fprintf(stderr, "prt: error: %s\n", message.c_str());
+  std::fflush(stderr);
+  std::fflush(stdout);
+  MPI_Abort(comm_->comm != MPI_COMM_NULL ? comm_->comm : MPI_COMM_WORLD, exitCode);
+  std::_Exit(exitCode);  // MPI_Abort does not return; if it did, still end this rank
+}
+
+}  // namespace prt

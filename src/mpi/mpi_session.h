@@ -1,0 +1,50 @@
+#pragma once
+// MpiSession: MPI for the lifetime of one run under mpirun, as an RAII object
+// (MPI_Init_thread in the constructor, MPI_Finalize in the destructor). Rank 0 is the master;
+// rank r >= 1 is worker r - 1, so `mpirun -np N+1` gives N workers.
+//
+// Errors: the session's communicator returns MPI errors instead of aborting inside MPI, so the
+// driver can say which rank failed; a failed run then ends every rank with abort(), which
+// prints the reason and calls MPI_Abort — no rank is ever left waiting.
+// Threading: MPI_THREAD_FUNNELED. Only the thread that created the session may use it or
+// call the MPI driver; other threads (e.g. a multi-threaded serial render) must not call MPI.
+// This header does not include <mpi.h>: nothing outside src/mpi sees MPI.
+
+#include <memory>
+#include <string>
+
+namespace prt {
+
+struct MpiComm;  // the communicator and per-node layout; defined inside src/mpi only
+
+class MpiSession {
+ public:
+  // Throws std::runtime_error if MPI cannot start or provide MPI_THREAD_FUNNELED.
+  MpiSession();
+  ~MpiSession();
+  MpiSession(const MpiSession&) = delete;
+  MpiSession& operator=(const MpiSession&) = delete;
+
+  int rank() const { return rank_; }
+  int size() const { return size_; }
+  bool isMaster() const { return rank_ == 0; }
+  int workerCount() const { return size_ - 1; }
+
+  // Master only. Before a run has started: tells every worker there will be no run (bad input
+  // on the master, which reports it), and they exit with `exitCode` without printing. Once the
+  // master has sent the scene it does nothing: the run then either finishes, releasing the
+  // workers with StopMsg, or ends the whole job with abort().
+  void releaseWorkers(int exitCode);
+
+  // Prints "prt: error: <message>" to stderr and ends every rank of the job with `exitCode`.
+  [[noreturn]] void abort(const std::string& message, int exitCode = 1) const;
+
+  MpiComm& comm() const { return *comm_; }  // for the driver in src/mpi
+
+ private:
+  std::unique_ptr<MpiComm> comm_;
+  int rank_ = 0;
+  int size_ = 1;
+};
+
+}  // namespace prt

@@ -1,0 +1,136 @@
+// loadSceneFile: reading a scene file and refusing, with one clear line, anything that is not
+// a scene's text (a missing file, a directory, an empty file, a binary file) before parsing.
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <memory>
+
+#include "scene/scene_file.h"
+
+namespace prt {
+namespace {
+
+// Far beyond any hand-written scene; stops /dev/zero or a wrong huge file from eating memory.
+constexpr size_t kMaxSceneFileBytes = size_t{64} << 20;
+
+std::string quoted(const std::string& path) { return "'" + path + "'"; }
+
+std::string readWholeFile(const std::string& path) {
+  namespace fs = std::filesystem;
+  if (path.empty()) throw InputError("no scene file name given");
+  std::error_code error;
+  const fs::file_status status = fs::status(path, error);
+  if (status.type() == fs::file_type::not_found) {
+    throw InputError("scene file " + quoted(path) + " does not exist");
+  }
+  if (status.type() == fs::file_type::directory) {
+    throw InputError(quoted(path) + " is a directory, not a scene file");
+  }
+
+  const std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"),
+                                                             &std::fclose);
+  if (!file) {
+    throw InputError("cannot open scene file " + quoted(path) + ": " + std::strerror(errno));
+  }
+  std::string text;
+  char buffer[1 << 16];
+  size_t count = 0;
+  while ((count = std::fread(buffer, 1, sizeof buffer, file.get())) > 0) {
+    text.append(buffer, count);
+    if (text.size() > kMaxSceneFileBytes) {
+      throw InputError("scene file " + quoted(path) + " is too large (over " +
+                       std::to_string(kMaxSceneFileBytes >> 20) + " MiB); is it a scene?");
+    }
+  }
+  if (std::ferror(file.get())) {
+    throw InputError("cannot read scene file " + quoted(path) + ": " + std::strerror(errno));
+  }
+  return text;
+}
+
+// Length of the UTF-8 sequence starting at text[i], or 0 if it is not valid UTF-8 (stray
+// continuation bytes, truncation, overlong forms, surrogates, beyond U+10FFFF).
+size_t utf8Length(std::string_view text, size_t i) {
+  const auto byte = [&](size_t k) { return static_cast<unsigned char>(text[k]); };
+  const unsigned char lead = byte(i);
+  size_t length = 0;
+  unsigned lowest = 0;  // smallest second byte allowed, to reject overlong forms and such
+  unsigned highest = 0xBF;
+  if (lead < 0x80) return 1;
+  if (lead >= 0xC2 && lead <= 0xDF) {
+    length = 2, lowest = 0x80;
+  } else if (lead >= 0xE0 && lead <= 0xEF) {
+    length = 3, lowest = lead == 0xE0 ? 0xA0 : 0x80, highest = lead == 0xED ? 0x9F : 0xBF;
+  } else if (lead >= 0xF0 && lead <= 0xF4) {
+    length = 4, lowest = lead == 0xF0 ? 0x90 : 0x80, highest = lead == 0xF4 ? 0x8F : 0xBF;
+  } else {
+    return 0;
+  }
+  if (i + length > text.size()) return 0;
+  if (byte(i + 1) < lowest || byte(i + 1) > highest) return 0;
+  for (size_t k = 2; k < length; ++k) {
+    if (byte(i + k) < 0x80 || byte(i + k) > 0xBF) return 0;
+  }
+  return length;
+}
+
+// Throws unless `text` is UTF-8 text without control characters other than white space.
+void checkIsText(std::string_view text, const std::string& path) {
+  int line = 1;
+  for (size_t i = 0; i < text.size();) {
+    const char c = text[i];
+    const auto u = static_cast<unsigned char>(c);
+    const std::string where = " (line " + std::to_string(line) + ")";
+    if (u == 0) {
+      throw InputError(quoted(path) + " is a binary file, not a scene: it contains NUL bytes" +
+                       where);
+    }
+    const bool whiteSpace = c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\v';
+    if ((u < 0x20 && !whiteSpace) || u == 0x7F) {
+      char code[8];
+      std::snprintf(code, sizeof code, "0x%02X", static_cast<unsigned>(u));
+      throw InputError(quoted(path) + " is not a text scene file: it contains control character " +
+                       code + where);
+    }
+    const size_t length = utf8Length(text, i);
+    if (length == 0) {
+      throw InputError(quoted(path) + " is not a text scene file: it is not valid UTF-8" + where);
+    }
+    if (c == '\n') ++line;
+    i += length;
+  }
+}
+
+// True if there is anything besides white space and comments.
+bool hasContent(std::string_view text) {
+  bool inComment = false;
+  for (const char c : text) {
+    if (c == '\n') {
+      inComment = false;
+    } else if (c == '#') {
+      inComment = true;
+    } else if (!inComment && c != ' ' && c != '\t' && c != '\r' && c != '\f' && c != '\v') {
+      return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
+Scene loadSceneFile(const std::string& path) {
+  const std::string text = readWholeFile(path);
+  std::string_view body = text;
+  // Some editors start UTF-8 files with a byte order mark; it is not part of the scene.
+  if (body.starts_with("\xEF\xBB\xBF")) body.remove_prefix(3);
+  checkIsText(body, path);
+  if (!hasContent(body)) {
+    throw InputError("scene file " + quoted(path) + " is empty" +
+                     (body.empty() ? "" : " (it has only comments and white space)"));
+  }
+  return parseScene(body, path);
+}
+
+}  // namespace prt

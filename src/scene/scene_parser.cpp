@@ -1,0 +1,337 @@
+// parseScene: the directives of the .scene format and the checks that relate several values
+// (a camera looking somewhere, a box with positive extent, an image that fits in memory).
+// Single values are read and range-checked by value_reader, blocks by block_reader.
+
+#include <algorithm>
+#include <cctype>
+#include <cstdint>
+#include <filesystem>
+
+#include "scene/block_reader.h"
+#include "scene/keywords.h"
+#include "scene/number_text.h"
+#include "scene/scene_file.h"
+#include "scene/surface_parser.h"
+#include "scene/value_reader.h"
+
+namespace prt {
+namespace {
+
+// Positions and sizes beyond this are surely mistakes, and squaring them must not overflow.
+constexpr double kMaxCoordinate = 1e9;
+constexpr int kMaxImageSide = 32768;
+// An RGBA float image of 2^28 pixels already takes 4 GiB; larger ones do not fit in memory.
+constexpr int64_t kMaxImagePixels = int64_t{1} << 28;
+constexpr const char* kImageExtensions[] = {".png", ".ppm", ".pfm"};
+
+const Range kCoordinate = Range::closed(-kMaxCoordinate, kMaxCoordinate);
+const Range kSize = Range{0, kMaxCoordinate, true, false};  // in (0, kMaxCoordinate]
+
+std::string at(const Token& token) {
+  return "line " + std::to_string(token.line) + ", column " + std::to_string(token.column);
+}
+
+std::string lowerCase(std::string text) {
+  for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return text;
+}
+
+bool isName(const std::string& word) {
+  return std::all_of(word.begin(), word.end(), [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_';
+  });  // the lexer has already made sure the first character is a letter or '_'
+}
+
+// Keeps a vector that is already unit length (to rounding) exactly as written, so that a
+// written and re-read scene is bit-identical: normalising twice can change the last bit.
+Vec3 unitLength(const Vec3& v) {
+  return std::abs(length(v) - 1.0) <= 1e-12 ? v : normalize(v);
+}
+
+class SceneParser {
+ public:
+  explicit SceneParser(const SourceText& source) : in_(source) {}
+
+  Scene run() {
+    while (!in_.atEnd()) directive(in_.next());
+    requireBlock(camera_, "camera", "camera { eye 0 1 -5  look_at 0 0 0 }");
+    requireBlock(image_, "image", "image { width 320 height 240 }");
+    return std::move(scene_);
+  }
+
+ private:
+  void directive(const Token& keyword) {
+    if (keyword.kind == TokenKind::Word) {
+      const std::string& name = keyword.text;
+      if (name == "camera") return camera(keyword);
+      if (name == "image") return image(keyword);
+      if (name == "environment") return environment(keyword);
+      if (name == "sampling") return sampling(keyword);
+      if (name == "material") return material();
+      if (name == "light") return light();
+      if (name == "sphere") return sphere(keyword);
+      if (name == "box") return box(keyword);
+      if (name == "plane") return plane(keyword);
+      in_.fail(keyword, "unknown directive '" + name + "'; valid directives: " +
+                            joinNames(kDirectives));
+    }
+    if (keyword.kind == TokenKind::RightBrace) {
+      in_.fail(keyword, "unexpected '}': no block is open here");
+    }
+    in_.fail(keyword, "expected a directive (" + joinNames(kDirectives) + "), found " +
+                          describe(keyword));
+  }
+
+  // Blocks that describe the whole scene may appear once.
+  void once(const Token& keyword, const Token*& seen) {
+    if (seen != nullptr) {
+      in_.fail(keyword, "duplicate '" + keyword.text + "' block; the scene already has one at " +
+                            at(*seen));
+    }
+    seen = &keyword;
+  }
+
+  void requireBlock(const Token* seen, const std::string& name, const std::string& example) {
+    if (seen == nullptr) {
+      throw InputError("the scene has no " + name + " block; it needs one, e.g. " + example,
+                       in_.source().wholeFile());
+    }
+  }
+
+  void camera(const Token& keyword) {
+    once(keyword, camera_);
+    Camera& camera = scene_.camera;
+    BlockReader block(in_, keyword, "camera", {"eye", "look_at", "up", "fov"});
+    while (const Token* param = block.next()) {
+      const std::string& name = param->text;
+      if (name == "eye") camera.eye = readVector(in_, name, kCoordinate);
+      if (name == "look_at") camera.lookAt = readVector(in_, name, kCoordinate);
+      if (name == "up") camera.up = readVector(in_, name, kCoordinate);
+      if (name == "fov") camera.fovDegrees = readNumber(in_, name, Range::open(0, 180));
+    }
+    block.require({"eye", "look_at"});
+
+    const Vec3 view = camera.lookAt - camera.eye;
+    if (view == Vec3{}) {
+      in_.fail(block.valueToken("look_at"),
+               "the camera's 'look_at' equals its 'eye'; it must be the point looked at");
+    }
+    const Token& upToken = block.has("up") ? block.valueToken("up") : keyword;
+    if (camera.up == Vec3{}) in_.fail(upToken, "the camera's 'up' must not be zero");
+    // sin of the angle between them; below this the image's orientation is undefined.
+    if (length(cross(normalize(view), normalize(camera.up))) < 1e-6) {
+      in_.fail(upToken, std::string("the camera's ") +
+                            (block.has("up") ? "'up'" : "default 'up' (0 1 0)") +
+                            " is parallel to its view direction (look_at - eye); give an 'up' "
+                            "that is not");
+    }
+  }
+
+  void image(const Token& keyword) {
+    once(keyword, image_);
+    ImageSpec& image = scene_.image;
+    BlockReader block(in_, keyword, "image", {"width", "height", "output"});
+    while (const Token* param = block.next()) {
+      const std::string& name = param->text;
+      if (name == "width") image.width = readInteger(in_, name, 1, kMaxImageSide);
+      if (name == "height") image.height = readInteger(in_, name, 1, kMaxImageSide);
+      if (name == "output") {
+        image.output = readString(in_, name);
+        checkOutput(image.output, block.valueToken("output"));
+      }
+    }
+    block.require({"width", "height"});
+
+    const int64_t pixels = int64_t{image.width} * image.height;
+    if (pixels > kMaxImagePixels) {
+      const size_t later = std::max(block.valueIndex("width"), block.valueIndex("height"));
+      in_.fail(in_.at(later), "image too large: " + std::to_string(image.width) + " x " +
+                                  std::to_string(image.height) + " = " + std::to_string(pixels) +
+                                  " pixels; at most " + std::to_string(kMaxImagePixels) +
+                                  " (2^28) fit in memory");
+    }
+  }
+
+  void checkOutput(const std::string& output, const Token& token) {
+    const std::string extension = lowerCase(std::filesystem::path(output).extension().string());
+    for (const char* allowed : kImageExtensions) {
+      if (extension == allowed) return;
+    }
+    in_.fail(token, "'output' must be a file name ending in " + joinNames(kImageExtensions) +
+                        ", found " + describe(token));
+  }
+
+  void environment(const Token& keyword) {
+    once(keyword, environment_);
+    Environment& environment = scene_.environment;
+    BlockReader block(in_, keyword, "environment", {"background", "ambient", "max_depth"});
+    while (const Token* param = block.next()) {
+      const std::string& name = param->text;
+      if (name == "background") environment.background = readColor(in_, name);
+      if (name == "ambient") environment.ambient = readColor(in_, name);
+      if (name == "max_depth") environment.maxDepth = readInteger(in_, name, 0, 64);
+    }
+  }
+
+  void sampling(const Token& keyword) {
+    once(keyword, sampling_);
+    Sampling& sampling = scene_.sampling;
+    BlockReader block(in_, keyword, "sampling", {"samples", "drt"});
+    while (const Token* param = block.next()) {
+      const std::string& name = param->text;
+      if (name == "samples") sampling.samplesPerPixel = readInteger(in_, name, 1, 4096);
+      if (name == "drt") sampling.drtRate = readInteger(in_, name, 1, 64);
+    }
+  }
+
+  void material() {
+    const Token& name = in_.next();
+    if (name.kind != TokenKind::Word) {
+      in_.fail(name, "expected a material name after 'material', found " + describe(name));
+    }
+    if (!isName(name.text)) {
+      in_.fail(name, "malformed material name '" + name.text +
+                         "'; names consist of letters, digits and '_' and start with a letter "
+                         "or '_'");
+    }
+    if (const auto found = materials_.find(name.text); found != materials_.end()) {
+      in_.fail(name, "material '" + name.text + "' is already defined at " +
+                         at(*found->second.name));
+    }
+    Material material = readSurface(in_, name, "material " + name.text, materials_);
+    materials_.emplace(name.text, NamedMaterial{material, &name});
+  }
+
+  void light() {
+    const Token& kind = in_.next();
+    const std::string kinds = "point, sphere, rect";
+    if (kind.kind != TokenKind::Word) {
+      in_.fail(kind, "expected the kind of light (" + kinds + ") after 'light', found " +
+                         describe(kind));
+    }
+    Light light;
+    if (kind.text == "point") {
+      PointLight point;
+      BlockReader block(in_, kind, "light point", {"position", "color"});
+      while (const Token* param = block.next()) {
+        const std::string& name = param->text;
+        if (name == "position") point.position = readVector(in_, name, kCoordinate);
+        if (name == "color") light.color = readColor(in_, name);
+      }
+      block.require({"position"});
+      light.shape = point;
+    } else if (kind.text == "sphere") {
+      SphereLight sphere;
+      BlockReader block(in_, kind, "light sphere", {"center", "radius", "color"});
+      while (const Token* param = block.next()) {
+        const std::string& name = param->text;
+        if (name == "center") sphere.center = readVector(in_, name, kCoordinate);
+        if (name == "radius") sphere.radius = readNumber(in_, name, kSize);
+        if (name == "color") light.color = readColor(in_, name);
+      }
+      block.require({"center", "radius"});
+      light.shape = sphere;
+    } else if (kind.text == "rect") {
+      light.shape = rectLight(kind, light.color);
+    } else {
+      in_.fail(kind, "unknown kind of light '" + kind.text + "'; valid kinds: " + kinds);
+    }
+    scene_.lights.push_back(light);
+  }
+
+  RectLight rectLight(const Token& kind, Color& color) {
+    RectLight rect;
+    BlockReader block(in_, kind, "light rect", {"corner", "edge1", "edge2", "color"});
+    while (const Token* param = block.next()) {
+      const std::string& name = param->text;
+      if (name == "corner") rect.corner = readVector(in_, name, kCoordinate);
+      if (name == "edge1") rect.edge1 = readVector(in_, name, kCoordinate);
+      if (name == "edge2") rect.edge2 = readVector(in_, name, kCoordinate);
+      if (name == "color") color = readColor(in_, name);
+    }
+    block.require({"corner", "edge1", "edge2"});
+    const double area = length(cross(rect.edge1, rect.edge2));
+    if (!(area > 1e-12 * length(rect.edge1) * length(rect.edge2))) {
+      in_.fail(block.valueToken("edge2"),
+               "the rect light's 'edge1' and 'edge2' are parallel or zero, so it has no area");
+    }
+    return rect;
+  }
+
+  // The parameter `surface`, shared by all objects.
+  void surface(const Token& param, Material& material) {
+    material = readSurface(in_, param, "surface", materials_);
+  }
+
+  void sphere(const Token& keyword) {
+    Object object{SphereShape{}, Material{}};
+    SphereShape& sphere = std::get<SphereShape>(object.shape);
+    BlockReader block(in_, keyword, "sphere", {"center", "radius", "surface"});
+    while (const Token* param = block.next()) {
+      const std::string& name = param->text;
+      if (name == "center") sphere.center = readVector(in_, name, kCoordinate);
+      if (name == "radius") sphere.radius = readNumber(in_, name, kSize);
+      if (name == "surface") surface(*param, object.material);
+    }
+    block.require({"center", "radius"});
+    scene_.objects.push_back(object);
+  }
+
+  void box(const Token& keyword) {
+    Object object{BoxShape{}, Material{}};
+    BoxShape& box = std::get<BoxShape>(object.shape);
+    BlockReader block(in_, keyword, "box", {"min", "max", "surface"});
+    while (const Token* param = block.next()) {
+      const std::string& name = param->text;
+      if (name == "min") box.min = readVector(in_, name, kCoordinate);
+      if (name == "max") box.max = readVector(in_, name, kCoordinate);
+      if (name == "surface") surface(*param, object.material);
+    }
+    block.require({"min", "max"});
+    static constexpr const char* kAxis[] = {"x", "y", "z"};
+    for (int axis = 0; axis < 3; ++axis) {
+      if (!(box.max[axis] > box.min[axis])) {
+        in_.fail(block.valueToken("max", axis),
+                 std::string("the box's 'max' must exceed its 'min' on every axis, but on ") +
+                     kAxis[axis] + " max is " + formatDouble(box.max[axis]) + " and min is " +
+                     formatDouble(box.min[axis]));
+      }
+    }
+    scene_.objects.push_back(object);
+  }
+
+  void plane(const Token& keyword) {
+    Object object{PlaneShape{}, Material{}};
+    PlaneShape& plane = std::get<PlaneShape>(object.shape);
+    BlockReader block(in_, keyword, "plane", {"point", "normal", "surface"});
+    while (const Token* param = block.next()) {
+      const std::string& name = param->text;
+      if (name == "point") plane.point = readVector(in_, name, kCoordinate);
+      if (name == "normal") plane.normal = readVector(in_, name, kCoordinate);
+      if (name == "surface") surface(*param, object.material);
+    }
+    block.require({"point", "normal"});
+    if (plane.normal == Vec3{}) {
+      in_.fail(block.valueToken("normal"), "the plane's 'normal' must not be zero");
+    }
+    plane.normal = unitLength(plane.normal);
+    scene_.objects.push_back(object);
+  }
+
+  TokenStream in_;
+  Scene scene_;
+  MaterialTable materials_;
+  const Token* camera_ = nullptr;  // where each once-only block was given, if it was
+  const Token* image_ = nullptr;
+  const Token* environment_ = nullptr;
+  const Token* sampling_ = nullptr;
+};
+
+}  // namespace
+
+Scene parseScene(std::string_view text, const std::string& fileName) {
+  const SourceText source(text, fileName);
+  return SceneParser(source).run();
+}
+
+}  // namespace prt

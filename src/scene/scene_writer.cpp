@@ -1,0 +1,173 @@
+// writeScene: a Scene as .scene text. Numbers are written in their shortest round-trip form,
+// so parsing the text gives back the very same doubles; every field of the scene-wide blocks
+// is written, while surfaces list only the fields that differ from Material's defaults.
+
+#include <bit>
+#include <cstdint>
+#include <string>
+#include <type_traits>
+#include <variant>
+
+#include "scene/number_text.h"
+#include "scene/scene_file.h"
+
+namespace prt {
+namespace {
+
+// Bitwise, so that -0.0 is not taken for a default 0.0 and dropped.
+bool sameBits(double a, double b) {
+  return std::bit_cast<uint64_t>(a) == std::bit_cast<uint64_t>(b);
+}
+bool sameBits(const Vec3& a, const Vec3& b) {
+  return sameBits(a.x, b.x) && sameBits(a.y, b.y) && sameBits(a.z, b.z);
+}
+
+class Writer {
+ public:
+  std::string take() { return std::move(out_); }
+
+  void open(const std::string& header) { out_ += header + " {"; }
+  void close() { out_ += " }\n"; }
+
+  void number(const char* name, double value) {
+    out_ += ' ';
+    out_ += name;
+    out_ += ' ';
+    out_ += formatDouble(value);
+  }
+  void integer(const char* name, int value) {
+    out_ += ' ';
+    out_ += name;
+    out_ += ' ';
+    out_ += std::to_string(value);
+  }
+  void vector(const char* name, const Vec3& value) {
+    out_ += ' ';
+    out_ += name;
+    for (int axis = 0; axis < 3; ++axis) {
+      out_ += ' ';
+      out_ += formatDouble(value[axis]);
+    }
+  }
+  void string(const char* name, const std::string& value) {
+    out_ += ' ';
+    out_ += name;
+    out_ += " \"";
+    for (const char c : value) {
+      if (c == '"' || c == '\\') out_ += '\\';
+      out_ += c;
+    }
+    out_ += '"';
+  }
+
+  void numberUnlessDefault(const char* name, double value, double defaultValue) {
+    if (!sameBits(value, defaultValue)) number(name, value);
+  }
+  void raw(const std::string& text) { out_ += text; }
+
+ private:
+  std::string out_;
+};
+
+// The fields of `material` that differ from Material's defaults, as " name value ..." text.
+std::string surfaceFields(const Material& material) {
+  const Material defaults;
+  Writer out;
+  if (!sameBits(material.color, defaults.color)) out.vector("color", material.color);
+  out.numberUnlessDefault("ambient", material.ambient, defaults.ambient);
+  out.numberUnlessDefault("diffuse", material.diffuse, defaults.diffuse);
+  out.numberUnlessDefault("specular", material.specular, defaults.specular);
+  out.numberUnlessDefault("phong", material.phongExponent, defaults.phongExponent);
+  out.numberUnlessDefault("reflect", material.reflectivity, defaults.reflectivity);
+  out.numberUnlessDefault("transmit", material.transmissivity, defaults.transmissivity);
+  out.numberUnlessDefault("ior", material.ior, defaults.ior);
+  out.numberUnlessDefault("gloss", material.glossDegrees, defaults.glossDegrees);
+  out.numberUnlessDefault("translucency", material.translucencyDegrees,
+                          defaults.translucencyDegrees);
+  return out.take();
+}
+
+void writeLight(Writer& out, const Light& light) {
+  std::visit(
+      [&](const auto& shape) {
+        using T = std::decay_t<decltype(shape)>;
+        if constexpr (std::is_same_v<T, PointLight>) {
+          out.open("light point");
+          out.vector("position", shape.position);
+        } else if constexpr (std::is_same_v<T, SphereLight>) {
+          out.open("light sphere");
+          out.vector("center", shape.center);
+          out.number("radius", shape.radius);
+        } else {
+          static_assert(std::is_same_v<T, RectLight>);
+          out.open("light rect");
+          out.vector("corner", shape.corner);
+          out.vector("edge1", shape.edge1);
+          out.vector("edge2", shape.edge2);
+        }
+      },
+      light.shape);
+  out.vector("color", light.color);
+  out.close();
+}
+
+void writeObject(Writer& out, const Object& object) {
+  std::visit(
+      [&](const auto& shape) {
+        using T = std::decay_t<decltype(shape)>;
+        if constexpr (std::is_same_v<T, SphereShape>) {
+          out.open("sphere");
+          out.vector("center", shape.center);
+          out.number("radius", shape.radius);
+        } else if constexpr (std::is_same_v<T, BoxShape>) {
+          out.open("box");
+          out.vector("min", shape.min);
+          out.vector("max", shape.max);
+        } else {
+          static_assert(std::is_same_v<T, PlaneShape>);
+          out.open("plane");
+          out.vector("point", shape.point);
+          out.vector("normal", shape.normal);
+        }
+      },
+      object.shape);
+  const std::string fields = surfaceFields(object.material);
+  if (!fields.empty()) out.raw(" surface {" + fields + " }");
+  out.close();
+}
+
+}  // namespace
+
+std::string writeScene(const Scene& scene) {
+  Writer out;
+  const Camera& camera = scene.camera;
+  out.open("camera");
+  out.vector("eye", camera.eye);
+  out.vector("look_at", camera.lookAt);
+  out.vector("up", camera.up);
+  out.number("fov", camera.fovDegrees);
+  out.close();
+
+  out.open("image");
+  out.integer("width", scene.image.width);
+  out.integer("height", scene.image.height);
+  out.string("output", scene.image.output);
+  out.close();
+
+  out.open("environment");
+  out.vector("background", scene.environment.background);
+  out.vector("ambient", scene.environment.ambient);
+  out.integer("max_depth", scene.environment.maxDepth);
+  out.close();
+
+  out.open("sampling");
+  out.integer("samples", scene.sampling.samplesPerPixel);
+  out.integer("drt", scene.sampling.drtRate);
+  out.close();
+
+  for (const Light& light : scene.lights) writeLight(out, light);
+  for (const Object& object : scene.objects) writeObject(out, object);
+  return out.take();
+}
+
+}  // namespace prt

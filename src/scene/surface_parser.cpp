@@ -1,0 +1,74 @@
+#include "scene/surface_parser.h"
+
+#include "scene/block_reader.h"
+#include "scene/value_reader.h"
+
+namespace prt {
+namespace {
+
+const Material& lookUp(const TokenStream& in, const Token& name, const MaterialTable& materials) {
+  const auto found = materials.find(name.text);
+  if (found != materials.end()) return found->second.material;
+  std::string message = "unknown material '" + name.text + "'; ";
+  if (materials.empty()) {
+    message += "no materials are defined yet (define one first with material NAME { ... })";
+  } else {
+    std::string names;
+    for (const auto& [defined, unused] : materials) names += (names.empty() ? "" : ", ") + defined;
+    message += "defined materials: " + names + " (a material must be defined before its use)";
+  }
+  in.fail(name, message);
+}
+
+// Overrides fields of `material` with those given in the block that comes next.
+void readSurfaceBlock(TokenStream& in, const Token& keyword, const std::string& title,
+                      Material& material) {
+  BlockReader block(in, keyword, title,
+                    {"color", "ambient", "diffuse", "specular", "phong", "reflect", "transmit",
+                     "ior", "gloss", "translucency"});
+  const Range weight = Range::closed(0, 1);
+  while (const Token* param = block.next()) {
+    const std::string& name = param->text;
+    if (name == "color") {
+      material.color = readColor(in, name);
+    } else if (name == "ambient") {
+      material.ambient = readNumber(in, name, weight);
+    } else if (name == "diffuse") {
+      material.diffuse = readNumber(in, name, weight);
+    } else if (name == "specular") {
+      material.specular = readNumber(in, name, weight);
+    } else if (name == "phong") {
+      material.phongExponent = readNumber(in, name, Range::atLeast(1));
+    } else if (name == "reflect") {
+      material.reflectivity = readNumber(in, name, weight);
+    } else if (name == "transmit") {
+      material.transmissivity = readNumber(in, name, weight);
+    } else if (name == "ior") {
+      // Above 10 no real material exists; such a value is almost surely a typo.
+      material.ior = readNumber(in, name, Range::closed(1, 10));
+    } else if (name == "gloss") {
+      material.glossDegrees = readNumber(in, name, Range::closedOpen(0, 90));
+    } else {
+      material.translucencyDegrees = readNumber(in, name, Range::closedOpen(0, 90));
+    }
+  }
+}
+
+}  // namespace
+
+Material readSurface(TokenStream& in, const Token& keyword, const std::string& title,
+                     const MaterialTable& materials) {
+  Material material;
+  const Token& first = in.peek();
+  if (first.kind == TokenKind::Word) {
+    material = lookUp(in, in.next(), materials);
+    if (in.peek().kind != TokenKind::LeftBrace) return material;
+  } else if (first.kind != TokenKind::LeftBrace) {
+    in.fail(first, "expected a material name or a '{ ... }' block of surface parameters after " +
+                       describe(keyword) + ", found " + describe(first));
+  }
+  readSurfaceBlock(in, keyword, title, material);
+  return material;
+}
+
+}  // namespace prt

@@ -1,0 +1,52 @@
+#pragma once
+// Bounds: an axis-aligned bounding box and the slab test against a ray. This is the paper's
+// cheap rejection test: every object's box is tried before the object itself.
+
+#include <algorithm>
+#include <limits>
+
+#include "core/ray.h"
+
+namespace prt {
+
+struct Bounds {
+  Vec3 lo{std::numeric_limits<double>::infinity()};
+  Vec3 hi{-std::numeric_limits<double>::infinity()};
+
+  void extend(const Vec3& p) { lo = min(lo, p); hi = max(hi, p); }
+  void extend(const Bounds& b) { lo = min(lo, b.lo); hi = max(hi, b.hi); }
+  Vec3 centroid() const { return 0.5 * (lo + hi); }
+  Vec3 diagonal() const { return hi - lo; }
+  double surfaceArea() const {
+    const Vec3 d = diagonal();
+    return 2.0 * (d.x * d.y + d.y * d.z + d.z * d.x);
+  }
+  int longestAxis() const {
+    const Vec3 d = diagonal();
+    return d.x > d.y ? (d.x > d.z ? 0 : 2) : (d.y > d.z ? 1 : 2);
+  }
+};
+
+// A ray prepared for many slab tests: the inverse direction is computed once.
+struct RayQuery {
+  Ray ray;
+  Vec3 invDirection;
+  explicit RayQuery(const Ray& r)
+      : ray(r), invDirection(1.0 / r.direction.x, 1.0 / r.direction.y, 1.0 / r.direction.z) {}
+};
+
+// True when the ray meets the box within (tMin, tMax).
+inline bool hitsBounds(const Bounds& b, const RayQuery& q, double tMin, double tMax) {
+  for (int axis = 0; axis < 3; ++axis) {
+    double t0 = (b.lo[axis] - q.ray.origin[axis]) * q.invDirection[axis];
+    double t1 = (b.hi[axis] - q.ray.origin[axis]) * q.invDirection[axis];
+    if (t0 > t1) std::swap(t0, t1);
+    // NaN (0 * inf for a ray in a slab plane) compares false and leaves the interval alone.
+    tMin = t0 > tMin ? t0 : tMin;
+    tMax = t1 < tMax ? t1 : tMax;
+    if (tMin > tMax) return false;
+  }
+  return true;
+}
+
+}  // namespace prt

@@ -1,0 +1,27 @@
+#include "trace/camera.h"
+
+#include <cmath>
+#include <numbers>
+
+namespace prt {
+
+PinholeCamera::PinholeCamera(const Camera& camera, int width, int height)
+    : eye_(camera.eye),
+      invWidth_(1.0 / width),
+      invHeight_(1.0 / height) {
+  forward_ = normalize(camera.lookAt - camera.eye);
+  const Vec3 right = normalize(cross(camera.up, forward_));
+  const Vec3 up = cross(forward_, right);
+  const double halfHeight = std::tan(camera.fovDegrees * std::numbers::pi / 360.0);
+  const double halfWidth = halfHeight * static_cast<double>(width) / height;
+  right_ = right * halfWidth;
+  up_ = up * halfHeight;
+}
+
+Ray PinholeCamera::generateRay(double px, double py) const {
+  const double sx = 2.0 * px * invWidth_ - 1.0;
+  const double sy = 1.0 - 2.0 * py * invHeight_;
+  return Ray{eye_, normalize(forward_ + sx * right_ + sy * up_)};
+}
+
+}  // namespace prt

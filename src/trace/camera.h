@@ -1,0 +1,22 @@
+#pragma once
+// PinholeCamera: turns a position on the image plane into a primary ray. Left-handed like
+// POV-Ray: with the default camera (eye on -z looking at the origin, up +y), +x is right.
+
+#include "core/ray.h"
+#include "trace/scene.h"
+
+namespace prt {
+
+class PinholeCamera {
+ public:
+  PinholeCamera(const Camera& camera, int width, int height);
+
+  // (px, py) in pixels: x in [0, width) to the right, y in [0, height) downwards.
+  Ray generateRay(double px, double py) const;
+
+ private:
+  Vec3 eye_, forward_, right_, up_;  // right_ and up_ are scaled to half the image plane
+  double invWidth_, invHeight_;
+};
+
+}  // namespace prt

@@ -1,0 +1,58 @@
+#pragma once
+// Renderer: colours pixels. A pixel's value depends only on the scene, the settings and the
+// pixel's index — never on the thread, process or order that renders it — because every
+// random number is drawn from a counter-based stream keyed by (pixel, sample, path position).
+// That is what makes parallel images bit-identical to serial ones.
+// Immutable after construction; renderPixel may be called from many threads at once.
+
+#include <atomic>
+#include <cstdint>
+#include <functional>
+
+#include "core/task_set.h"
+#include "image/image.h"
+#include "trace/camera.h"
+#include "trace/shader.h"
+
+namespace prt {
+
+class Renderer {
+ public:
+  Renderer(const World& world, const RenderSettings& settings);
+
+  int width() const { return width_; }
+  int height() const { return height_; }
+  uint64_t pixelCount() const { return static_cast<uint64_t>(width_) * height_; }
+  const RenderSettings& settings() const { return settings_; }
+
+  // The pixel at index y * width + x; adds the rays it traced to `rays`.
+  Color renderPixel(uint64_t pixelIndex, uint64_t& rays) const;
+
+ private:
+  const World& world_;
+  RenderSettings settings_;
+  int width_, height_;
+  PinholeCamera camera_;
+  Shader shader_;
+};
+
+// Called after each tile with the number of pixels finished so far; may be called from any
+// rendering thread, but never concurrently with itself.
+using ProgressFn = std::function<void(uint64_t pixelsDone, uint64_t pixelsTotal)>;
+
+struct RenderStats {
+  uint64_t rays = 0;
+  double seconds = 0;
+};
+
+// Renders the whole image with one parallel-for over 16x16 tiles on `threads` threads
+// (<= 0: all cores).
+Image renderImage(const Renderer& renderer, int threads, RenderStats* stats = nullptr,
+                  const ProgressFn& progress = {});
+
+// Renders the given pixels, in parallel over pieces of the set, storing colour i of
+// `colors` for task i of `tasks` (colors.size() == tasks.size()). Returns rays traced.
+uint64_t renderTasks(const Renderer& renderer, const TaskSet& tasks, int threads,
+                     std::vector<Color>& colors);
+
+}  // namespace prt

@@ -1,0 +1,52 @@
+#pragma once
+// Sampling helpers for distributed ray tracing and supersampling. Pure functions of their
+// random inputs, so results depend only on the counter-based Rng that feeds them.
+
+#include <cmath>
+#include <numbers>
+
+#include "core/vec3.h"
+
+namespace prt {
+
+// A direction uniformly distributed over the cone of half-angle `halfAngleRadians` around unit
+// vector `axis`; u1, u2 in [0, 1).
+inline Vec3 sampleCone(const Vec3& axis, double halfAngleRadians, double u1, double u2) {
+  const double cosMax = std::cos(halfAngleRadians);
+  const double cosTheta = 1.0 - u1 * (1.0 - cosMax);
+  const double sinTheta = std::sqrt(std::max(0.0, 1.0 - cosTheta * cosTheta));
+  const double phi = 2.0 * std::numbers::pi * u2;
+  Vec3 u, v;
+  orthonormalBasis(axis, u, v);
+  return sinTheta * std::cos(phi) * u + sinTheta * std::sin(phi) * v + cosTheta * axis;
+}
+
+// A point uniformly distributed over the disc of radius r centred on `center`, perpendicular
+// to unit vector `normal` (Shirley's concentric map keeps strata compact).
+inline Vec3 sampleDisc(const Vec3& center, const Vec3& normal, double r, double u1, double u2) {
+  const double a = 2.0 * u1 - 1.0, b = 2.0 * u2 - 1.0;
+  double radius = 0, phi = 0;
+  if (a != 0 || b != 0) {
+    if (a * a > b * b) {
+      radius = a;
+      phi = (std::numbers::pi / 4) * (b / a);
+    } else {
+      radius = b;
+      phi = std::numbers::pi / 2 - (std::numbers::pi / 4) * (a / b);
+    }
+  }
+  Vec3 u, v;
+  orthonormalBasis(normal, u, v);
+  return center + r * radius * (std::cos(phi) * u + std::sin(phi) * v);
+}
+
+// Sample i of n, stratified over a near-square grid of cells with one jittered point in each
+// of the first n cells: returns the offset inside the pixel, in [0, 1)^2.
+inline void stratifiedSample(int i, int n, double jx, double jy, double& x, double& y) {
+  const int columns = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(n))));
+  const int rows = (n + columns - 1) / columns;
+  x = ((i % columns) + jx) / columns;
+  y = ((i / columns) + jy) / rows;
+}
+
+}  // namespace prt

@@ -1,0 +1,130 @@
+#include "trace/shader.h"
+
+#include <cmath>
+#include <numbers>
+
+#include "trace/sampling.h"
+
+namespace prt {
+namespace {
+
+// Offsets spawned rays off the surface they leave, scaled to the hit's magnitude so large
+// scenes do not self-intersect and small ones do not skip thin gaps.
+double surfaceEpsilon(const Vec3& p) {
+  return 1e-9 * std::max(1.0, maxComponent(Vec3(std::abs(p.x), std::abs(p.y), std::abs(p.z))));
+}
+
+constexpr double kDegrees = std::numbers::pi / 180.0;
+
+}  // namespace
+
+bool refract(const Vec3& d, const Vec3& n, double eta, Vec3& transmitted) {
+  const double cosI = -dot(d, n);
+  const double sin2T = eta * eta * (1.0 - cosI * cosI);
+  if (sin2T > 1.0) return false;
+  const double cosT = std::sqrt(1.0 - sin2T);
+  transmitted = normalize(eta * d + (eta * cosI - cosT) * n);
+  return true;
+}
+
+Shader::Shader(const World& world, const RenderSettings& settings)
+    : world_(world), settings_(settings) {}
+
+Color Shader::direct(const Hit& hit, const Vec3& n, const Vec3& toEye, Rng& rng,
+                     uint64_t& rays) const {
+  const Scene& scene = world_.scene();
+  const Material& m = world_.material(hit.object);
+  Color result = m.ambient * scene.environment.ambient * m.color;
+  const double eps = surfaceEpsilon(hit.point);
+  const Vec3 origin = hit.point + eps * n;
+
+  for (const Light& light : scene.lights) {
+    const bool point = std::holds_alternative<PointLight>(light.shape);
+    const int samples = point ? 1 : settings_.drtRate;
+    Color sum;
+    for (int s = 0; s < samples; ++s) {
+      Vec3 target;
+      if (const auto* p = std::get_if<PointLight>(&light.shape)) {
+        target = p->position;
+      } else if (const auto* sph = std::get_if<SphereLight>(&light.shape)) {
+        const Vec3 axis = normalize(sph->center - hit.point);
+        const double u1 = (s + rng.uniform()) / samples;  // stratified over the samples
+        target = sampleDisc(sph->center, axis, sph->radius, u1, rng.uniform());
+      } else {
+        const auto& rect = std::get<RectLight>(light.shape);
+        const double u1 = (s + rng.uniform()) / samples;
+        target = rect.corner + u1 * rect.edge1 + rng.uniform() * rect.edge2;
+      }
+      Vec3 toLight = target - origin;
+      const double distance = length(toLight);
+      if (distance <= 0) continue;
+      toLight /= distance;
+      const double cosine = dot(n, toLight);
+      if (cosine <= 0) continue;
+      ++rays;
+      const double visible = world_.transmittance(Ray{origin, toLight}, 0.0, distance);
+      if (visible <= 0) continue;
+      const double highlight = std::max(0.0, dot(reflect(-toLight, n), toEye));
+      const Color local = (m.diffuse * cosine) * m.color +
+                          Color(m.specular > 0 ? m.specular * std::pow(highlight, m.phongExponent)
+                                               : 0.0);
+      sum += visible * light.color * local;
+    }
+    result += sum / samples;
+  }
+  return result;
+}
+
+Color Shader::spawn(const Vec3& origin, const Vec3& direction, double spreadRadians,
+                    const Vec3& normal, bool above, int depth, Rng rng, uint64_t& rays) const {
+  if (spreadRadians <= 0) return trace(Ray{origin, direction}, depth, rng.child(0), rays);
+  Color sum;
+  const int n = settings_.drtRate;
+  for (int i = 0; i < n; ++i) {
+    Rng branch = rng.child(static_cast<uint64_t>(i));
+    const double u1 = (i + branch.uniform()) / n;  // stratified in the cone's polar angle
+    Vec3 d = sampleCone(direction, spreadRadians, u1, branch.uniform());
+    // A perturbed ray must stay on the side of the surface it was meant for.
+    if ((dot(d, normal) > 0) != above) d = direction;
+    sum += trace(Ray{origin, d}, depth, branch, rays);
+  }
+  return sum / n;
+}
+
+Color Shader::trace(const Ray& ray, int depth, Rng rng, uint64_t& rays) const {
+  ++rays;
+  Hit hit;
+  const Scene& scene = world_.scene();
+  if (!world_.intersect(ray, 0.0, std::numeric_limits<double>::infinity(), hit)) {
+    return scene.environment.background;
+  }
+  const Material& m = world_.material(hit.object);
+  const bool entering = dot(ray.direction, hit.normal) < 0;
+  const Vec3 n = entering ? hit.normal : -hit.normal;  // faces the incoming ray
+  const Vec3 toEye = -ray.direction;
+
+  Color color = direct(hit, n, toEye, rng, rays);
+  if (depth >= scene.environment.maxDepth) return color;
+
+  const double eps = surfaceEpsilon(hit.point);
+  if (m.reflectivity > 0) {
+    const Vec3 r = reflect(ray.direction, n);
+    color += m.reflectivity * spawn(hit.point + eps * n, r, m.glossDegrees * kDegrees, n, true,
+                                    depth + 1, rng.child(1000), rays);
+  }
+  if (m.transmissivity > 0) {
+    const double eta = entering ? 1.0 / m.ior : m.ior;
+    Vec3 t;
+    if (refract(ray.direction, n, eta, t)) {
+      color += m.transmissivity * spawn(hit.point - eps * n, t, m.translucencyDegrees * kDegrees,
+                                        n, false, depth + 1, rng.child(2000), rays);
+    } else {  // total internal reflection: the transmitted light is reflected back inside
+      color += m.transmissivity * spawn(hit.point + eps * n, reflect(ray.direction, n),
+                                        m.translucencyDegrees * kDegrees, n, true, depth + 1,
+                                        rng.child(2000), rays);
+    }
+  }
+  return color;
+}
+
+}  // namespace prt

@@ -1,0 +1,45 @@
+#pragma once
+// Shader: the paper's simplified Hall model, recursively.
+//   colour = k_a I_a O_d
+//          + sum over lights of  S_l I_l (k_d O_d (N.L) + k_s (R.V)^n)
+//          + k_r * reflected colour + k_t * transmitted colour
+// S_l is the light's visibility: 0 behind an opaque object, the product of the
+// transmissivities of the transmissive surfaces crossed, averaged over the light's samples
+// for lights with extent. Reflection and transmission recurse up to the environment's
+// maximum depth; with gloss or translucency each spawns drtRate perturbed rays.
+// Reads only immutable data; one Shader may be used by many threads at once.
+
+#include <cstdint>
+
+#include "core/rng.h"
+#include "trace/render_settings.h"
+#include "trace/world.h"
+
+namespace prt {
+
+class Shader {
+ public:
+  Shader(const World& world, const RenderSettings& settings);
+
+  // Colour seen along `ray` arriving at recursion depth `depth` (0 for primary rays).
+  // `rays` counts every ray traced, shadow rays included.
+  Color trace(const Ray& ray, int depth, Rng rng, uint64_t& rays) const;
+
+  // Local illumination at a hit: ambient plus every light's diffuse and Phong terms with
+  // shadows. Exposed for tests of the shading terms.
+  Color direct(const Hit& hit, const Vec3& shadingNormal, const Vec3& toEye, Rng& rng,
+               uint64_t& rays) const;
+
+ private:
+  Color spawn(const Vec3& origin, const Vec3& direction, double spreadRadians,
+              const Vec3& normal, bool above, int depth, Rng rng, uint64_t& rays) const;
+
+  const World& world_;
+  RenderSettings settings_;
+};
+
+// Refraction of unit direction d through unit normal n (facing against d) with relative index
+// eta = n_incident / n_transmitted. Returns false on total internal reflection.
+bool refract(const Vec3& d, const Vec3& n, double eta, Vec3& transmitted);
+
+}  // namespace prt

@@ -1,0 +1,211 @@
+#include "trace/shader.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+namespace prt {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// A floor plane through the origin facing +y with the given material, plus extra objects.
+Scene floorScene(const Material& m) {
+  Scene scene;
+  scene.environment.ambient = Color(0.1, 0.2, 0.3);
+  scene.environment.background = Color(0.25, 0.5, 0.75);
+  scene.objects.push_back({PlaneShape{{0, 0, 0}, {0, 1, 0}}, m});
+  return scene;
+}
+
+Hit floorHit() {
+  Hit h;
+  h.point = Vec3(0, 0, 0);
+  h.normal = Vec3(0, 1, 0);
+  h.object = 0;
+  return h;
+}
+
+// Shadow rays start a hair off the surface (see surfaceEpsilon), so directions differ from
+// the hand computation in the tenth digit.
+void expectColorNear(const Color& a, const Color& b) {
+  EXPECT_NEAR(a.x, b.x, 1e-9);
+  EXPECT_NEAR(a.y, b.y, 1e-9);
+  EXPECT_NEAR(a.z, b.z, 1e-9);
+}
+
+TEST(ShaderTest, AmbientTerm) {
+  Material m;
+  m.color = Color(0.5, 0.4, 0.2);
+  m.ambient = 0.8;
+  const World world(floorScene(m));
+  const Shader shader(world, {});
+  Rng rng(1);
+  uint64_t rays = 0;
+  const Color c = shader.direct(floorHit(), {0, 1, 0}, {0, 1, 0}, rng, rays);
+  expectColorNear(c, Color(0.8 * 0.5 * 0.1, 0.8 * 0.4 * 0.2, 0.8 * 0.2 * 0.3));
+  EXPECT_EQ(rays, 0u);
+}
+
+TEST(ShaderTest, DiffuseTermFollowsLambertCosine) {
+  Material m;
+  m.color = Color(1, 0.5, 0.25);
+  m.ambient = 0;
+  m.diffuse = 0.6;
+  Scene scene = floorScene(m);
+  scene.lights.push_back({PointLight{{10, 10, 0}}, Color(2, 2, 2)});  // 45 degrees
+  const World world(scene);
+  const Shader shader(world, {});
+  Rng rng(1);
+  uint64_t rays = 0;
+  const Color c = shader.direct(floorHit(), {0, 1, 0}, {0, 1, 0}, rng, rays);
+  const double k = 2 * 0.6 * std::sqrt(0.5);
+  expectColorNear(c, Color(k * 1, k * 0.5, k * 0.25));
+  EXPECT_EQ(rays, 1u);  // one shadow ray
+}
+
+TEST(ShaderTest, PhongHighlightTakesTheLightColour) {
+  Material m;
+  m.color = Color(0, 0, 0);
+  m.ambient = 0;
+  m.diffuse = 0;
+  m.specular = 0.5;
+  m.phongExponent = 10;
+  Scene scene = floorScene(m);
+  scene.lights.push_back({PointLight{{-10, 10, 0}}, Color(1, 0.5, 1)});
+  const World world(scene);
+  const Shader shader(world, {});
+  Rng rng(1);
+  uint64_t rays = 0;
+  // Eye exactly along the mirror direction: (R.V)^n = 1.
+  const Vec3 mirror = normalize(Vec3(1, 1, 0));
+  expectColorNear(shader.direct(floorHit(), {0, 1, 0}, mirror, rng, rays), Color(0.5, 0.25, 0.5));
+  // Eye straight up: R.V = cos 45 degrees.
+  const double k = 0.5 * std::pow(std::sqrt(0.5), 10);
+  expectColorNear(shader.direct(floorHit(), {0, 1, 0}, {0, 1, 0}, rng, rays),
+                  Color(k, k * 0.5, k));
+}
+
+TEST(ShaderTest, OpaqueOccluderCastsShadowTransmissiveOneAttenuates) {
+  Material m;
+  m.ambient = 0;
+  m.diffuse = 1;
+  m.color = Color(1, 1, 1);
+  Scene scene = floorScene(m);
+  scene.lights.push_back({PointLight{{0, 10, 0}}, Color(1, 1, 1)});
+  Material occluder;
+  occluder.transmissivity = 0.5;
+  scene.objects.push_back({SphereShape{{0, 5, 0}, 1}, occluder});
+  {
+    const World world(scene);
+    Rng rng(1);
+    uint64_t rays = 0;
+    // Two crossings of a surface with k_t = 0.5: a quarter of the light arrives.
+    expectColorNear(Shader(world, {}).direct(floorHit(), {0, 1, 0}, {0, 1, 0}, rng, rays),
+                    Color(0.25));
+  }
+  scene.objects.back().material.transmissivity = 0;
+  const World world(scene);
+  Rng rng(1);
+  uint64_t rays = 0;
+  expectColorNear(Shader(world, {}).direct(floorHit(), {0, 1, 0}, {0, 1, 0}, rng, rays),
+                  Color(0));
+}
+
+TEST(ShaderTest, LightBehindSurfaceContributesNothing) {
+  Material m;
+  m.ambient = 0;
+  Scene scene = floorScene(m);
+  scene.lights.push_back({PointLight{{0, -10, 0}}, Color(1)});
+  const World world(scene);
+  Rng rng(1);
+  uint64_t rays = 0;
+  expectColorNear(Shader(world, {}).direct(floorHit(), {0, 1, 0}, {0, 1, 0}, rng, rays),
+                  Color(0));
+}
+
+TEST(ShaderTest, MirrorReflectsTheBackgroundScaledByReflectivity) {
+  Material mirror;
+  mirror.ambient = 0;
+  mirror.diffuse = 0;
+  mirror.reflectivity = 0.8;
+  const World world(floorScene(mirror));
+  uint64_t rays = 0;
+  const Color c = Shader(world, {}).trace(Ray{{0, 1, 0}, normalize(Vec3(1, -1, 0))}, 0, Rng(3), rays);
+  expectColorNear(c, 0.8 * Color(0.25, 0.5, 0.75));
+  EXPECT_EQ(rays, 2u);  // the camera ray and its reflection
+}
+
+TEST(ShaderTest, RecursionStopsAtMaximumDepth) {
+  Material mirror;
+  mirror.ambient = 0;
+  mirror.diffuse = 0;
+  mirror.reflectivity = 1;
+  Scene scene = floorScene(mirror);
+  scene.environment.maxDepth = 0;
+  const World world(scene);
+  uint64_t rays = 0;
+  expectColorNear(Shader(world, {}).trace(Ray{{0, 1, 0}, {0, -1, 0}}, 0, Rng(3), rays), Color(0));
+  EXPECT_EQ(rays, 1u);
+}
+
+TEST(ShaderTest, SnellsLaw) {
+  // 30 degrees in air into glass (1.5): sin t = sin 30 / 1.5.
+  const double theta = std::numbers::pi / 6;
+  const Vec3 d(std::sin(theta), -std::cos(theta), 0);
+  Vec3 t;
+  ASSERT_TRUE(refract(d, {0, 1, 0}, 1 / 1.5, t));
+  EXPECT_NEAR(t.x, std::sin(theta) / 1.5, 1e-12);
+  EXPECT_LT(t.y, 0);
+  EXPECT_NEAR(length(t), 1, 1e-12);
+  // Normal incidence goes straight through.
+  ASSERT_TRUE(refract({0, -1, 0}, {0, 1, 0}, 1 / 1.5, t));
+  EXPECT_NEAR(t.y, -1, 1e-12);
+}
+
+TEST(ShaderTest, TotalInternalReflectionBeyondCriticalAngle) {
+  // Glass to air: critical angle asin(1/1.5) = 41.8 degrees.
+  const auto dir = [](double degrees) {
+    const double r = degrees * std::numbers::pi / 180;
+    return Vec3(std::sin(r), -std::cos(r), 0);
+  };
+  Vec3 t;
+  EXPECT_TRUE(refract(dir(41), {0, 1, 0}, 1.5, t));
+  EXPECT_FALSE(refract(dir(43), {0, 1, 0}, 1.5, t));
+}
+
+TEST(ShaderTest, ClearGlassWithUnitIndexIsInvisible) {
+  Scene scene;
+  scene.environment.background = Color(0.3, 0.6, 0.9);
+  Material clear;
+  clear.ambient = 0;
+  clear.diffuse = 0;
+  clear.transmissivity = 1;
+  clear.ior = 1;
+  scene.objects.push_back({SphereShape{{0, 0, 5}, 1}, clear});
+  const World world(scene);
+  uint64_t rays = 0;
+  const Color c = Shader(world, {}).trace(Ray{{0, 0, 0}, {0, 0, 1}}, 0, Rng(1), rays);
+  expectColorNear(c, scene.environment.background);
+  EXPECT_EQ(rays, 3u);  // in, through, out
+}
+
+TEST(ShaderTest, GlossyReflectionSpawnsDrtRays) {
+  Material glossy;
+  glossy.ambient = 0;
+  glossy.diffuse = 0;
+  glossy.reflectivity = 1;
+  glossy.glossDegrees = 5;
+  const World world(floorScene(glossy));
+  uint64_t rays = 0;
+  RenderSettings settings;
+  settings.drtRate = 4;
+  const Color c = Shader(world, settings).trace(Ray{{0, 1, 0}, normalize(Vec3(1, -1, 0))}, 0,
+                                                Rng(3), rays);
+  EXPECT_EQ(rays, 5u);
+  expectColorNear(c, Color(0.25, 0.5, 0.75));  // every perturbed ray sees the background
+}
+
+}  // namespace
+}  // namespace prt

@@ -1,0 +1,158 @@
+// End-to-end tests of the prt command: exit codes, error messages and the promise that a
+// failed run writes no image.
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+namespace prt {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Result {
+  int exitCode = -1;
+  std::string output;  // stdout and stderr together
+};
+
+std::string prtBinary() {
+  const char* env = std::getenv("PRT_BINARY");
+  return env ? env : "prt";
+}
+
+Result run(const std::string& args) {
+  const std::string command = prtBinary() + " " + args + " 2>&1";
+  Result r;
+  FILE* pipe = popen(command.c_str(), "r");
+  if (!pipe) return r;
+  std::array<char, 4096> buffer{};
+  size_t n = 0;
+  while ((n = fread(buffer.data(), 1, buffer.size(), pipe)) > 0) r.output.append(buffer.data(), n);
+  const int status = pclose(pipe);
+  r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+class CliTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("prt-cli-test-" + std::to_string(::getpid()) + "-" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  std::string write(const std::string& name, const std::string& text) {
+    const fs::path p = dir_ / name;
+    std::ofstream(p) << text;
+    return p.string();
+  }
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+
+  fs::path dir_;
+};
+
+const char* kValidScene =
+    "camera { eye 0 1 -5 look_at 0 0.5 0 up 0 1 0 fov 40 }\n"
+    "image { width 16 height 12 output \"x.png\" }\n"
+    "light point { position -3 5 -5 color 1 1 1 }\n"
+    "sphere { center 0 0.5 0 radius 0.5 surface { color 1 0 0 } }\n"
+    "plane { point 0 0 0 normal 0 1 0 surface { color 0.8 0.8 0.8 } }\n";
+
+TEST_F(CliTest, RendersAndPrintsSummary) {
+  const std::string scene = write("ok.scene", kValidScene);
+  const Result r = run("render " + scene + " -o " + path("out.png"));
+  EXPECT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_TRUE(fs::exists(path("out.png")));
+  EXPECT_NE(r.output.find("rays"), std::string::npos) << r.output;
+}
+
+TEST_F(CliTest, SceneErrorNamesFileLineColumnAndWritesNothing) {
+  std::string text = kValidScene;
+  text += "sphere { center 0 0 0 radius -1 }\n";
+  const std::string scene = write("bad.scene", text);
+  const Result r = run("render " + scene + " -o " + path("out.png"));
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.output.find("bad.scene:6:"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("^"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(path("out.png")));
+}
+
+TEST_F(CliTest, MissingEmptyAndBinaryFilesAreOneLineErrors) {
+  for (const std::string& file :
+       {path("missing.scene"), write("empty.scene", ""), write("bin.scene", std::string("\0\1\2", 3))}) {
+    const Result r = run("render " + file + " -o " + path("out.png"));
+    EXPECT_EQ(r.exitCode, 2) << file << ": " << r.output;
+    EXPECT_NE(r.output.find("error"), std::string::npos) << r.output;
+  }
+  EXPECT_FALSE(fs::exists(path("out.png")));
+}
+
+TEST_F(CliTest, UnsupportedOutputExtensionIsRejectedBeforeRendering) {
+  const Result r = run("render " + write("ok.scene", kValidScene) + " -o " + path("out.jpg"));
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.output.find(".png"), std::string::npos) << r.output;
+}
+
+TEST_F(CliTest, BadFlagsExitWithCodeTwo) {
+  const std::string scene = write("ok.scene", kValidScene);
+  EXPECT_EQ(run("render " + scene + " --spp 0").exitCode, 2);
+  EXPECT_EQ(run("render " + scene + " --case E").exitCode, 2);
+  EXPECT_EQ(run("render").exitCode, 2);
+  EXPECT_EQ(run("nonesuch").exitCode, 2);
+}
+
+TEST_F(CliTest, ParallelInputErrors) {
+  const std::string scene = write("ok.scene", kValidScene);
+  const std::string out = " -o " + path("out.png");
+  Result r = run("render " + scene + out + " --workers 2 --strategy nonesuch");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.output.find("reservoir"), std::string::npos) << "lists the valid names: " << r.output;
+  r = run("render " + scene + out + " --workers 2 --initial-percent 0");
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  r = run("render " + scene + out + " --workers 2 --initial-percent 101");
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  r = run("render " + scene + out + " --workers 3 --slowdown 1,2");
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  r = run("render " + scene + out + " --workers 2 --slowdown 1,0.5");
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  r = run("render " + scene + out + " --workers 1000");
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_NE(r.output.find("pixels"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(path("out.png")));
+}
+
+TEST_F(CliTest, ParallelRenderWritesReportTraceAndOwnership) {
+  const std::string scene = write("ok.scene", kValidScene);
+  const Result r = run("render " + scene + " -o " + path("par.pfm") +
+                       " --workers 3 --strategy hybrid --slowdown 1,2,2 --serial-seconds 1" +
+                       " --report " + path("r.json") + " --trace " + path("t.json") +
+                       " --ownership " + path("own.png") + " --batch 8");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_TRUE(fs::exists(path("r.json")));
+  EXPECT_TRUE(fs::exists(path("t.json")));
+  EXPECT_TRUE(fs::exists(path("own.png")));
+  EXPECT_NE(r.output.find("efficiency"), std::string::npos) << r.output;
+  // Same bytes as a serial render.
+  ASSERT_EQ(run("render " + scene + " -o " + path("ser.pfm") + " --quiet").exitCode, 0);
+  std::ifstream a(path("par.pfm"), std::ios::binary), b(path("ser.pfm"), std::ios::binary);
+  const std::string sa((std::istreambuf_iterator<char>(a)), {});
+  const std::string sb((std::istreambuf_iterator<char>(b)), {});
+  EXPECT_EQ(sa, sb);
+}
+
+TEST_F(CliTest, SpeedIndexPrintsSeconds) {
+  const Result r = run("speed-index --discs 16 --repeats 1");
+  EXPECT_EQ(r.exitCode, 0);
+  EXPECT_GT(std::atof(r.output.c_str()), 0.0) << r.output;
+}
+
+}  // namespace
+}  // namespace prt
