@@ -8,6 +8,7 @@ namespace prt {
 
 std::vector<uint64_t> factoringChunks(uint64_t batch, const std::vector<double>& weights) {
   std::vector<uint64_t> chunks;
+  chunks.reserve(weights.size());
   for (double weight : weights) {
     chunks.push_back(
         weight > 0 ? std::max<uint64_t>(1, ceilCount(static_cast<double>(batch) * weight)) : 0);

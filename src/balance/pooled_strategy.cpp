@@ -52,6 +52,7 @@ Decisions PooledStrategy::onWorkerLost(int worker, const TaskSet& unfinished) {
 std::vector<double> PooledStrategy::liveDivisionOfLabor() const {
   const std::vector<int> live = workers_.liveList();
   std::vector<double> speeds;
+  speeds.reserve(live.size());
   for (int w : live) speeds.push_back(speedIndexSeconds_[static_cast<size_t>(w)]);
   std::vector<double> division(speedIndexSeconds_.size(), 0.0);
   if (live.empty()) return division;

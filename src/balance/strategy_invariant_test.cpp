@@ -48,7 +48,7 @@ std::vector<Variant> allVariants() {
   return out;
 }
 
-const std::vector<uint64_t> kTaskCounts = {1, 7, 100, 1000, 64 * 48, 333 * 77};
+const std::vector<uint64_t> kTaskCounts = {1, 7, 100, 1000, uint64_t{64} * 48, uint64_t{333} * 77};
 
 std::vector<std::vector<double>> speedLists(int workers) {
   std::vector<double> equal(static_cast<size_t>(workers), 1.0);

@@ -8,7 +8,7 @@
 
 namespace prt {
 
-inline constexpr int kSpeedIndexDiscs = 22;
+inline constexpr int kSpeedIndexDiscs = 25;
 
 // Solves the puzzle for `discs` discs and returns a checksum of the moves made (so the work
 // cannot be optimised away); the number of moves is 2^discs - 1.

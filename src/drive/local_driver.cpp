@@ -21,7 +21,6 @@ struct Network {
   Mailbox master;
   std::vector<std::unique_ptr<Mailbox>> workers;
   std::atomic<bool> shutdown{false};
-  std::mutex speedIndexMutex;  // one speed-index run at a time
 
   double now() const { return std::chrono::duration<double>(Clock::now() - start).count(); }
   Mailbox& boxOf(int endpoint) {
@@ -72,11 +71,7 @@ void runWorker(int id, const ParallelOptions& options, Network& net, WorkerOutco
     if (worker.needsSetup()) {
       const double t0 = net.now();
       engine.load(worker.scene());
-      double speedIndex = 0;
-      {
-        std::lock_guard lock(net.speedIndexMutex);
-        speedIndex = engine.measureSpeedIndex();
-      }
+      const double speedIndex = engine.measureSpeedIndex();
       outcome.log.add({EventKind::Setup, id, t0, net.now(), 0, 0, 0, ""});
       net.send(id, worker.setupDone(speedIndex), outcome.log);
     } else if (worker.hasWork()) {
@@ -118,13 +113,19 @@ ParallelRun renderLocal(const LocalRunRequest& request) {
     threads.emplace_back(runWorker, w, std::cref(options), std::ref(net),
                          std::ref(outcomes[static_cast<size_t>(w)]));
   }
-  std::vector<double> lastHeard(static_cast<size_t>(n), 0.0);
+  // Silence is counted from the last exchange either way: a worker just handed new tasks after
+  // a long wait owes nothing yet.
+  std::vector<double> lastContact(static_cast<size_t>(n), 0.0);
+  auto sendFromMaster = [&](const Outbox& out) {
+    for (const Envelope& e : out) lastContact[static_cast<size_t>(e.to)] = net.now();
+    net.send(kMaster, out, masterLog);
+  };
   auto declareLost = [&](int w) {
     masterLog.add({EventKind::WorkerLost, w, net.now(), net.now(), 0, 0, 0, ""});
-    net.send(kMaster, master.onWorkerLost(w), masterLog);
+    sendFromMaster(master.onWorkerLost(w));
   };
 
-  net.send(kMaster, master.start(), masterLog);
+  sendFromMaster(master.start());
   std::string failure;
   while (!master.complete()) {
     if (master.failed()) {
@@ -134,18 +135,19 @@ ParallelRun renderLocal(const LocalRunRequest& request) {
     std::optional<Mail> mail = net.master.pop(std::chrono::milliseconds(20));
     const double now = net.now();
     if (mail) {
-      lastHeard[static_cast<size_t>(mail->from)] = now;
+      lastContact[static_cast<size_t>(mail->from)] = now;
       if (mail->lost) {
         declareLost(mail->from);
       } else {
         const Message m = decode(mail->bytes);
         masterLog.add({EventKind::MessageReceived, kMaster, now, now, 0, mail->bytes.size(),
                        mail->from, messageName(m)});
-        net.send(kMaster, master.onMessage(mail->from, m), masterLog);
+        sendFromMaster(master.onMessage(mail->from, m));
       }
     }
     for (int w = 0; w < n; ++w) {
-      if (master.owesAnswer(w) && now - lastHeard[static_cast<size_t>(w)] > options.workerTimeoutSeconds) {
+      if (master.owesAnswer(w) &&
+          now - lastContact[static_cast<size_t>(w)] > options.workerTimeoutSeconds) {
         declareLost(w);
       }
     }

@@ -7,8 +7,9 @@
 // master at once; one that hangs is declared lost after `workerTimeoutSeconds` of silence
 // while it owes the master an answer. Either way its unfinished tasks are reassigned and the
 // image is the same.
-// Speed indices are measured one worker at a time, as on separate machines, so that workers
-// sharing cores do not slow each other's measurement.
+// Workers measure their speed indices concurrently, as separate machines would; like the
+// rendering, the measurement is faithful while the workers' combined demand (sum of 1/k_i)
+// fits the free cores.
 
 #include <optional>
 

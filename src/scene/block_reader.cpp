@@ -35,11 +35,13 @@ const Token* BlockReader::next() {
   const size_t index = in_.position();
   const Token& token = in_.next();
   switch (token.kind) {
-    case TokenKind::RightBrace: return nullptr;
-    case TokenKind::Word: break;
+    case TokenKind::RightBrace:
+      return nullptr;
+    case TokenKind::Word:
+      break;
     case TokenKind::End:
-      in_.fail(token, "unexpected end of file: the '" + title_ + "' block opened at " +
-                          at(open_) + " has no closing '}'");
+      in_.fail(token, "unexpected end of file: the '" + title_ + "' block opened at " + at(open_) +
+                          " has no closing '}'");
     case TokenKind::Number: {
       const bool afterNumber = index > 0 && in_.at(index - 1).kind == TokenKind::Number;
       in_.fail(token, "expected a parameter name or '}' in the '" + title_ + "' block, found " +
@@ -53,8 +55,9 @@ const Token* BlockReader::next() {
 
   const auto known = std::find(params_.begin(), params_.end(), token.text);
   if (known == params_.end()) {
-    std::string message = "unknown parameter '" + token.text + "' in the '" + title_ +
-                          "' block; valid parameters: " + joinNames(params_);
+    std::string message = "unknown parameter '" + token.text + "' in the '" + title_ + "' block" +
+                          didYouMean(token.text, params_) +
+                          "; valid parameters: " + joinNames(params_);
     if (isDirective(token.text)) {
       message += " (is the '}' of the block opened at " + at(open_) + " missing?)";
     }

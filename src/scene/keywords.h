@@ -1,11 +1,14 @@
 #pragma once
-// The directive names of the .scene format, in the order the documentation lists them, and
-// joining names into the lists that error messages offer ("valid parameters: a, b, c").
+// Names in error messages: the directive names of the .scene format, in the order the
+// documentation lists them; joining names into the lists that messages offer ("valid
+// parameters: a, b, c"); and suggesting the intended name for a misspelt one.
 
 #include <algorithm>
-#include <span>
+#include <initializer_list>
+#include <iterator>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace prt {
 
@@ -25,5 +28,9 @@ std::string joinNames(const Names& names) {
   }
   return out;
 }
+
+// " (did you mean 'radius'?)" when one of `names` is a likely intended spelling of `word`
+// (a few edits away), else "".
+std::string didYouMean(std::string_view word, const std::vector<std::string_view>& names);
 
 }  // namespace prt

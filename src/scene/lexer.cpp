@@ -6,11 +6,15 @@ namespace prt {
 namespace {
 
 bool isDelimiter(char c) {
-  return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\v' ||
-         c == '{' || c == '}' || c == '"' || c == '#';
+  return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\v' || c == '{' ||
+         c == '}' || c == '"' || c == '#';
 }
-bool isLetter(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_'; }
-bool isDigit(char c) { return c >= '0' && c <= '9'; }
+bool isLetter(char c) {
+  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_';
+}
+bool isDigit(char c) {
+  return c >= '0' && c <= '9';
+}
 bool isControl(char c) {
   const auto u = static_cast<unsigned char>(c);
   return u < 0x20 || u == 0x7f;
@@ -18,7 +22,8 @@ bool isControl(char c) {
 
 std::string hexByte(char c) {
   char buffer[8];
-  std::snprintf(buffer, sizeof buffer, "0x%02X", static_cast<unsigned>(static_cast<unsigned char>(c)));
+  std::snprintf(buffer, sizeof buffer, "0x%02X",
+                static_cast<unsigned>(static_cast<unsigned char>(c)));
   return buffer;
 }
 
@@ -79,8 +84,9 @@ class Lexer {
     } else if (isControl(c)) {
       fail(token, "unexpected control character " + hexByte(c) + "; is this a text file?");
     } else if (static_cast<unsigned char>(c) >= 0x80) {
-      fail(token, "unexpected non-ASCII character; outside comments and quoted strings a "
-                  "scene uses only ASCII names, numbers and braces");
+      fail(token,
+           "unexpected non-ASCII character; outside comments and quoted strings a "
+           "scene uses only ASCII names, numbers and braces");
     } else {
       fail(token, std::string("unexpected character '") + c +
                       "'; expected a name, a number, a quoted string, '{' or '}'");
@@ -142,12 +148,17 @@ class Lexer {
 
 std::string describe(const Token& token) {
   switch (token.kind) {
-    case TokenKind::String: return "the string \"" + token.text + "\"";
-    case TokenKind::End: return "the end of the file";
-    default: return "'" + token.text + "'";
+    case TokenKind::String:
+      return "the string \"" + token.text + "\"";
+    case TokenKind::End:
+      return "the end of the file";
+    default:
+      return "'" + token.text + "'";
   }
 }
 
-std::vector<Token> tokenize(const SourceText& source) { return Lexer(source).run(); }
+std::vector<Token> tokenize(const SourceText& source) {
+  return Lexer(source).run();
+}
 
 }  // namespace prt

@@ -41,7 +41,9 @@ ParsedNumber<double> parseDouble(std::string_view text) {
   return parsed;
 }
 
-ParsedNumber<int64_t> parseInteger(std::string_view text) { return parseWith<int64_t>(text); }
+ParsedNumber<int64_t> parseInteger(std::string_view text) {
+  return parseWith<int64_t>(text);
+}
 
 std::string formatDouble(double value) {
   char buffer[32];  // the longest shortest form of a double is 24 characters

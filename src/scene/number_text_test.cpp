@@ -1,10 +1,10 @@
 #include "scene/number_text.h"
 
+#include <gtest/gtest.h>
+
 #include <bit>
 #include <cmath>
 #include <limits>
-
-#include <gtest/gtest.h>
 
 namespace prt {
 namespace {
@@ -45,8 +45,14 @@ TEST(SceneNumberText, FormatIsShortestAndRoundTripsExactly) {
   EXPECT_EQ(formatDouble(320), "320");
   EXPECT_EQ(formatDouble(1e-300), "1e-300");
   EXPECT_EQ(formatDouble(-0.0), "-0");
-  const double values[] = {1.0 / 3.0, 0.1 + 0.2, 1e-300, 5e-324, 1.7976931348623157e308,
-                           -2.5, std::nextafter(1.0, 2.0), 123456789.123456789};
+  const double values[] = {1.0 / 3.0,
+                           0.1 + 0.2,
+                           1e-300,
+                           5e-324,
+                           1.7976931348623157e308,
+                           -2.5,
+                           std::nextafter(1.0, 2.0),
+                           123456789.123456789};
   for (const double value : values) {
     const ParsedNumber<double> back = parseDouble(formatDouble(value));
     ASSERT_EQ(back.status, NumberStatus::Ok) << formatDouble(value);

@@ -1,10 +1,10 @@
 // One test per kind of error in a scene text: each checks the reported line:column (the
 // culprit token) and that the message says what is wrong and what is allowed.
 
+#include <gtest/gtest.h>
+
 #include <initializer_list>
 #include <string>
-
-#include <gtest/gtest.h>
 
 #include "scene/scene_file.h"
 
@@ -12,8 +12,7 @@ namespace prt {
 namespace {
 
 // Two lines, so that the text under test starts on line 3.
-const std::string kPreamble =
-    "camera { eye 0 0 -5 look_at 0 0 0 }\nimage { width 4 height 3 }\n";
+const std::string kPreamble = "camera { eye 0 0 -5 look_at 0 0 0 }\nimage { width 4 height 3 }\n";
 
 InputError errorOf(const std::string& text) {
   try {
@@ -46,7 +45,7 @@ void expectBodyError(const std::string& body, int column,
 
 TEST(SceneErrors, UnknownDirectiveListsTheValidOnes) {
   expectBodyError("spher { center 0 0 0 radius 1 }", 1,
-                  {"unknown directive 'spher'",
+                  {"unknown directive 'spher' (did you mean 'sphere'?)",
                    "camera, image, environment, sampling, material, light, sphere, box, plane"});
 }
 
@@ -57,17 +56,20 @@ TEST(SceneErrors, NonWordWhereADirectiveBelongs) {
 
 TEST(SceneErrors, UnknownParameterListsTheBlocksParameters) {
   expectBodyError("sphere { center 0 0 0 radus 1 }", 23,
-                  {"unknown parameter 'radus'", "'sphere' block", "center, radius, surface"});
+                  {"unknown parameter 'radus' in the 'sphere' block (did you mean 'radius'?); "
+                   "valid parameters: center, radius, surface"});
   expectBodyError("sphere { center 0 0 0 radius 1 surface { colour 1 0 0 } }", 42,
-                  {"unknown parameter 'colour'", "color, ambient, diffuse, specular, phong, "
-                                                 "reflect, transmit, ior, gloss, translucency"});
+                  {"unknown parameter 'colour'",
+                   "color, ambient, diffuse, specular, phong, "
+                   "reflect, transmit, ior, gloss, translucency"});
   expectBodyError("light point { position 0 0 0 radius 1 }", 30,
-                  {"unknown parameter 'radius'", "'light point'", "position, color"});
+                  {"unknown parameter 'radius' in the 'light point' block; valid parameters: "
+                   "position, color"});
 }
 
 TEST(SceneErrors, MissingClosingBraceIsHinted) {
   expectError(kPreamble + "sphere { center 0 0 0 radius 1\nbox { min 0 0 0 max 1 1 1 }", 4, 1,
-                  {"unknown parameter 'box'", "'}' of the block opened at line 3, column 8"});
+              {"unknown parameter 'box'", "'}' of the block opened at line 3, column 8"});
 }
 
 TEST(SceneErrors, TooManyNumbersIsHinted) {
@@ -101,9 +103,12 @@ TEST(SceneErrors, DuplicateMaterialName) {
 }
 
 TEST(SceneErrors, UnknownMaterialListsTheDefinedOnes) {
-  expectBodyError("material red { } material blue { }  sphere { center 0 0 0 radius 1 surface "
-                  "green }",
-                  76, {"unknown material 'green'", "defined materials: blue, red"});
+  expectBodyError(
+      "material red { } material blue { }  sphere { center 0 0 0 radius 1 surface "
+      "green }",
+      76, {"unknown material 'green'", "defined materials: blue, red"});
+  expectBodyError("material red { } sphere { center 0 0 0 radius 1 surface Red }", 57,
+                  {"unknown material 'Red' (did you mean 'red'?)"});
   expectBodyError("sphere { center 0 0 0 radius 1 surface glass }", 40,
                   {"unknown material 'glass'", "no materials are defined"});
 }
@@ -137,8 +142,8 @@ TEST(SceneErrors, WrongKindOfValue) {
   expectBodyError("sphere { center 0 0 0 radius }", 30, {"'radius' needs a number", "'}'"});
   expectBodyError("light point { position 0 0 0 color 1 1 }", 40,
                   {"'color' needs 3 numbers (r g b)"});
-  expectError("camera { eye 0 0 -5 look_at 0 0 0 }\nimage { width 4 height 3 output fig.png }",
-              2, 33, {"'output' needs a quoted string"});
+  expectError("camera { eye 0 0 -5 look_at 0 0 0 }\nimage { width 4 height 3 output fig.png }", 2,
+              33, {"'output' needs a quoted string"});
 }
 
 TEST(SceneErrors, NegativeColours) {
@@ -150,7 +155,8 @@ TEST(SceneErrors, NegativeColours) {
 TEST(SceneErrors, SurfaceValueRanges) {
   const std::string sphere = "sphere { center 0 0 0 radius 1 surface { ";
   const int column = static_cast<int>(sphere.size()) + 1;
-  expectBodyError(sphere + "diffuse 1.5 } }", column + 8, {"'diffuse' must be in [0, 1], found 1.5"});
+  expectBodyError(sphere + "diffuse 1.5 } }", column + 8,
+                  {"'diffuse' must be in [0, 1], found 1.5"});
   expectBodyError(sphere + "ambient -0.1 } }", column + 8, {"'ambient' must be in [0, 1]"});
   expectBodyError(sphere + "specular 2 } }", column + 9, {"'specular' must be in [0, 1]"});
   expectBodyError(sphere + "reflect 1.01 } }", column + 8, {"'reflect' must be in [0, 1]"});
@@ -258,7 +264,8 @@ TEST(SceneErrors, RectLightMustHaveArea) {
 
 TEST(SceneErrors, UnknownKindOfLight) {
   expectBodyError("light spot { position 0 0 0 }", 7,
-                  {"unknown kind of light 'spot'", "point, sphere, rect"});
+                  {"unknown kind of light 'spot'; valid kinds: point, sphere, rect"});
+  expectBodyError("light pont { position 0 0 0 }", 7, {"(did you mean 'point'?)"});
   expectBodyError("light { position 0 0 0 }", 7, {"expected the kind of light"});
 }
 
@@ -268,9 +275,9 @@ TEST(SceneErrors, MissingOpeningBrace) {
 }
 
 TEST(SceneErrors, UnexpectedEndOfFile) {
-  expectError(kPreamble + "sphere { center 0 0 0\n   radius 1  \n# the end\n", 4, 12,
-              {"unexpected end of file", "'sphere' block opened at line 3, column 8",
-               "no closing '}'"});
+  expectError(
+      kPreamble + "sphere { center 0 0 0\n   radius 1  \n# the end\n", 4, 12,
+      {"unexpected end of file", "'sphere' block opened at line 3, column 8", "no closing '}'"});
   expectBodyError("sphere { center 0 0", 20, {"needs 3 numbers", "the end of the file"});
 }
 

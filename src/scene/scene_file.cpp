@@ -1,13 +1,13 @@
 // loadSceneFile: reading a scene file and refusing, with one clear line, anything that is not
 // a scene's text (a missing file, a directory, an empty file, a binary file) before parsing.
 
+#include "scene/scene_file.h"
+
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <memory>
-
-#include "scene/scene_file.h"
 
 namespace prt {
 namespace {
@@ -15,7 +15,9 @@ namespace {
 // Far beyond any hand-written scene; stops /dev/zero or a wrong huge file from eating memory.
 constexpr size_t kMaxSceneFileBytes = size_t{64} << 20;
 
-std::string quoted(const std::string& path) { return "'" + path + "'"; }
+std::string quoted(const std::string& path) {
+  return "'" + path + "'";
+}
 
 std::string readWholeFile(const std::string& path) {
   namespace fs = std::filesystem;

@@ -72,21 +72,23 @@ class SceneParser {
       if (name == "sphere") return sphere(keyword);
       if (name == "box") return box(keyword);
       if (name == "plane") return plane(keyword);
-      in_.fail(keyword, "unknown directive '" + name + "'; valid directives: " +
-                            joinNames(kDirectives));
+      const std::vector<std::string_view> directives(std::begin(kDirectives),
+                                                     std::end(kDirectives));
+      in_.fail(keyword, "unknown directive '" + name + "'" + didYouMean(name, directives) +
+                            "; valid directives: " + joinNames(kDirectives));
     }
     if (keyword.kind == TokenKind::RightBrace) {
       in_.fail(keyword, "unexpected '}': no block is open here");
     }
-    in_.fail(keyword, "expected a directive (" + joinNames(kDirectives) + "), found " +
-                          describe(keyword));
+    in_.fail(keyword,
+             "expected a directive (" + joinNames(kDirectives) + "), found " + describe(keyword));
   }
 
   // Blocks that describe the whole scene may appear once.
   void once(const Token& keyword, const Token*& seen) {
     if (seen != nullptr) {
-      in_.fail(keyword, "duplicate '" + keyword.text + "' block; the scene already has one at " +
-                            at(*seen));
+      in_.fail(keyword,
+               "duplicate '" + keyword.text + "' block; the scene already has one at " + at(*seen));
     }
     seen = &keyword;
   }
@@ -195,8 +197,8 @@ class SceneParser {
                          "or '_'");
     }
     if (const auto found = materials_.find(name.text); found != materials_.end()) {
-      in_.fail(name, "material '" + name.text + "' is already defined at " +
-                         at(*found->second.name));
+      in_.fail(name,
+               "material '" + name.text + "' is already defined at " + at(*found->second.name));
     }
     Material material = readSurface(in_, name, "material " + name.text, materials_);
     materials_.emplace(name.text, NamedMaterial{material, &name});
@@ -206,8 +208,8 @@ class SceneParser {
     const Token& kind = in_.next();
     const std::string kinds = "point, sphere, rect";
     if (kind.kind != TokenKind::Word) {
-      in_.fail(kind, "expected the kind of light (" + kinds + ") after 'light', found " +
-                         describe(kind));
+      in_.fail(kind,
+               "expected the kind of light (" + kinds + ") after 'light', found " + describe(kind));
     }
     Light light;
     if (kind.text == "point") {
@@ -234,7 +236,9 @@ class SceneParser {
     } else if (kind.text == "rect") {
       light.shape = rectLight(kind, light.color);
     } else {
-      in_.fail(kind, "unknown kind of light '" + kind.text + "'; valid kinds: " + kinds);
+      in_.fail(kind, "unknown kind of light '" + kind.text + "'" +
+                         didYouMean(kind.text, {"point", "sphere", "rect"}) +
+                         "; valid kinds: " + kinds);
     }
     scene_.lights.push_back(light);
   }

@@ -1,15 +1,18 @@
-#include <cmath>
-
 #include <gtest/gtest.h>
+
+#include <cmath>
 
 #include "scene/scene_file.h"
 
 namespace prt {
 namespace {
 
-constexpr const char* kPreamble = "camera { eye 0 0 -5 look_at 0 0 0 }\nimage { width 4 height 3 }\n";
+constexpr const char* kPreamble =
+    "camera { eye 0 0 -5 look_at 0 0 0 }\nimage { width 4 height 3 }\n";
 
-Scene parse(const std::string& text) { return parseScene(text, "test.scene"); }
+Scene parse(const std::string& text) {
+  return parseScene(text, "test.scene");
+}
 
 // The example scene of docs/scene-format.md.
 constexpr const char* kFigure8 = R"(# Figure 8: the basic-features scene
@@ -114,7 +117,8 @@ image{width 8 height 6 output "a#b.ppm"}#glued
 }
 
 TEST(SceneParser, AcceptsWindowsLineEndings) {
-  const Scene scene = parse("camera { eye 0 0 -5\r\n look_at 0 0 0 }\r\nimage { width 2 height 2 }\r\n");
+  const Scene scene =
+      parse("camera { eye 0 0 -5\r\n look_at 0 0 0 }\r\nimage { width 2 height 2 }\r\n");
   EXPECT_EQ(scene.image.width, 2);
 }
 
@@ -165,8 +169,8 @@ light sphere { center 0 0 0 radius 1 color 100 100 100 }
 }
 
 TEST(SceneParser, AcceptsIntegersWithSignAndNumbersInExponentForm) {
-  const Scene scene = parse(
-      "camera { eye +0 0 -5e0 look_at .0 0. 0 }\nimage { width +4 height 3 }\n");
+  const Scene scene =
+      parse("camera { eye +0 0 -5e0 look_at .0 0. 0 }\nimage { width +4 height 3 }\n");
   EXPECT_EQ(scene.camera.eye, Vec3(0, 0, -5));
   EXPECT_EQ(scene.image.width, 4);
 }

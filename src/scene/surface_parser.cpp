@@ -1,6 +1,7 @@
 #include "scene/surface_parser.h"
 
 #include "scene/block_reader.h"
+#include "scene/keywords.h"
 #include "scene/value_reader.h"
 
 namespace prt {
@@ -9,14 +10,16 @@ namespace {
 const Material& lookUp(const TokenStream& in, const Token& name, const MaterialTable& materials) {
   const auto found = materials.find(name.text);
   if (found != materials.end()) return found->second.material;
-  std::string message = "unknown material '" + name.text + "'; ";
   if (materials.empty()) {
-    message += "no materials are defined yet (define one first with material NAME { ... })";
-  } else {
-    std::string names;
-    for (const auto& [defined, unused] : materials) names += (names.empty() ? "" : ", ") + defined;
-    message += "defined materials: " + names + " (a material must be defined before its use)";
+    in.fail(name, "unknown material '" + name.text +
+                      "'; no materials are defined yet (define one first with material NAME "
+                      "{ ... })");
   }
+  std::vector<std::string_view> names;
+  for (const auto& entry : materials) names.push_back(entry.first);
+  const std::string message =
+      "unknown material '" + name.text + "'" + didYouMean(name.text, names) +
+      "; defined materials: " + joinNames(names) + " (a material must be defined before its use)";
   in.fail(name, message);
 }
 

@@ -9,8 +9,8 @@
 #include <map>
 #include <string>
 
-#include "trace/scene.h"
 #include "scene/token_stream.h"
+#include "trace/scene.h"
 
 namespace prt {
 

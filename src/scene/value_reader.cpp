@@ -40,14 +40,16 @@ double parseDoubleToken(const TokenStream& in, const Token& token, const std::st
   }
   const ParsedNumber<double> parsed = parseDouble(token.text);
   switch (parsed.status) {
-    case NumberStatus::Ok: return parsed.value;
+    case NumberStatus::Ok:
+      return parsed.value;
     case NumberStatus::NotFinite:
       in.fail(token, what + " must be a finite number, found " + describe(token));
     case NumberStatus::OutOfRange:
       in.fail(token, "number " + describe(token) +
                          " is beyond double precision (magnitudes from about 4.9e-324 to "
                          "1.8e308, or 0)");
-    case NumberStatus::Malformed: break;
+    case NumberStatus::Malformed:
+      break;
   }
   std::string message = "malformed number " + describe(token) + " for " + what;
   if (token.text.find(',') != std::string::npos) {
@@ -56,8 +58,8 @@ double parseDoubleToken(const TokenStream& in, const Token& token, const std::st
   in.fail(token, message);
 }
 
-void checkRange(const TokenStream& in, const Token& token, const std::string& what,
-                double value, const Range& range) {
+void checkRange(const TokenStream& in, const Token& token, const std::string& what, double value,
+                const Range& range) {
   if (!range.contains(value)) {
     in.fail(token, what + " must be " + range.describe() + ", found " + formatDouble(value));
   }
@@ -147,8 +149,8 @@ Vec3 readColor(TokenStream& in, std::string_view param) {
 std::string readString(TokenStream& in, std::string_view param) {
   const Token& token = in.next();
   if (token.kind != TokenKind::String) {
-    in.fail(token, quote(param) + " needs a quoted string such as \"out.png\", found " +
-                       describe(token));
+    in.fail(token,
+            quote(param) + " needs a quoted string such as \"out.png\", found " + describe(token));
   }
   return token.text;
 }

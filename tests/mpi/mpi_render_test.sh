@@ -13,7 +13,7 @@ prt=$1 mpiexec=$2 scene=$3 work=$4 mode=$5 np=$6 arg=${7:-}
 
 # Open MPI refuses to run as root and to start more ranks than cores unless told to.
 launcher_flags=
-if "$mpiexec" --version 2>/dev/null | grep -q "Open MPI"; then
+if "$mpiexec" --version 2>/dev/null | grep -qiE "open ?mpi|openrte|open-mpi"; then
   launcher_flags="--allow-run-as-root --oversubscribe"
   export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
   export OMPI_MCA_rmaps_base_oversubscribe=1
