@@ -190,6 +190,8 @@ TEST(SceneErrors, CameraRanges) {
               {"'up' is parallel to its view direction"});
   expectError("camera { eye 0 0 -5 look_at 0 0 0 up 0 0 0 }\nimage { width 4 height 3 }", 1, 38,
               {"'up' must not be zero"});
+  expectError("camera { eye 0 0 0 look_at 0 0 1e-300 }\nimage { width 4 height 3 }", 1, 28,
+              {"'look_at' equals its 'eye'"});
   expectError("camera { eye 0 5 0 look_at 0 0 0 }\nimage { width 4 height 3 }", 1, 1,
               {"default 'up' (0 1 0) is parallel", "give an 'up'"});
 }
@@ -255,6 +257,7 @@ TEST(SceneErrors, MissingCameraOrImageBlock) {
 
 TEST(SceneErrors, PlaneNormalMustNotBeZero) {
   expectBodyError("plane { point 0 0 0 normal 0 0 0 }", 28, {"'normal' must not be zero"});
+  expectBodyError("plane { point 0 0 0 normal 0 1e-300 0 }", 28, {"'normal' must not be zero"});
 }
 
 TEST(SceneErrors, RectLightMustHaveArea) {

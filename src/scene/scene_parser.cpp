@@ -113,15 +113,16 @@ class SceneParser {
     }
     block.require({"eye", "look_at"});
 
+    // Lengths are tested with !(x > 0) so that vectors too short to square (1e-300) fail too.
     const Vec3 view = camera.lookAt - camera.eye;
-    if (view == Vec3{}) {
+    if (!(length(view) > 0)) {
       in_.fail(block.valueToken("look_at"),
                "the camera's 'look_at' equals its 'eye'; it must be the point looked at");
     }
     const Token& upToken = block.has("up") ? block.valueToken("up") : keyword;
-    if (camera.up == Vec3{}) in_.fail(upToken, "the camera's 'up' must not be zero");
+    if (!(length(camera.up) > 0)) in_.fail(upToken, "the camera's 'up' must not be zero");
     // sin of the angle between them; below this the image's orientation is undefined.
-    if (length(cross(normalize(view), normalize(camera.up))) < 1e-6) {
+    if (!(length(cross(normalize(view), normalize(camera.up))) >= 1e-6)) {
       in_.fail(upToken, std::string("the camera's ") +
                             (block.has("up") ? "'up'" : "default 'up' (0 1 0)") +
                             " is parallel to its view direction (look_at - eye); give an 'up' "
@@ -315,7 +316,7 @@ class SceneParser {
       if (name == "surface") surface(*param, object.material);
     }
     block.require({"point", "normal"});
-    if (plane.normal == Vec3{}) {
+    if (!(length(plane.normal) > 0)) {
       in_.fail(block.valueToken("normal"), "the plane's 'normal' must not be zero");
     }
     plane.normal = unitLength(plane.normal);
