@@ -11,5 +11,8 @@ using Action = std::function<int()>;  // returns the process exit code
 
 Action addRenderCommand(CLI::App& app);
 Action addSpeedIndexCommand(CLI::App& app);
+Action addSimulateCommand(CLI::App& app);  // discrete-event simulation (simulate_command.cpp)
+Action addExportCommand(CLI::App& app);   // POV-Ray export (export_command.cpp)
+Action addCompareCommand(CLI::App& app);  // PRT vs POV-Ray images (compare_command.cpp)
 
 }  // namespace prt::cli

@@ -13,6 +13,9 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", "prt 0.1.0");
   const prt::cli::Action render = prt::cli::addRenderCommand(app);
   const prt::cli::Action speedIndex = prt::cli::addSpeedIndexCommand(app);
+  const prt::cli::Action simulate = prt::cli::addSimulateCommand(app);
+  const prt::cli::Action exportPov = prt::cli::addExportCommand(app);
+  const prt::cli::Action compare = prt::cli::addCompareCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -23,6 +26,9 @@ int main(int argc, char** argv) {
     for (CLI::App* sub : app.get_subcommands()) {
       if (sub->get_name() == "render") return render();
       if (sub->get_name() == "speed-index") return speedIndex();
+      if (sub->get_name() == "simulate") return simulate();
+      if (sub->get_name() == "export") return exportPov();
+      if (sub->get_name() == "compare") return compare();
     }
   } catch (const prt::InputError& e) {
     std::fprintf(stderr, "%s\n", e.format().c_str());

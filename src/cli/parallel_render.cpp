@@ -100,8 +100,8 @@ void addParallelOptions(CLI::App& cmd, RenderOptions& o) {
                  "Write the image coloured by the worker that rendered each pixel")
       ->group(parallel);
   cmd.add_option("--inject-fault", o.faults,
-                 "Testing: WORKER:PIXELS:crash|hang makes a local worker fail after rendering "
-                 "that many pixels")
+                 "Testing: WORKER:PIXELS:crash|hang makes worker WORKER (rank WORKER+1 under "
+                 "MPI) fail after rendering that many pixels")
       ->group(parallel);
 }
 
@@ -170,8 +170,9 @@ int renderParallelMpi(const RenderOptions& o, const SceneLoader& loadScene) {
   }
   try {
     if (session.size() < 2) {
-      throw InputError("prt render under MPI needs at least 2 ranks: mpirun -np N+1 prt render "
-                       "... (rank 0 is the master, ranks 1..N the workers)");
+      throw InputError(
+          "prt render under MPI needs at least 2 ranks: mpirun -np N+1 prt render "
+          "... (rank 0 is the master, ranks 1..N the workers)");
     }
     MpiRunRequest request;
     std::tie(request.scene, request.settings) = loadScene();

@@ -4,6 +4,7 @@
 #include <optional>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "cli/commands.h"
 #include "cli/parallel_render.h"
@@ -11,6 +12,7 @@
 #include "core/input_error.h"
 #include "image/image_io.h"
 #include "scene/scene_file.h"
+#include "sim/cost_map_file.h"
 #include "trace/render_settings.h"
 #include "trace/renderer.h"
 
@@ -44,12 +46,18 @@ int renderSerial(const RenderOptions& o, const Scene& scene, const RenderSetting
   const World world(scene);
   const Renderer renderer(world, settings);
   RenderStats stats;
+  std::vector<float> pixelSeconds;
   Image image = [&] {
     ProgressBar bar("px", !o.quiet);
     return renderImage(renderer, o.threads, &stats,
-                       [&](uint64_t done, uint64_t total) { bar.update(done, total); });
+                       [&](uint64_t done, uint64_t total) { bar.update(done, total); },
+                       o.costMapPath.empty() ? nullptr : &pixelSeconds);
   }();
   writeImage(image, scene.image.output);
+  if (!o.costMapPath.empty()) {
+    writeCostMapFile(o.costMapPath,
+                     CostMap(scene.image.width, scene.image.height, std::move(pixelSeconds)));
+  }
   if (!o.quiet) {
     std::printf("%s: %dx%d, %d spp, DRT %d, %.3f s, %llu rays, %.2f Mrays/s\n",
                 scene.image.output.c_str(), scene.image.width, scene.image.height,
@@ -62,6 +70,10 @@ int renderSerial(const RenderOptions& o, const Scene& scene, const RenderSetting
 
 int runRender(const RenderOptions& o) {
   const bool mpi = launchedByMpirun();
+  if ((mpi || o.workers || o.strategy) && !o.costMapPath.empty()) {
+    throw InputError("--cost-map records a serial render; drop --workers and --strategy (and "
+                     "run without mpirun)");
+  }
   if (mpi && o.workers) {
     throw InputError("--workers cannot be used under mpirun: the worker count is the number of "
                      "ranks minus one (rank 0 is the master)");
@@ -117,6 +129,9 @@ Action addRenderCommand(CLI::App& app) {
       ->check(CLI::Range(0, 1024))
       ->capture_default_str();
   cmd->add_flag("-q,--quiet", o->quiet, "No progress bar, summary or report table");
+  cmd->add_option("--cost-map", o->costMapPath,
+                  "Serial render: also write each pixel's render time to FILE, the cost map "
+                  "prt simulate replays (use --threads 1 for times free of contention)");
   addParallelOptions(*cmd, *o);
   return [o] { return runRender(*o); };
 }

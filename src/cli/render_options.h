@@ -17,6 +17,7 @@ struct RenderOptions {
   std::string testCase;       // A|B|C|D: sets DRT and SS as in the paper's Table III
   int threads = 0;            // serial render threads, 0: all cores
   bool quiet = false;
+  std::string costMapPath;    // serial: also write each pixel's render seconds (for simulate)
 
   // Parallel rendering.
   std::optional<int> workers;              // local driver: worker threads

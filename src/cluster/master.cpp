@@ -53,8 +53,13 @@ bool Master::owesAnswer(int worker) const {
 void Master::apply(const Decisions& decisions, Outbox& out) {
   for (const Decision& d : decisions) {
     if (const auto* a = std::get_if<Assign>(&d)) {
-      PRT_CHECK(isLive(a->worker));
       if (a->tasks.empty()) continue;
+      if (!isLive(a->worker)) {
+        // Tasks for a worker lost before the strategy learnt of it (at the start): they are
+        // that worker's leftovers, and go back to the strategy for the live ones.
+        apply(strategy_->onWorkerLost(a->worker, a->tasks), out);
+        continue;
+      }
       given_[static_cast<size_t>(a->worker)].append(a->tasks);
       out.push_back({a->worker, TasksMsg{a->tasks}});
     } else if (std::holds_alternative<QueryQueues>(d)) {
@@ -66,8 +71,11 @@ void Master::apply(const Decisions& decisions, Outbox& out) {
       }
       sendToLive(QueryQueueMsg{}, out);
     } else if (const auto* t = std::get_if<Transfer>(&d)) {
-      PRT_CHECK(isLive(t->from) && isLive(t->to));
-      out.push_back({t->from, TransferOrderMsg{t->to, t->count}});
+      // A transfer from or to a lost worker is moot: its tasks come back through
+      // onWorkerLost, and a sender simply keeps what it would have sent.
+      if (isLive(t->from) && isLive(t->to)) {
+        out.push_back({t->from, TransferOrderMsg{t->to, t->count}});
+      }
     }
     // NoMoreWork: the worker simply waits; nothing to send.
   }
@@ -117,7 +125,7 @@ Outbox Master::onMessage(int from, const Message& message) {
     speedIndices_[w] = s->seconds;
     if (speedIndicesMissing_ == 0 && !started_) startStrategy(out);
   } else if (const auto* r = std::get_if<ResultsMsg>(&message)) {
-    PRT_CHECK(r->rgb.size() == 3 * r->tasks.size());
+    PRT_CHECK(r->rgb.size() == 3 * r->tasks.size() || r->rgb.empty());  // empty: simulated
     returned_[w] += r->tasks.size();
     r->tasks.forEach([&](uint64_t task) {
       PRT_CHECK(task < taskCount_);

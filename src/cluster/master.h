@@ -17,7 +17,8 @@
 namespace prt {
 
 // Receives each batch of results once (duplicates from a worker wrongly presumed lost are
-// dropped before): `rgb` holds 3 floats per task of `tasks`, in order.
+// dropped before): `rgb` holds 3 floats per task of `tasks`, in order, or nothing when the
+// results come from the simulator, which renders no colours (Worker::batchDone(batch)).
 using ResultSink =
     std::function<void(int worker, const TaskSet& tasks, const std::vector<float>& rgb)>;
 

@@ -107,6 +107,24 @@ TEST_P(MasterWorkerTest, LostWorkersTasksAreRecovered) {
 
 INSTANTIATE_TEST_SUITE_P(AllStrategies, MasterWorkerTest, ::testing::ValuesIn(strategyNames()));
 
+TEST(MasterTest, WorkerLostBeforeTheStartGetsNothing) {
+  for (const std::string& name : strategyNames()) {
+    Master master(makeStrategy(name, {}), 3, 30, SceneMsg{}, nullptr);
+    master.start();
+    master.onMessage(0, SpeedIndexMsg{0.1});
+    master.onWorkerLost(1);
+    const Outbox out = master.onMessage(2, SpeedIndexMsg{0.2});
+    uint64_t assigned = 0;
+    for (const Envelope& e : out) {
+      EXPECT_NE(e.to, 1) << name;
+      if (const auto* t = std::get_if<TasksMsg>(&e.message)) assigned += t->tasks.size();
+    }
+    EXPECT_EQ(assigned > 0, true) << name;
+    EXPECT_TRUE(master.isLive(0));
+    EXPECT_FALSE(master.isLive(1));
+  }
+}
+
 TEST(MasterTest, EveryWorkerLostIsAFailureNotAHang) {
   Master master(makeStrategy("scatter", {}), 2, 10, SceneMsg{}, nullptr);
   master.start();

@@ -40,7 +40,8 @@ struct TasksMsg {
 };
 struct ResultsMsg {
   TaskSet tasks;
-  std::vector<float> rgb;  // 3 floats per task, in task order, linear RGB
+  std::vector<float> rgb;  // 3 floats per task, in task order, linear RGB; empty only in the
+                           // simulator, which renders no colours (never on a real transport)
   bool operator==(const ResultsMsg&) const = default;
 };
 struct RequestMsg {

@@ -21,6 +21,10 @@ TaskSet Worker::nextBatch() {
 
 Outbox Worker::batchDone(const TaskSet& batch, std::vector<float> rgb) {
   PRT_CHECK(rgb.size() == 3 * batch.size());
+  return finishBatch(batch, std::move(rgb));
+}
+
+Outbox Worker::finishBatch(const TaskSet& batch, std::vector<float> rgb) {
   Outbox out;
   if (!batch.empty()) out.push_back({kMaster, ResultsMsg{batch, std::move(rgb)}});
   requestIfIdle(out);

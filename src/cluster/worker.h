@@ -33,6 +33,9 @@ class Worker {
   bool hasWork() const { return setUp_ && !queue_.empty() && !stopped_; }
   TaskSet nextBatch();
   Outbox batchDone(const TaskSet& batch, std::vector<float> rgb);
+  // The simulator renders nothing: it returns the batch's results without colours (an empty
+  // ResultsMsg::rgb) and counts the bytes they would take. Otherwise the same as above.
+  Outbox batchDone(const TaskSet& batch) { return finishBatch(batch, {}); }
 
   bool stopped() const { return stopped_; }
   uint64_t queueLength() const { return queue_.size(); }
@@ -40,6 +43,7 @@ class Worker {
 
  private:
   void requestIfIdle(Outbox& out);
+  Outbox finishBatch(const TaskSet& batch, std::vector<float> rgb);
 
   int id_;
   WorkerOptions options_;

@@ -26,7 +26,7 @@ struct ParallelOptions {
   uint64_t batchPixels = 128;          // pixels per returned batch of results
   double workerTimeoutSeconds = 30;    // silence after which a worker owing an answer is lost
   int speedIndexDiscs = kSpeedIndexDiscs;  // size of each worker's Towers of Hanoi run
-  std::vector<FaultInjection> faults;  // local driver only
+  std::vector<FaultInjection> faults;  // worker W is rank W+1 under MPI
 
   double slowdownOf(int worker) const {
     return slowdowns.empty() ? 1.0 : slowdowns[static_cast<size_t>(worker)];

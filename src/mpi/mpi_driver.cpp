@@ -52,15 +52,17 @@ void sendOutbox(MpiTransport& net, int from, const Outbox& out, EventLog& log,
   for (const Envelope& e : out) {
     Bytes bytes = encode(e.message);
     const double now = clock.now();
-    log.add({EventKind::MessageSent, from, now, now, 0, bytes.size(), e.to,
-             messageName(e.message)});
+    log.add(
+        {EventKind::MessageSent, from, now, now, 0, bytes.size(), e.to, messageName(e.message)});
     net.send(rankOf(e.to), kMessageTag, std::move(bytes));
   }
 }
 
 // The message for an MPI failure, naming the rank involved when MPI says which.
 std::string describe(const MpiError& e) {
-  if (e.rank() > 0) return "MPI failed talking to " + rankName(endpointOf(e.rank())) + ": " + e.what();
+  if (e.rank() > 0) {
+    return "MPI failed talking to " + rankName(endpointOf(e.rank())) + ": " + e.what();
+  }
   if (e.rank() == 0) return std::string("MPI failed talking to the master (rank 0): ") + e.what();
   return std::string("MPI failed: ") + e.what();
 }
@@ -82,7 +84,7 @@ class MasterRank {
                 [this](int w, const TaskSet& t, const std::vector<float>& rgb) {
                   assembler_.add(w, t, rgb);
                 }),
-        lastHeard_(static_cast<size_t>(n_), 0.0),
+        lastContact_(static_cast<size_t>(n_), 0.0),
         summaries_(static_cast<size_t>(n_)) {}
 
   ParallelRun run() {
@@ -90,7 +92,7 @@ class MasterRank {
     try {
       session_.comm().runStarted = true;
       clock_.reset();
-      sendOutbox(net_, kMaster, master_.start(), log_, clock_);
+      send(master_.start());
       while (!master_.complete()) {
         if (!receive(false)) pollPause();
         watchForSilence();
@@ -106,6 +108,14 @@ class MasterRank {
   }
 
  private:
+  // Silence is counted from the last exchange either way, as in the local driver: a worker
+  // just handed new tasks after a long wait owes nothing yet.
+  void send(const Outbox& out) {
+    const double now = clock_.now();
+    for (const Envelope& e : out) lastContact_[static_cast<size_t>(e.to)] = now;
+    sendOutbox(net_, kMaster, out, log_, clock_);
+  }
+
   // Handles one waiting message, if any; true if there was one. After the image is complete
   // (`draining`), protocol messages still in flight are logged and dropped, as the local
   // driver stops reading them.
@@ -114,8 +124,10 @@ class MasterRank {
     if (!p) return false;
     const double now = clock_.now();
     const int w = endpointOf(p->rank);
-    if (w < 0 || w >= n_) throw std::runtime_error("message from unexpected rank " + std::to_string(p->rank));
-    lastHeard_[static_cast<size_t>(w)] = now;
+    if (w < 0 || w >= n_) {
+      throw std::runtime_error("message from unexpected rank " + std::to_string(p->rank));
+    }
+    lastContact_[static_cast<size_t>(w)] = now;
     if (p->tag == kMessageTag) {
       Message m;
       try {
@@ -123,9 +135,9 @@ class MasterRank {
       } catch (const std::exception& e) {
         throw std::runtime_error("bad message from " + rankName(w) + ": " + e.what());
       }
-      log_.add({EventKind::MessageReceived, kMaster, now, now, 0, p->bytes.size(), w,
-                messageName(m)});
-      if (!draining) sendOutbox(net_, kMaster, master_.onMessage(w, m), log_, clock_);
+      log_.add(
+          {EventKind::MessageReceived, kMaster, now, now, 0, p->bytes.size(), w, messageName(m)});
+      if (!draining) send(master_.onMessage(w, m));
     } else if (p->tag == kSummaryTag && draining) {
       auto& slot = summaries_[static_cast<size_t>(w)];
       if (slot) throw std::runtime_error(rankName(w) + " sent two summaries");
@@ -138,8 +150,8 @@ class MasterRank {
     } else if (p->tag == kSummaryTag) {
       throw std::runtime_error(rankName(w) + " stopped before the image was complete");
     } else {
-      throw std::runtime_error("message with unexpected tag " + std::to_string(p->tag) +
-                               " from " + rankName(w));
+      throw std::runtime_error("message with unexpected tag " + std::to_string(p->tag) + " from " +
+                               rankName(w));
     }
     return true;
   }
@@ -149,7 +161,7 @@ class MasterRank {
   void watchForSilence() {
     const double now = clock_.now();
     for (int w = 0; w < n_; ++w) {
-      const double silent = now - lastHeard_[static_cast<size_t>(w)];
+      const double silent = now - lastContact_[static_cast<size_t>(w)];
       if (master_.owesAnswer(w) && silent > request_.options.workerTimeoutSeconds) {
         session_.abort(rankName(w) + " stopped answering (no message for " + seconds(silent) +
                        "); aborting");
@@ -165,7 +177,7 @@ class MasterRank {
       const double now = clock_.now();
       for (int w = 0; w < n_; ++w) {
         const auto i = static_cast<size_t>(w);
-        const double silent = now - std::max(lastHeard_[i], stopped);
+        const double silent = now - std::max(lastContact_[i], stopped);
         if (!summaries_[i] && silent > request_.options.workerTimeoutSeconds) {
           session_.abort(rankName(w) + " sent no summary within " + seconds(silent) +
                          " of the image being complete; aborting");
@@ -217,7 +229,7 @@ class MasterRank {
   Master master_;
   EventLog log_;
   Stopwatch clock_;
-  std::vector<double> lastHeard_;  // per worker, master clock
+  std::vector<double> lastContact_;  // per worker: last message either way, master clock
   std::vector<std::optional<WorkerSummary>> summaries_;
   int summariesIn_ = 0;
 };
@@ -227,9 +239,9 @@ class MasterRank {
 
 [[noreturn]] void failAsInjected(const FaultInjection& fault, int id, uint64_t rendered) {
   const bool crash = fault.kind == FaultInjection::Kind::Crash;
-  std::fprintf(stderr, "prt: %s: injected %s after %llu pixels\n", rankName(id).c_str(),
-               crash ? "crash, exiting" : "hang, no longer answering",
-               static_cast<unsigned long long>(rendered));
+  std::fprintf(stderr, "prt: %s: injected %s after %llu pixels; %s\n", rankName(id).c_str(),
+               crash ? "crash" : "hang", static_cast<unsigned long long>(rendered),
+               crash ? "exiting" : "no longer answering");
   std::fflush(stderr);
   if (crash) std::_Exit(3);  // as a machine dropping off the network: no goodbye to MPI
   for (;;) std::this_thread::sleep_for(std::chrono::milliseconds(100));
@@ -238,16 +250,14 @@ class MasterRank {
 class WorkerRank {
  public:
   WorkerRank(MpiSession& session, const ParallelOptions& options)
-      : comm_(session.comm()),
-        id_(endpointOf(session.rank())),
-        net_(comm_.comm),
+      : id_(endpointOf(session.rank())),
+        net_(session.comm().comm),
         worker_(id_, WorkerOptions{options.batchPixels}),
         // A slowdown list of the wrong length is the master's to report: it releases us.
         engine_(options.slowdowns.size() == static_cast<size_t>(session.workerCount())
                     ? options.slowdownOf(id_)
                     : 1.0,
-                options.speedIndexDiscs),
-        haveTurn_(comm_.previousWorkerOnNode < 0) {
+                options.speedIndexDiscs) {
     for (const FaultInjection& f : options.faults) {
       if (f.worker == id_) fault_ = &f;
     }
@@ -259,10 +269,6 @@ class WorkerRank {
     while (!worker_.stopped()) {
       if (std::optional<Packet> p = net_.poll()) {
         if (p->tag == kReleaseTag && p->rank == 0 && !sceneReceived_) return releaseCode(*p);
-        if (p->tag == kTurnTag) {
-          haveTurn_ = true;
-          continue;
-        }
         if (p->tag != kMessageTag) {
           throw std::runtime_error("message with unexpected tag " + std::to_string(p->tag) +
                                    " from rank " + std::to_string(p->rank));
@@ -302,20 +308,13 @@ class WorkerRank {
     return code;
   }
 
-  // Loads the scene, then times the Towers of Hanoi when this worker's turn on its node comes.
+  // Loads the scene and times the Towers of Hanoi. Workers measure at the same time, as
+  // separate machines would (and as the local driver's threads do).
   void setUp() {
-    if (!loaded_) {
-      setupStart_ = clock_.now();
-      engine_.load(worker_.scene());
-      loaded_ = true;
-    }
-    if (!haveTurn_) {
-      pollPause();
-      return;
-    }
+    const double t0 = clock_.now();
+    engine_.load(worker_.scene());
     const double speedIndex = engine_.measureSpeedIndex();
-    if (comm_.nextWorkerOnNode >= 0) net_.send(comm_.nextWorkerOnNode, kTurnTag, Bytes{1});
-    log_.add({EventKind::Setup, id_, setupStart_, clock_.now(), 0, 0, 0, ""});
+    log_.add({EventKind::Setup, id_, t0, clock_.now(), 0, 0, 0, ""});
     send(worker_.setupDone(speedIndex));
   }
 
@@ -329,7 +328,6 @@ class WorkerRank {
     send(worker_.batchDone(batch, std::move(rgb)));
   }
 
-  MpiComm& comm_;
   const int id_;
   MpiTransport net_;
   Worker worker_;
@@ -337,10 +335,7 @@ class WorkerRank {
   const FaultInjection* fault_ = nullptr;
   EventLog log_;
   Stopwatch clock_;
-  bool haveTurn_;
   bool sceneReceived_ = false;
-  bool loaded_ = false;
-  double setupStart_ = 0;
   uint64_t rendered_ = 0;
   uint64_t rays_ = 0;
 };
@@ -354,8 +349,8 @@ ParallelRun renderMpiMaster(MpiSession& session, const MpiRunRequest& request) {
     throw InputError("the run is set up for " + std::to_string(options.workers) +
                      " workers but mpirun started " + std::to_string(session.workerCount()));
   }
-  validateParallelOptions(options, static_cast<uint64_t>(request.scene.image.width) *
-                                       request.scene.image.height);
+  validateParallelOptions(
+      options, static_cast<uint64_t>(request.scene.image.width) * request.scene.image.height);
   MasterRank master(session, request);
   return master.run();
 }

@@ -1,47 +1,16 @@
 #include "mpi/mpi_session.h"
 
-#include <algorithm>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
-#include <numeric>
 #include <stdexcept>
-#include <vector>
 
 #include "mpi/mpi_comm.h"
 #include "mpi/mpi_transport.h"
 
 namespace prt {
-namespace {
 
 using mpi_detail::check;
-
-// Finds the worker ranks sharing this rank's node (MPI_COMM_TYPE_SHARED) and records this
-// rank's neighbours among them, in rank order.
-void findNodeNeighbours(MpiComm& c, int rank) {
-  MPI_Comm node = MPI_COMM_NULL;
-  check(MPI_Comm_split_type(c.comm, MPI_COMM_TYPE_SHARED, rank, MPI_INFO_NULL, &node),
-        "MPI_Comm_split_type", -1);
-  int nodeSize = 0;
-  check(MPI_Comm_size(node, &nodeSize), "MPI_Comm_size", -1);
-  MPI_Group nodeGroup = MPI_GROUP_NULL, allGroup = MPI_GROUP_NULL;
-  check(MPI_Comm_group(node, &nodeGroup), "MPI_Comm_group", -1);
-  check(MPI_Comm_group(c.comm, &allGroup), "MPI_Comm_group", -1);
-  std::vector<int> local(static_cast<size_t>(nodeSize)), global(static_cast<size_t>(nodeSize));
-  std::iota(local.begin(), local.end(), 0);
-  check(MPI_Group_translate_ranks(nodeGroup, nodeSize, local.data(), allGroup, global.data()),
-        "MPI_Group_translate_ranks", -1);
-  MPI_Group_free(&nodeGroup);
-  MPI_Group_free(&allGroup);
-  MPI_Comm_free(&node);
-  std::sort(global.begin(), global.end());
-  for (int r : global) {
-    if (r >= 1 && r < rank) c.previousWorkerOnNode = r;
-    if (r > rank && c.nextWorkerOnNode < 0) c.nextWorkerOnNode = r;
-  }
-}
-
-}  // namespace
 
 MpiSession::MpiSession() : comm_(std::make_unique<MpiComm>()) {
   int initialized = 0;
@@ -58,11 +27,9 @@ MpiSession::MpiSession() : comm_(std::make_unique<MpiComm>()) {
     // A communicator of our own, so a failure is returned to us instead of aborting inside
     // MPI with a message that does not say what went wrong.
     check(MPI_Comm_dup(MPI_COMM_WORLD, &comm_->comm), "MPI_Comm_dup", -1);
-    check(MPI_Comm_set_errhandler(comm_->comm, MPI_ERRORS_RETURN), "MPI_Comm_set_errhandler",
-          -1);
+    check(MPI_Comm_set_errhandler(comm_->comm, MPI_ERRORS_RETURN), "MPI_Comm_set_errhandler", -1);
     check(MPI_Comm_rank(comm_->comm, &rank_), "MPI_Comm_rank", -1);
     check(MPI_Comm_size(comm_->comm, &size_), "MPI_Comm_size", -1);
-    findNodeNeighbours(*comm_, rank_);
   } catch (const std::exception& e) {
     abort(e.what(), 1);
   }

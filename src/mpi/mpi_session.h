@@ -15,7 +15,7 @@
 
 namespace prt {
 
-struct MpiComm;  // the communicator and per-node layout; defined inside src/mpi only
+struct MpiComm;  // the communicator and run state; defined inside src/mpi only
 
 class MpiSession {
  public:

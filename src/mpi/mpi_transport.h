@@ -25,12 +25,15 @@ enum Tag : int {
   kMessageTag = 1,  // an encoded protocol Message (cluster/messages.h)
   kSummaryTag = 2,  // worker -> master after StopMsg: an encoded WorkerSummary
   kReleaseTag = 3,  // master -> worker instead of the scene: exit with this int32 code
-  kTurnTag = 4,     // worker -> next worker on the same node: your turn to time Hanoi
 };
 
 // A protocol endpoint (worker index, or kMaster = -1) and its rank: rank 0 is the master.
-inline int rankOf(int endpoint) { return endpoint + 1; }
-inline int endpointOf(int rank) { return rank - 1; }
+inline int rankOf(int endpoint) {
+  return endpoint + 1;
+}
+inline int endpointOf(int rank) {
+  return rank - 1;
+}
 
 // An MPI call failed. `rank` is the peer involved, or -1 when MPI could not say.
 class MpiError : public std::runtime_error {

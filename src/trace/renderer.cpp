@@ -1,7 +1,10 @@
 #include "trace/renderer.h"
 
+#include <algorithm>
 #include <chrono>
+#include <ctime>
 #include <mutex>
+#include <vector>
 
 #include "core/parallel.h"
 #include "trace/sampling.h"
@@ -37,10 +40,64 @@ Color Renderer::renderPixel(uint64_t pixelIndex, uint64_t& rays) const {
 
 namespace {
 constexpr int kTileSize = 16;
+
+// --- per-pixel cost recording (renderImage's pixelSeconds) ---------------------------------
+double threadCpuSeconds() {
+  timespec ts{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
 }
 
+// A pixel's wall time includes any time its thread was preempted: on a busy machine, spikes
+// of milliseconds on a few pixels that would dwarf the real costs. Reading the thread's CPU
+// time around every pixel costs more than a cheap pixel, but once per tile it bounds the
+// tile's true total: whatever the pixel times exceed it by is taken off the largest times,
+// where the preemptions landed, never below the tile's median.
+void removePreemption(std::vector<float>& times, double cpuSeconds) {
+  double excess = -cpuSeconds;
+  for (float t : times) excess += t;
+  if (excess <= 0) return;
+  std::vector<float> sorted = times;
+  std::sort(sorted.begin(), sorted.end());
+  const float median = sorted[sorted.size() / 2];
+  std::vector<size_t> order(times.size());
+  for (size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return times[a] > times[b]; });
+  for (size_t i : order) {
+    const double cut = std::min(excess, static_cast<double>(times[i] - median));
+    if (cut <= 0) break;
+    times[i] = static_cast<float>(times[i] - cut);
+    excess -= cut;
+  }
+}
+
+// Renders the tile [x0, x1) x [y0, y1) and records each pixel's seconds in `pixelSeconds`.
+void renderTileTimed(const Renderer& renderer, Image& image, int x0, int y0, int x1, int y1,
+                     uint64_t& rays, std::vector<float>& pixelSeconds) {
+  const auto w = static_cast<uint64_t>(renderer.width());
+  std::vector<float> times;
+  const double cpu0 = threadCpuSeconds();
+  for (int y = y0; y < y1; ++y) {
+    for (int x = x0; x < x1; ++x) {
+      const uint64_t index = static_cast<uint64_t>(y) * w + static_cast<uint64_t>(x);
+      const auto t0 = std::chrono::steady_clock::now();
+      image.set(index, renderer.renderPixel(index, rays));
+      times.push_back(std::chrono::duration<float>(std::chrono::steady_clock::now() - t0).count());
+    }
+  }
+  removePreemption(times, threadCpuSeconds() - cpu0);
+  size_t i = 0;
+  for (int y = y0; y < y1; ++y) {
+    for (int x = x0; x < x1; ++x) {
+      pixelSeconds[static_cast<uint64_t>(y) * w + static_cast<uint64_t>(x)] = times[i++];
+    }
+  }
+}
+// --- end per-pixel cost recording ------------------------------------------------------------
+}  // namespace
+
 Image renderImage(const Renderer& renderer, int threads, RenderStats* stats,
-                  const ProgressFn& progress) {
+                  const ProgressFn& progress, std::vector<float>* pixelSeconds) {
   const auto start = std::chrono::steady_clock::now();
   const int w = renderer.width(), h = renderer.height();
   Image image(w, h);
@@ -49,15 +106,20 @@ Image renderImage(const Renderer& renderer, int threads, RenderStats* stats,
   std::atomic<uint64_t> rays{0};
   std::mutex progressMutex;
   uint64_t done = 0;
+  if (pixelSeconds) pixelSeconds->assign(renderer.pixelCount(), 0.0f);
   parallelFor(static_cast<uint64_t>(tilesX) * tilesY, threads, [&](uint64_t tile) {
     const int tx = static_cast<int>(tile % static_cast<uint64_t>(tilesX)) * kTileSize;
     const int ty = static_cast<int>(tile / static_cast<uint64_t>(tilesX)) * kTileSize;
     uint64_t tileRays = 0;
     const int x1 = std::min(w, tx + kTileSize), y1 = std::min(h, ty + kTileSize);
-    for (int y = ty; y < y1; ++y) {
-      for (int x = tx; x < x1; ++x) {
-        const uint64_t index = static_cast<uint64_t>(y) * w + x;
-        image.set(index, renderer.renderPixel(index, tileRays));
+    if (pixelSeconds) {
+      renderTileTimed(renderer, image, tx, ty, x1, y1, tileRays, *pixelSeconds);
+    } else {
+      for (int y = ty; y < y1; ++y) {
+        for (int x = tx; x < x1; ++x) {
+          const uint64_t index = static_cast<uint64_t>(y) * w + x;
+          image.set(index, renderer.renderPixel(index, tileRays));
+        }
       }
     }
     rays += tileRays;

@@ -8,6 +8,7 @@
 #include <atomic>
 #include <cstdint>
 #include <functional>
+#include <vector>
 
 #include "core/task_set.h"
 #include "image/image.h"
@@ -46,9 +47,11 @@ struct RenderStats {
 };
 
 // Renders the whole image with one parallel-for over 16x16 tiles on `threads` threads
-// (<= 0: all cores).
+// (<= 0: all cores). With `pixelSeconds`, also records each pixel's wall time in seconds
+// (index y * width + x; resized to the pixel count): the per-pixel cost map the simulator
+// replays. Timing reads the clock around each pixel and never changes the image.
 Image renderImage(const Renderer& renderer, int threads, RenderStats* stats = nullptr,
-                  const ProgressFn& progress = {});
+                  const ProgressFn& progress = {}, std::vector<float>* pixelSeconds = nullptr);
 
 // Renders the given pixels, in parallel over pieces of the set, storing colour i of
 // `colors` for task i of `tasks` (colors.size() == tasks.size()). Returns rays traced.

@@ -1,0 +1,213 @@
+// prt simulate: a parallel run replayed in virtual time from a per-pixel cost map, with the
+// real master, workers and strategies (src/sim). Prints and writes the same report and trace
+// as prt render --workers N.
+
+#include <chrono>
+#include <cstdio>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cli/commands.h"
+#include "core/input_error.h"
+#include "image/atomic_file.h"
+#include "metrics/chrome_trace.h"
+#include "sim/cost_map_file.h"
+#include "sim/simulator.h"
+#include "sim/synthetic_cost.h"
+#include "sim/worker_speeds.h"
+
+namespace prt::cli {
+namespace {
+
+struct SimulateOptions {
+  int workers = 4;
+  std::optional<int> width;   // default: the cost map's, or 640 for the synthetic one
+  std::optional<int> height;  // default: the cost map's, or 480
+  std::string strategy = "reservoir";
+  double initialPercent = 80;           // reservoir
+  unsigned long long chunk = 64;        // self-scheduling
+  std::vector<double> speeds;           // per worker; empty: see slowShare, lognormal, else all 1
+  std::optional<double> slowShare;      // fraction of the workers that are slow
+  double slowFactor = 4;                // how many times slower they are
+  std::optional<double> lognormal;      // sigma of log-normal speeds
+  unsigned long long seed = 1;          // for --slow-share and --lognormal
+  std::string costMapPath;              // empty: the synthetic complex-scene map
+  std::optional<double> serialSeconds;  // rescale the map to this total; synthetic default 60
+  unsigned long long batchPixels = 128;
+  double speedIndexSeconds = 0.08;
+  std::vector<double> speedIndices;  // per worker, replaying a real run's measurements
+  double latencyMicroseconds = 50;
+  double bandwidthMbps = 1000;
+  double masterServiceMicroseconds = 5;
+  std::string reportPath;
+  std::string tracePath;
+  bool quiet = false;
+};
+
+constexpr double kDefaultSerialSeconds = 60;
+
+void writeText(const std::string& path, const std::string& text) {
+  writeFileAtomically(path, [&](std::FILE* f) { std::fwrite(text.data(), 1, text.size(), f); });
+}
+
+CostMap loadCostMap(const SimulateOptions& o, std::string& source) {
+  if (o.costMapPath.empty()) {
+    const int width = o.width.value_or(640);
+    const int height = o.height.value_or(480);
+    source = "synthetic complex-scene cost map";
+    return complexSceneCostMap(width, height, o.serialSeconds.value_or(kDefaultSerialSeconds));
+  }
+  CostMap map = readCostMapFile(o.costMapPath);
+  if ((o.width && *o.width != map.width()) || (o.height && *o.height != map.height())) {
+    throw InputError("cost map '" + o.costMapPath + "' is " + std::to_string(map.width()) + "x" +
+                     std::to_string(map.height()) + " pixels but --width/--height ask for " +
+                     std::to_string(o.width.value_or(map.width())) + "x" +
+                     std::to_string(o.height.value_or(map.height())) +
+                     "; drop them or record a map of that size");
+  }
+  source = "cost map " + o.costMapPath;
+  return o.serialSeconds ? map.scaledTo(*o.serialSeconds) : map;
+}
+
+std::vector<double> workerSpeeds(const SimulateOptions& o) {
+  const int given = (o.speeds.empty() ? 0 : 1) + (o.slowShare ? 1 : 0) + (o.lognormal ? 1 : 0);
+  if (given > 1) {
+    throw InputError("give at most one of --speeds, --slow-share and --lognormal");
+  }
+  if (!o.speeds.empty()) {
+    validateWorkerSpeeds(o.speeds, o.workers);
+    return o.speeds;
+  }
+  if (o.slowShare) return slowShareSpeeds(o.workers, *o.slowShare, o.slowFactor, o.seed);
+  if (o.lognormal) return lognormalSpeeds(o.workers, *o.lognormal, o.seed);
+  return uniformSpeeds(o.workers);
+}
+
+int runSimulate(const SimulateOptions& o) {
+  SimulationOptions options;
+  options.strategy = o.strategy;
+  options.strategyOptions.initialPercent = o.initialPercent;
+  options.strategyOptions.chunk = o.chunk;
+  options.speeds = workerSpeeds(o);
+  options.batchPixels = o.batchPixels;
+  options.baseSpeedIndexSeconds = o.speedIndexSeconds;
+  options.speedIndexSeconds = o.speedIndices;
+  options.network.latencySeconds = o.latencyMicroseconds * 1e-6;
+  options.network.bandwidthBytesPerSecond = o.bandwidthMbps * 1e6 / 8;
+  options.network.masterServiceSeconds = o.masterServiceMicroseconds * 1e-6;
+  // Cheap checks before building the map: a 4K synthetic map takes a moment.
+  validateSimulationOptions(options, ~0ull);
+
+  std::string source;
+  const CostMap costs = loadCostMap(o, source);
+  const auto start = std::chrono::steady_clock::now();
+  const SimulatedRun run = simulate(costs, options);
+  const double wall =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  if (!o.reportPath.empty()) writeText(o.reportPath, run.report.toJson());
+  if (!o.tracePath.empty()) {
+    writeText(o.tracePath, chromeTraceJson(run.events, static_cast<int>(run.report.workers.size()),
+                                           run.report.elapsedSeconds));
+  }
+  if (!o.quiet) {
+    std::printf("simulated %dx%d, %s (%.3f s serial); %llu events in %.3f s of wall time\n%s",
+                costs.width(), costs.height(), source.c_str(), costs.totalSeconds(),
+                static_cast<unsigned long long>(run.simulationEvents), wall,
+                run.report.toTable().c_str());
+  }
+  return 0;
+}
+
+}  // namespace
+
+Action addSimulateCommand(CLI::App& app) {
+  auto o = std::make_shared<SimulateOptions>();
+  auto* cmd = app.add_subcommand(
+      "simulate",
+      "Simulate a parallel render in virtual time: the real master, workers and strategies "
+      "replaying a per-pixel cost map (prt render SCENE --cost-map FILE) on workers of given "
+      "speeds and a network model; no rendering");
+  cmd->add_option("--workers", o->workers, "Number of workers")
+      ->check(CLI::Range(1, 1 << 20))
+      ->capture_default_str();
+  cmd->add_option("--width", o->width,
+                  "Image width (synthetic map: default 640; with --cost-map: must match)")
+      ->check(CLI::Range(1, 32768));
+  cmd->add_option("--height", o->height,
+                  "Image height (synthetic map: default 480; with --cost-map: must match)")
+      ->check(CLI::Range(1, 32768));
+  std::string names;
+  for (const auto& n : strategyNames()) names += (names.empty() ? "" : ", ") + n;
+  cmd->add_option("--strategy", o->strategy, "Load balancing: " + names)->capture_default_str();
+  cmd->add_option("--initial-percent", o->initialPercent,
+                  "Reservoir: percentage of the tasks handed out at the start, in (0, 100]")
+      ->capture_default_str();
+  cmd->add_option("--chunk", o->chunk, "Self-scheduling: tasks per hand-out")
+      ->capture_default_str();
+
+  const std::string speeds = "Worker speeds (default: all 1)";
+  cmd->add_option("--speeds", o->speeds,
+                  "Comma-separated relative speeds, one per worker: 1 full speed (the cost "
+                  "map's machine), 0.5 twice as slow (a real run's --slowdown 2)")
+      ->delimiter(',')
+      ->group(speeds);
+  auto* slowShare =
+      cmd->add_option("--slow-share", o->slowShare,
+                      "Fraction in [0, 1] of the workers, picked at random (--seed), that run "
+                      "--slow-factor times slower")
+          ->group(speeds);
+  cmd->add_option("--slow-factor", o->slowFactor, "How many times slower the slow share runs")
+      ->capture_default_str()
+      ->needs(slowShare)
+      ->group(speeds);
+  cmd->add_option("--lognormal", o->lognormal,
+                  "Log-normal speeds exp(SIGMA * z), median 1, drawn with --seed")
+      ->group(speeds);
+  cmd->add_option("--seed", o->seed, "Seed for --slow-share and --lognormal")
+      ->capture_default_str()
+      ->group(speeds);
+
+  const std::string model = "Cost and network model";
+  cmd->add_option("--cost-map", o->costMapPath,
+                  "Per-pixel costs recorded by prt render SCENE --cost-map FILE (default: a "
+                  "synthetic map shaped like scenes/complex.scene)")
+      ->group(model);
+  cmd->add_option("--serial-seconds", o->serialSeconds,
+                  "Scale the map to this serial time, seconds (synthetic default 60; a "
+                  "recorded map keeps its own total)")
+      ->check(CLI::PositiveNumber)
+      ->group(model);
+  cmd->add_option("--batch", o->batchPixels, "Pixels a worker renders between returning results")
+      ->capture_default_str()
+      ->group(model);
+  cmd->add_option("--speed-index", o->speedIndexSeconds,
+                  "Speed index of a full-speed worker and of the serial machine, seconds")
+      ->capture_default_str()
+      ->group(model);
+  cmd->add_option("--speed-indices", o->speedIndices,
+                  "Comma-separated speed indices, one per worker, to replay those a real run "
+                  "measured (its report's speed_index_s); default --speed-index / speed")
+      ->delimiter(',')
+      ->group(model);
+  cmd->add_option("--latency-us", o->latencyMicroseconds, "One-way message latency, microseconds")
+      ->capture_default_str()
+      ->group(model);
+  cmd->add_option("--bandwidth-mbps", o->bandwidthMbps,
+                  "Link bandwidth per endpoint and direction, Mbit/s")
+      ->capture_default_str()
+      ->group(model);
+  cmd->add_option("--master-service-us", o->masterServiceMicroseconds,
+                  "Master busy time per received message, microseconds")
+      ->capture_default_str()
+      ->group(model);
+
+  cmd->add_option("--report", o->reportPath, "Write the run report as JSON");
+  cmd->add_option("--trace", o->tracePath, "Write a Chrome trace-event timeline (Perfetto)");
+  cmd->add_flag("-q,--quiet", o->quiet, "No report table");
+  return [o] { return runSimulate(*o); };
+}
+
+}  // namespace prt::cli

@@ -1,0 +1,261 @@
+#include "sim/simulator.h"
+
+#include <cmath>
+#include <deque>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+#include "cluster/master.h"
+#include "cluster/worker.h"
+#include "core/check.h"
+#include "core/input_error.h"
+#include "sim/event_queue.h"
+#include "sim/worker_speeds.h"
+
+namespace prt {
+namespace {
+
+struct Mail {
+  int from = kMaster;
+  uint64_t bytes = 0;
+  Message message;
+};
+
+struct SimWorker {
+  SimWorker(int id, uint64_t batchPixels, double speed_, double speedIndex_)
+      : machine(id, WorkerOptions{batchPixels}), speed(speed_), speedIndex(speedIndex_) {}
+  Worker machine;
+  double speed;       // relative to the cost map's machine
+  double speedIndex;  // seconds; what it measures during setup
+  bool busy = false;  // computing (setup or a batch): mail waits in the mailbox
+  bool inSetup = false;
+  double workStart = 0;
+  TaskSet batch;
+  std::deque<Mail> mailbox;
+};
+
+class Simulation {
+ public:
+  Simulation(const CostMap& costs, const SimulationOptions& options)
+      : costs_(costs),
+        options_(options),
+        net_(workerCount(), options.network),
+        master_(makeStrategy(options.strategy, options.strategyOptions), workerCount(),
+                costs.pixelCount(), SceneMsg{std::string(options.sceneBytes, ' '), 1, 1}, nullptr) {
+    for (int w = 0; w < workerCount(); ++w) {
+      const auto i = static_cast<size_t>(w);
+      const double speed = options.speeds[i];
+      const double speedIndex = options.speedIndexSeconds.empty()
+                                    ? options.baseSpeedIndexSeconds / speed
+                                    : options.speedIndexSeconds[i];
+      workers_.emplace_back(w, options.batchPixels, speed, speedIndex);
+    }
+  }
+
+  SimulatedRun run() {
+    send(kMaster, master_.start());
+    while (!finished_) {
+      if (queue_.empty()) {
+        throw std::runtime_error("simulation stalled with " +
+                                 std::to_string(costs_.pixelCount() - master_.doneCount()) +
+                                 " pixels left (a protocol or strategy bug)");
+      }
+      SimEvent e = queue_.pop();
+      now_ = e.time;
+      switch (e.kind) {
+        case SimEventKind::Reach:
+          e.time = net_.arrive(e.endpoint, e.bytes, now_);
+          e.kind = SimEventKind::Deliver;
+          queue_.push(std::move(e));
+          break;
+        case SimEventKind::Deliver:
+          deliver(e.endpoint, Mail{e.from, e.bytes, std::move(e.message)});
+          break;
+        case SimEventKind::MasterDone:
+          finishService();
+          break;
+        case SimEventKind::WorkerDone:
+          finishWork(e.endpoint);
+          break;
+      }
+    }
+    return report();
+  }
+
+ private:
+  int workerCount() const { return static_cast<int>(options_.speeds.size()); }
+  SimWorker& worker(int w) { return workers_[static_cast<size_t>(w)]; }
+
+  void send(int from, Outbox out) {
+    for (Envelope& e : out) {
+      const uint64_t bytes = messageBytes(e.message);
+      log_.add({EventKind::MessageSent, from, now_, now_, 0, bytes, e.to, messageName(e.message)});
+      SimEvent reach;
+      reach.time = net_.depart(from, bytes, now_);
+      reach.kind = SimEventKind::Reach;
+      reach.endpoint = e.to;
+      reach.from = from;
+      reach.bytes = bytes;
+      reach.message = std::move(e.message);
+      queue_.push(std::move(reach));
+    }
+  }
+
+  void logReceived(int at, const Mail& mail) {
+    log_.add({EventKind::MessageReceived, at, now_, now_, 0, mail.bytes, mail.from,
+              messageName(mail.message)});
+  }
+
+  void deliver(int to, Mail mail) {
+    if (to == kMaster) {
+      masterInbox_.push_back(std::move(mail));
+      if (!masterBusy_) startService();
+      return;
+    }
+    SimWorker& w = worker(to);
+    if (w.machine.stopped()) return;  // a stopped worker reads nothing more
+    w.mailbox.push_back(std::move(mail));
+    if (!w.busy) advance(to);
+  }
+
+  // The master takes the next message: it handles it at once, then stays busy for the
+  // service time; its replies leave when it is done.
+  void startService() {
+    PRT_CHECK(!masterBusy_ && !masterInbox_.empty());
+    const Mail mail = std::move(masterInbox_.front());
+    masterInbox_.pop_front();
+    logReceived(kMaster, mail);
+    masterOut_ = master_.onMessage(mail.from, mail.message);
+    masterBusy_ = true;
+    SimEvent done;
+    done.time = now_ + options_.network.masterServiceSeconds;
+    done.kind = SimEventKind::MasterDone;
+    queue_.push(std::move(done));
+  }
+
+  // The run ends when the master has handled the last results, as in the local driver.
+  void finishService() {
+    masterBusy_ = false;
+    send(kMaster, std::move(masterOut_));
+    masterOut_.clear();
+    if (master_.complete()) {
+      finished_ = true;
+    } else if (!masterInbox_.empty()) {
+      startService();
+    }
+  }
+
+  // The local driver's worker loop: read every waiting message, then set up or render the
+  // next batch; with nothing to do, wait for mail.
+  void advance(int id) {
+    SimWorker& w = worker(id);
+    while (!w.mailbox.empty() && !w.machine.stopped()) {
+      const Mail mail = std::move(w.mailbox.front());
+      w.mailbox.pop_front();
+      logReceived(id, mail);
+      send(id, w.machine.onMessage(mail.from, mail.message));
+    }
+    if (w.machine.stopped()) return;
+    double seconds = 0;
+    if (w.machine.needsSetup()) {
+      w.inSetup = true;
+      seconds = w.speedIndex;
+    } else if (w.machine.hasWork()) {
+      w.inSetup = false;
+      w.batch = w.machine.nextBatch();
+      seconds = costs_.seconds(w.batch) / w.speed;
+    } else {
+      return;
+    }
+    w.busy = true;
+    w.workStart = now_;
+    SimEvent done;
+    done.time = now_ + seconds;
+    done.kind = SimEventKind::WorkerDone;
+    done.endpoint = id;
+    queue_.push(std::move(done));
+  }
+
+  void finishWork(int id) {
+    SimWorker& w = worker(id);
+    w.busy = false;
+    if (w.inSetup) {
+      log_.add({EventKind::Setup, id, w.workStart, now_, 0, 0, 0, ""});
+      send(id, w.machine.setupDone(w.speedIndex));
+    } else {
+      log_.add({EventKind::Compute, id, w.workStart, now_, w.batch.size(), 0, 0, ""});
+      send(id, w.machine.batchDone(w.batch));
+    }
+    advance(id);
+  }
+
+  SimulatedRun report() {
+    SimulatedRun run;
+    RunInfo info;
+    info.driver = "simulated";
+    info.strategy = options_.strategy;
+    info.width = costs_.width();
+    info.height = costs_.height();
+    info.masterSpeedIndexSeconds = options_.baseSpeedIndexSeconds;
+    info.workerSpeedIndexSeconds = master_.speedIndices();
+    info.serialSeconds = costs_.totalSeconds();
+    for (const SimWorker& w : workers_) {
+      info.slowdowns.push_back(1.0 / w.speed);
+      info.tasksReceived.push_back(w.machine.tasksReceived());
+    }
+    run.report = makeReport(info, log_.events, now_);
+    run.events = std::move(log_.events);
+    run.simulationEvents = queue_.scheduled();
+    return run;
+  }
+
+  const CostMap& costs_;
+  const SimulationOptions& options_;
+  EventQueue queue_;
+  NetworkModel net_;
+  EventLog log_;
+  Master master_;
+  std::vector<SimWorker> workers_;
+  std::deque<Mail> masterInbox_;
+  bool masterBusy_ = false;
+  Outbox masterOut_;
+  double now_ = 0;
+  bool finished_ = false;
+};
+
+}  // namespace
+
+void validateSimulationOptions(const SimulationOptions& o, uint64_t pixelCount) {
+  const auto workers = o.speeds.size();
+  if (workers < 1) throw InputError("--workers must be at least 1");
+  if (workers > pixelCount) {
+    throw InputError("more workers (" + std::to_string(workers) + ") than pixels (" +
+                     std::to_string(pixelCount) + ")");
+  }
+  validateWorkerSpeeds(o.speeds, static_cast<int>(workers));
+  if (o.batchPixels < 1) throw InputError("--batch must be at least 1");
+  if (!(o.baseSpeedIndexSeconds > 0) || !std::isfinite(o.baseSpeedIndexSeconds)) {
+    throw InputError("--speed-index must be a positive number of seconds");
+  }
+  if (!o.speedIndexSeconds.empty()) {
+    if (o.speedIndexSeconds.size() != workers) {
+      throw InputError("--speed-indices lists " + std::to_string(o.speedIndexSeconds.size()) +
+                       " values for " + std::to_string(workers) + " workers; give one per worker");
+    }
+    for (double s : o.speedIndexSeconds) {
+      if (!(s > 0) || !std::isfinite(s)) {
+        throw InputError("--speed-indices values must be positive numbers of seconds");
+      }
+    }
+  }
+  validateNetworkOptions(o.network);
+  makeStrategy(o.strategy, o.strategyOptions);  // throws for unknown names and bad options
+}
+
+SimulatedRun simulate(const CostMap& costs, const SimulationOptions& options) {
+  validateSimulationOptions(options, costs.pixelCount());
+  return Simulation(costs, options).run();
+}
+
+}  // namespace prt

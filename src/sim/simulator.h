@@ -1,0 +1,60 @@
+#pragma once
+// The simulator: a discrete-event simulation, in virtual time, of a master and workers of
+// given speeds on a network (network_model.h), replaying a per-pixel cost map instead of
+// rendering. It drives the very Master, Worker and Strategy objects the thread and MPI
+// drivers drive, with the same loop as the local driver (drive/local_driver.cpp):
+//   - a worker reads all the mail waiting for it before it computes, and none while it
+//     computes (setup or a batch); the master handles one message at a time;
+//   - setup lasts the worker's speed index, baseSpeedIndex / speed (the local driver's setup
+//     is loading the scene and timing the Towers of Hanoi);
+//   - a batch lasts cost(batch) / speed, where cost is the map's full-speed seconds;
+//   - results carry no colours, but are counted at the size they would have.
+// It emits the same event stream (metrics/events.h), hence the same report and Chrome trace,
+// with times in virtual seconds; the run ends when the master holds every pixel, as a real
+// run does. Worker failures are not simulated.
+//
+// Work is proportional to messages and batches, never to pixels beyond one pass over the
+// map (tasks travel as compact runs), so 1,024 workers on a 3840x2160 image take seconds.
+// Deterministic: the same inputs give the same report. Single-threaded.
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "balance/strategy.h"
+#include "metrics/events.h"
+#include "metrics/run_report.h"
+#include "sim/cost_map.h"
+#include "sim/network_model.h"
+
+namespace prt {
+
+struct SimulationOptions {
+  std::string strategy = "reservoir";  // see strategyNames()
+  StrategyOptions strategyOptions;
+  std::vector<double> speeds;             // one per worker (their number is the worker count)
+  uint64_t batchPixels = 128;             // pixels per returned batch, as in a real run
+  double baseSpeedIndexSeconds = 0.08;    // the speed index of a speed-1 worker, seconds; also
+                                          // the serial machine's (the cost map's recorder)
+  std::vector<double> speedIndexSeconds;  // optional, one per worker: the speed indices the
+                                          // workers report and set up for, as measured in a
+                                          // real run to replay; empty: base / speed
+  NetworkOptions network;
+  uint64_t sceneBytes = 4096;  // the scene text the master sends to each worker
+};
+
+struct SimulatedRun {
+  std::vector<Event> events;      // the run's event stream, virtual seconds
+  RunReport report;               // driver "simulated"; serial time = the map's total
+  uint64_t simulationEvents = 0;  // discrete events processed (a measure of the work done)
+};
+
+// Throws InputError for options no run could use: no workers, more workers than pixels, a
+// bad speed list, unknown strategy or bad strategy options, a zero batch, a bad network or a
+// speed index that is not positive (or a speed-index list of the wrong length).
+void validateSimulationOptions(const SimulationOptions& options, uint64_t pixelCount);
+
+// Validates (as above), then simulates the run to completion.
+SimulatedRun simulate(const CostMap& costs, const SimulationOptions& options);
+
+}  // namespace prt

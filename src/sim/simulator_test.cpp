@@ -1,0 +1,178 @@
+// The simulator against answers known analytically, and every strategy's invariants: every
+// pixel rendered exactly once, the same report for the same inputs.
+
+#include "sim/simulator.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <numeric>
+#include <string>
+
+#include "core/input_error.h"
+#include "metrics/chrome_trace.h"
+#include "sim/synthetic_cost.h"
+
+namespace prt {
+namespace {
+
+SimulationOptions optionsFor(const std::string& strategy, std::vector<double> speeds,
+                             uint64_t batch = 128) {
+  SimulationOptions o;
+  o.strategy = strategy;
+  o.speeds = std::move(speeds);
+  o.batchPixels = batch;
+  return o;
+}
+
+// The bytes of the first (or last) message sent with this label.
+uint64_t bytesOf(const SimulatedRun& run, const std::string& label, bool last = false) {
+  uint64_t bytes = 0;
+  for (const Event& e : run.events) {
+    if (e.kind == EventKind::MessageSent && e.label == label) {
+      bytes = e.bytes;
+      if (!last) break;
+    }
+  }
+  EXPECT_GT(bytes, 0u) << label;
+  return bytes;
+}
+
+uint64_t renderedPixels(const SimulatedRun& run) {
+  uint64_t pixels = 0;
+  for (const Event& e : run.events) {
+    if (e.kind == EventKind::Compute) pixels += e.pixels;
+  }
+  return pixels;
+}
+
+TEST(SimulatorTest, OneWorkerIsSetupPlusCostPlusTheMessageChain) {
+  const CostMap map = uniformCostMap(64, 64, 1.0);
+  for (const double speed : {1.0, 0.25}) {
+    const SimulationOptions o = optionsFor("blocks", {speed});
+    const SimulatedRun run = simulate(map, o);
+    const NetworkOptions& n = o.network;
+    auto hop = [&](uint64_t bytes) {
+      return n.latencySeconds + static_cast<double>(bytes) / n.bandwidthBytesPerSecond;
+    };
+    const double expected = hop(bytesOf(run, "Scene")) + o.baseSpeedIndexSeconds / speed +
+                            hop(bytesOf(run, "SpeedIndex")) + n.masterServiceSeconds +
+                            hop(bytesOf(run, "Tasks")) + 1.0 / speed +
+                            hop(bytesOf(run, "Results", true)) + n.masterServiceSeconds;
+    EXPECT_NEAR(run.report.elapsedSeconds, expected, 1e-9) << "speed " << speed;
+    EXPECT_NEAR(*run.report.speedup, 1.0 / expected, 1e-9);
+    EXPECT_NEAR(run.report.workers[0].busySeconds, 1.0 / speed, 1e-9);
+    EXPECT_NEAR(run.report.workers[0].speedIndexSeconds, 0.08 / speed, 1e-12);
+    EXPECT_NEAR(run.report.masu, speed, 1e-12);
+  }
+}
+
+TEST(SimulatorTest, ScatterOnFourEqualWorkersTakesAQuarter) {
+  const CostMap map = uniformCostMap(128, 128, 2.0);
+  const SimulatedRun run = simulate(map, optionsFor("scatter", {1, 1, 1, 1}));
+  const double ideal = 0.08 + 2.0 / 4;
+  EXPECT_GE(run.report.elapsedSeconds, ideal);
+  EXPECT_LT(run.report.elapsedSeconds, ideal + 1e-3);  // a few messages of latency
+  for (const WorkerReport& w : run.report.workers) {
+    EXPECT_EQ(w.pixels, 128u * 128 / 4);
+    EXPECT_NEAR(w.busySeconds, 0.5, 1e-9);
+  }
+}
+
+TEST(SimulatorTest, ReservoirDividesTheWorkBySpeed) {
+  // Speeds 1 and 0.5: speed indices 0.08 and 0.16 s, divisions 2/3 and 1/3, so both finish
+  // together after the slower setup plus 1 s / 1.5.
+  const CostMap map = uniformCostMap(256, 256, 1.0);
+  const SimulatedRun run = simulate(map, optionsFor("reservoir", {1, 0.5}, 64));
+  const double ideal = 0.16 + 1.0 / 1.5;
+  EXPECT_NEAR(run.report.elapsedSeconds, ideal, 0.01 * ideal);
+  EXPECT_NEAR(static_cast<double>(run.report.workers[0].pixels) / (256 * 256), 2.0 / 3, 0.01);
+  // Scatter gives them equal shares: the slow one takes 0.5 s / 0.5.
+  const SimulatedRun scatter = simulate(map, optionsFor("scatter", {1, 0.5}, 64));
+  EXPECT_NEAR(scatter.report.elapsedSeconds, 0.16 + 1.0, 0.01);
+}
+
+class SimulatorStrategyTest : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(SimulatorStrategyTest, EveryPixelExactlyOnceAndNoFasterThanPossible) {
+  const CostMap map = complexSceneCostMap(97, 61, 3.0);
+  const std::vector<double> speeds = {1, 0.5, 0.25, 1, 0.7};
+  const SimulatedRun run = simulate(map, optionsFor(GetParam(), speeds, 16));
+  // The master holds every pixel (the run ended); as many were rendered as exist, so none
+  // twice.
+  EXPECT_EQ(renderedPixels(run), map.pixelCount());
+  uint64_t reported = 0;
+  for (const WorkerReport& w : run.report.workers) reported += w.pixels;
+  EXPECT_EQ(reported, map.pixelCount());
+  EXPECT_EQ(run.report.info.driver, "simulated");
+  EXPECT_EQ(run.report.info.strategy, GetParam());
+  EXPECT_GE(run.report.elapsedSeconds, 3.0 / std::accumulate(speeds.begin(), speeds.end(), 0.0));
+  EXPECT_LE(run.report.efficiency, 1.0);
+  EXPECT_NEAR(run.report.masu, 3.45, 1e-9);
+  EXPECT_NE(chromeTraceJson(run.events, 5, run.report.elapsedSeconds).find("rendering"),
+            std::string::npos);
+}
+
+TEST_P(SimulatorStrategyTest, SameInputsSameReport) {
+  const CostMap map = complexSceneCostMap(80, 60, 2.0);
+  const SimulationOptions o = optionsFor(GetParam(), {1, 0.3, 0.6, 0.9, 0.5, 1}, 32);
+  const SimulatedRun a = simulate(map, o);
+  const SimulatedRun b = simulate(map, o);
+  EXPECT_EQ(a.report.toJson(), b.report.toJson());
+  ASSERT_EQ(a.events.size(), b.events.size());
+  for (size_t i = 0; i < a.events.size(); ++i) {
+    EXPECT_EQ(a.events[i].start, b.events[i].start) << i;
+    EXPECT_EQ(a.events[i].label, b.events[i].label) << i;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(AllStrategies, SimulatorStrategyTest,
+                         ::testing::ValuesIn(strategyNames()));
+
+TEST(SimulatorTest, HybridDiffusesFromSlowToFastWorkers) {
+  const CostMap map = uniformCostMap(128, 128, 1.0);
+  const SimulatedRun run = simulate(map, optionsFor("hybrid", {1, 1, 0.25, 0.25}, 32));
+  uint64_t orders = 0, peerTasks = 0;
+  for (const Event& e : run.events) {
+    if (e.kind != EventKind::MessageSent) continue;
+    if (e.label == "TransferOrder") ++orders;
+    if (e.label == "Tasks" && e.worker >= 0) ++peerTasks;
+  }
+  EXPECT_GT(orders, 0u);
+  EXPECT_GT(peerTasks, 0u);
+  // Much better than scatter's 0.08 / 0.25 + 0.25 / 0.25 = 1.32 s.
+  EXPECT_LT(run.report.elapsedSeconds, 0.9);
+}
+
+TEST(SimulatorTest, TheMasterLinkLimitsManyWorkers) {
+  // 12 bytes a pixel of results through the master's 1 Gbit/s link: 4 M pixels need 0.4 s
+  // however many workers share 1 s of rendering.
+  const CostMap map = uniformCostMap(2048, 2048, 1.0);
+  const SimulatedRun run = simulate(map, optionsFor("blocks", std::vector<double>(64, 1.0), 4096));
+  EXPECT_GT(run.report.elapsedSeconds, 2048.0 * 2048 * 12 / 125e6);
+  EXPECT_GT(run.report.bytes, 2048u * 2048 * 12);
+}
+
+TEST(SimulatorTest, BadOptionsAreInputErrors) {
+  const CostMap map = uniformCostMap(8, 8, 1.0);
+  auto message = [&](const SimulationOptions& o) {
+    try {
+      simulate(map, o);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(message(optionsFor("nope", {1})).find("valid strategies: scatter"), std::string::npos);
+  EXPECT_NE(message(optionsFor("scatter", {})).find("at least 1"), std::string::npos);
+  EXPECT_NE(message(optionsFor("scatter", {1, 0})).find("positive"), std::string::npos);
+  EXPECT_NE(message(optionsFor("scatter", {1}, 0)).find("--batch"), std::string::npos);
+  EXPECT_NE(message(optionsFor("scatter", std::vector<double>(65, 1.0))).find("more workers"),
+            std::string::npos);
+  SimulationOptions o = optionsFor("scatter", {1});
+  o.network.bandwidthBytesPerSecond = 0;
+  EXPECT_NE(message(o).find("bandwidth"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace prt
