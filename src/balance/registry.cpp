@@ -18,6 +18,10 @@
 namespace prt {
 namespace {
 
+// Interleaved strata of the scattered reservoir: enough that a worker's initial block spans
+// several whole strata on clusters of a few dozen workers.
+constexpr uint64_t kReservoirScatterStrata = 64;
+
 using Factory = std::function<std::unique_ptr<Strategy>(const StrategyOptions&)>;
 
 const std::vector<std::pair<std::string, Factory>>& factories() {
@@ -27,6 +31,10 @@ const std::vector<std::pair<std::string, Factory>>& factories() {
       {"reservoir",
        [](const StrategyOptions& o) {
          return std::make_unique<ReservoirStrategy>(o.initialPercent);
+       }},
+      {"reservoir-scatter",
+       [](const StrategyOptions& o) {
+         return std::make_unique<ReservoirStrategy>(o.initialPercent, kReservoirScatterStrata);
        }},
       {"blocks", [](const StrategyOptions&) { return std::make_unique<BlocksStrategy>(); }},
       {"self",

@@ -10,8 +10,8 @@ namespace {
 
 TEST(StrategyRegistryTest, EveryNameMakesThatStrategy) {
   const std::vector<std::string> names = strategyNames();
-  EXPECT_EQ(names, (std::vector<std::string>{"scatter", "hybrid", "reservoir", "blocks", "self",
-                                             "guided", "factoring"}));
+  EXPECT_EQ(names, (std::vector<std::string>{"scatter", "hybrid", "reservoir", "reservoir-scatter",
+                                             "blocks", "self", "guided", "factoring"}));
   for (const std::string& name : names) EXPECT_EQ(makeStrategy(name, {})->name(), name);
 }
 

@@ -35,6 +35,9 @@ std::string variantLabel(const ::testing::TestParamInfo<Variant>& info) {
     label += "Chunk";
     label += std::to_string(info.param.options.chunk);
   }
+  for (char& c : label) {
+    if (c == '-') c = '_';  // test names allow only letters, digits and '_'
+  }
   return label;
 }
 
