@@ -18,8 +18,8 @@ constexpr double kRadiansPerDegree = std::numbers::pi / 180.0;
 // reach 0 while there is ambient or diffuse light to show (docs/povray-mapping.md).
 constexpr double kMaxTransmitWithLocalLight = 0.999;
 
-// Enough digits that the POV-Ray scene is as exact as its parser (doubles) allows, without
-// the noise of 17 digits in every number.
+// Twelve significant digits: differences far below a pixel or an 8-bit code, without the
+// noise of 17 digits in every number.
 std::string num(double v) {
   if (v == 0) return "0";  // also turns -0 into 0
   char buffer[32];
@@ -62,13 +62,18 @@ void writeHeader(std::string& out, const Scene& scene, const RenderSettings& set
   for (const std::string& argument : povrayArguments(run)) command += " " + argument;
 
   line(out, 0, "// Exported from a PRT scene for POV-Ray 3.7; see docs/povray-mapping.md.");
-  line(out, 0,
-       "// Image: " + std::to_string(scene.image.width) + " x " +
-           std::to_string(scene.image.height) +
-           " pixels (the camera is exact for this "
-           "size only), PRT sampling " +
-           std::to_string(settings.samplesPerPixel) + " spp, DRT " +
-           std::to_string(settings.drtRate) + ".");
+  std::string image = "// Image: " + std::to_string(scene.image.width) + " x ";
+  image += std::to_string(scene.image.height) + " pixels (the camera's aspect ratio); PRT ";
+  image += std::to_string(settings.samplesPerPixel) + " spp, DRT ";
+  image += std::to_string(settings.drtRate) + ".";
+  line(out, 0, image);
+  const int depth = povAntialiasDepth(settings.samplesPerPixel);
+  if (depth > 0) {
+    const std::string n = std::to_string(depth);
+    line(out, 0,
+         "// POV-Ray antialiasing: " + n + " x " + n +
+             " + 1 = " + std::to_string(depth * depth + 1) + " samples per pixel.");
+  }
   line(out, 0, "// Render with:");
   line(out, 0, "//   " + command);
   line(out, 0, "#version 3.7;");
