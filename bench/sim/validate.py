@@ -10,31 +10,31 @@ the same scene recorded on this machine.
        prt simulate --cost-map MAP --workers 4 --speeds 0.5,0.5,0.25,0.25 --strategy S
          --speed-indices I1,I2,I3,I4 --report R.json
      replaying the speed indices the real workers measured (and set up for), so the strategy
-     makes the same decisions; and once with ideal speed indices, --speed-index I0 (each
-     worker's I0 / speed), I0 being the real runs' median of speed index over slowdown.
+     makes the same decisions.
+  4. the same replays with the per-batch overhead h (--batch-overhead-us) of this machine,
+     measured once from the scatter runs, whose shares are known (worker w renders the pixels
+     w, w + c, w + 2c, ...): h = sum of (busy - slowdown * cost of the share) over sum of
+     (slowdown * batches). An emulated worker pays per batch for what the map does not hold:
+     cold caches after its sleep while other workers ran, packing and sending results, the
+     timer's late wake-up. One constant for the machine, not a fit per strategy.
+  5. for diagnosis, the replays with the map scaled to the compute each real run actually did
+     (--serial-seconds = sum over workers of busy / slowdown); "inflation" is that compute
+     over the map's total.
 
-  4. per real run, the replay again with the cost map scaled to the compute the real run
-     actually did (--serial-seconds = sum over workers of busy time / slowdown): on a busy or
-     small machine the emulated slow workers compute more slowly than the map says (cores
-     shared between workers, preemptions stretched k-fold by the slowdown, timer wake-ups),
-     and this calibration separates that from what the simulator predicts: how the work is
-     shared out, and the waiting.
-
-Prints per strategy the real elapsed time (median of the runs, with min and max), the
-replayed simulations' median and its error, the calibrated replays' median and its error, the
-inflation of the real compute over the map, and the simulation with ideal speed indices. The
-target is an error within 10 %.
+Prints per strategy the real elapsed time (median of the runs, with min and max) and the
+simulated ones with their errors. The target is within 10 %.
 
 Faithfulness: the real runs need 1/2+1/2+1/4+1/4 = 1.5 free cores for the slowdown emulation
-to hold, and the cost map is the compute time of an unloaded core. On a loaded machine the
-real runs stretch and the error grows: run it when the machine is otherwise idle (the load
-average is printed at the start and the end).
+to hold; on a loaded machine the real runs stretch and the error grows: run it when the
+machine is otherwise idle (the load average is printed at the start and the end).
 
 Usage: bench/sim/validate.py [--prt build/prt] [--case A] [--runs 3] [--slowdown 2,2,4,4]
                              [--strategies scatter,hybrid,...] [--json FILE]
 """
 import argparse
+import array
 import json
+import math
 import os
 import statistics
 import subprocess
@@ -56,6 +56,31 @@ def load(path):
         return json.load(f)
 
 
+def read_cost_map(path):
+    """The per-pixel seconds of a cost map file (format: src/sim/cost_map_file.h)."""
+    with open(path, "rb") as f:
+        data = f.read()
+    if data[:8] != b"PRTCOST1":
+        sys.exit(f"{path}: not a cost map")
+    costs = array.array("f")
+    costs.frombytes(data[16:])
+    return costs
+
+
+def batch_overhead(scatter_runs, costs, batch):
+    """Seconds per batch at full speed that the scatter runs spent beyond the map's costs."""
+    excess = weight = 0.0
+    for report in scatter_runs:
+        c = len(report["workers"])
+        for w in report["workers"]:
+            k = w["slowdown"]
+            share = math.fsum(costs[w["worker"]::c])
+            batches = math.ceil(w["pixels"] / batch)
+            excess += w["busy_s"] - k * share
+            weight += k * batches
+    return max(0.0, excess / weight) if weight else 0.0
+
+
 def main():
     root = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
     ap = argparse.ArgumentParser(description=__doc__,
@@ -65,13 +90,17 @@ def main():
     ap.add_argument("--case", default="A")
     ap.add_argument("--runs", type=int, default=3)
     ap.add_argument("--slowdown", default="2,2,4,4")
-    ap.add_argument("--batch", default="128")
+    ap.add_argument("--batch", type=int, default=128)
     ap.add_argument("--strategies", default=",".join(STRATEGIES))
     ap.add_argument("--json", help="also write the raw results here")
     args = ap.parse_args()
     slowdowns = [float(k) for k in args.slowdown.split(",")]
     speeds = ",".join(f"{1 / k:.9g}" for k in slowdowns)
     workers = str(len(slowdowns))
+    strategies = args.strategies.split(",")
+    if "scatter" in strategies:  # first: it calibrates the batch overhead
+        strategies.remove("scatter")
+        strategies.insert(0, "scatter")
     tmp = tempfile.mkdtemp(prefix="prt-validate-")
     image = os.path.join(tmp, "image.pfm")
     cost_map = os.path.join(tmp, "complex.cost")
@@ -80,74 +109,70 @@ def main():
 
     run([args.prt, "render", args.scene, "--case", args.case, "--threads", "1",
          "--cost-map", cost_map, "-o", image, "--quiet"])
+    costs = read_cost_map(cost_map)
+
+    def simulate(strategy, real_report, extra):
+        indices = ",".join(f"{w['speed_index_s']:.6f}" for w in real_report["workers"])
+        run([args.prt, "simulate", "--cost-map", cost_map, "--workers", workers, "--speeds",
+             speeds, "--speed-indices", indices, "--strategy", strategy, "--batch",
+             str(args.batch), "--report", report, "--quiet"] + extra)
+        return load(report)
 
     results = {}
-    for strategy in args.strategies.split(","):
-        common = ["--strategy", strategy, "--batch", args.batch]
+    overhead_us = 0.0
+    for strategy in strategies:
         real = []
         for _ in range(args.runs):
             run([args.prt, "render", args.scene, "--case", args.case, "--workers", workers,
-                 "--slowdown", args.slowdown, "--report", report, "-o", image, "--quiet"] + common)
+                 "--slowdown", args.slowdown, "--strategy", strategy, "--batch", str(args.batch),
+                 "--report", report, "-o", image, "--quiet"])
             real.append(load(report))
-        simulated, calibrated, inflation = [], [], []
-        for r in real:
-            replay = [args.prt, "simulate", "--cost-map", cost_map, "--workers", workers,
-                      "--speeds", speeds, "--speed-indices",
-                      ",".join(f"{w['speed_index_s']:.6f}" for w in r["workers"]),
-                      "--report", report, "--quiet"] + common
-            run(replay)
-            simulated.append(load(report))
-            compute = sum(w["busy_s"] / w["slowdown"] for w in r["workers"])
-            inflation.append(compute / simulated[-1]["serial_s"])
-            run(replay + ["--serial-seconds", f"{compute:.6f}"])
-            calibrated.append(load(report))
-        base_index = statistics.median(w["speed_index_s"] / w["slowdown"]
-                                       for r in real for w in r["workers"])
-        run([args.prt, "simulate", "--cost-map", cost_map, "--workers", workers, "--speeds", speeds,
-             "--speed-index", f"{base_index:.6f}", "--report", report, "--quiet"] + common)
-        ideal = load(report)
+        if strategy == "scatter":
+            overhead_us = 1e6 * batch_overhead(real, costs, args.batch)
+            print(f"batch overhead from the scatter runs: {overhead_us:.0f} us at full speed")
+        plain = [simulate(strategy, r, []) for r in real]
+        with_h = [simulate(strategy, r, ["--batch-overhead-us", f"{overhead_us:.3f}"])
+                  for r in real]
+        computes = [sum(w["busy_s"] / w["slowdown"] for w in r["workers"]) for r in real]
+        scaled = [simulate(strategy, r, ["--serial-seconds", f"{c:.6f}"])
+                  for r, c in zip(real, computes)]
         elapsed = [r["elapsed_s"] for r in real]
         med = statistics.median(elapsed)
-        sim = statistics.median(r["elapsed_s"] for r in simulated)
-        cal = statistics.median(r["elapsed_s"] for r in calibrated)
-        results[strategy] = {
-            "real_elapsed_s": elapsed,
-            "real_median_s": med,
-            "simulated_elapsed_s": [r["elapsed_s"] for r in simulated],
-            "simulated_s": sim,
-            "error": sim / med - 1,
-            "calibrated_s": cal,
-            "calibrated_error": cal / med - 1,
-            "inflation": statistics.median(inflation),
-            "ideal_simulated_s": ideal["elapsed_s"],
-            "ideal_error": ideal["elapsed_s"] / med - 1,
-            "speed_index_s": base_index,
-            "serial_s": ideal["serial_s"],
-            "real_messages": statistics.median(r["messages"] for r in real),
-            "simulated_messages": statistics.median(r["messages"] for r in simulated),
-        }
-        r = results[strategy]
+        row = {"real_elapsed_s": elapsed, "real_median_s": med,
+               "serial_s": plain[0]["serial_s"],
+               "inflation": statistics.median(c / plain[0]["serial_s"] for c in computes),
+               "real_messages": statistics.median(r["messages"] for r in real),
+               "simulated_messages": statistics.median(r["messages"] for r in plain)}
+        for key, reports in (("simulated", plain), ("with_overhead", with_h), ("scaled", scaled)):
+            sim = statistics.median(r["elapsed_s"] for r in reports)
+            row[key + "_s"] = sim
+            row[key + "_error"] = sim / med - 1
+        results[strategy] = row
         print(f"{strategy:<10} real {med:7.3f} s ({min(elapsed):.3f}..{max(elapsed):.3f})  "
-              f"simulated {sim:7.3f} s ({100 * r['error']:+.1f} %)  "
-              f"calibrated {cal:7.3f} s ({100 * r['calibrated_error']:+.1f} %)", flush=True)
+              f"simulated {row['simulated_s']:7.3f} s ({100 * row['simulated_error']:+.1f} %)  "
+              f"with h {row['with_overhead_s']:7.3f} s "
+              f"({100 * row['with_overhead_error']:+.1f} %)", flush=True)
 
     serial = next(iter(results.values()))["serial_s"] if results else 0
-    print(f"\ncost map: {serial:.3f} s serial (case {args.case}, one thread); "
-          f"{workers} workers, --slowdown {args.slowdown}; median of {args.runs} real runs")
-    print(f"{'strategy':<10} {'real_s':>8} {'sim_s':>8} {'error':>8} {'calib_s':>8} {'error':>8} "
-          f"{'inflation':>9} {'ideal_s':>8} {'msgs real':>10} {'msgs sim':>9}")
+    print(f"\ncost map: {serial:.3f} s serial (case {args.case}, one thread); {workers} workers, "
+          f"--slowdown {args.slowdown}; median of {args.runs} real runs; "
+          f"h = {overhead_us:.0f} us per batch")
+    print(f"{'strategy':<10} {'real_s':>7} {'sim_s':>7} {'error':>7} {'sim+h_s':>7} {'error':>7} "
+          f"{'scaled_s':>8} {'error':>7} {'inflation':>9} {'msgs real':>9} {'msgs sim':>8}")
     for s, r in results.items():
-        print(f"{s:<10} {r['real_median_s']:8.3f} {r['simulated_s']:8.3f} {100 * r['error']:+7.1f}% "
-              f"{r['calibrated_s']:8.3f} {100 * r['calibrated_error']:+7.1f}% "
-              f"{r['inflation']:9.2f} {r['ideal_simulated_s']:8.3f} "
-              f"{r['real_messages']:10.0f} {r['simulated_messages']:9.0f}")
-    worst = max((abs(r["error"]) for r in results.values()), default=0)
-    worst_cal = max((abs(r["calibrated_error"]) for r in results.values()), default=0)
-    print(f"largest error {100 * worst:.1f} %, calibrated {100 * worst_cal:.1f} % (target 10 %); "
-          f"load average at the end: {os.getloadavg()[0]:.2f}")
+        print(f"{s:<10} {r['real_median_s']:7.3f} {r['simulated_s']:7.3f} "
+              f"{100 * r['simulated_error']:+6.1f}% {r['with_overhead_s']:7.3f} "
+              f"{100 * r['with_overhead_error']:+6.1f}% {r['scaled_s']:8.3f} "
+              f"{100 * r['scaled_error']:+6.1f}% {r['inflation']:9.2f} "
+              f"{r['real_messages']:9.0f} {r['simulated_messages']:8.0f}")
+    for key, name in (("simulated", "plain"), ("with_overhead", "with h"), ("scaled", "scaled")):
+        worst = max((abs(r[key + "_error"]) for r in results.values()), default=0)
+        print(f"largest error {name}: {100 * worst:.1f} %", end="; ")
+    print(f"(target 10 %); load average at the end: {os.getloadavg()[0]:.2f}")
     if args.json:
         with open(args.json, "w") as f:
-            json.dump({"slowdown": slowdowns, "case": args.case, "results": results}, f, indent=2)
+            json.dump({"slowdown": slowdowns, "case": args.case, "batch_overhead_us": overhead_us,
+                       "results": results}, f, indent=2)
 
 
 if __name__ == "__main__":

@@ -36,6 +36,7 @@ struct SimulateOptions {
   std::string costMapPath;              // empty: the synthetic complex-scene map
   std::optional<double> serialSeconds;  // rescale the map to this total; synthetic default 60
   unsigned long long batchPixels = 128;
+  double batchOverheadMicroseconds = 0;
   double speedIndexSeconds = 0.08;
   std::vector<double> speedIndices;  // per worker, replaying a real run's measurements
   double latencyMicroseconds = 50;
@@ -92,6 +93,7 @@ int runSimulate(const SimulateOptions& o) {
   options.strategyOptions.chunk = o.chunk;
   options.speeds = workerSpeeds(o);
   options.batchPixels = o.batchPixels;
+  options.batchOverheadSeconds = o.batchOverheadMicroseconds * 1e-6;
   options.baseSpeedIndexSeconds = o.speedIndexSeconds;
   options.speedIndexSeconds = o.speedIndices;
   options.network.latencySeconds = o.latencyMicroseconds * 1e-6;
@@ -181,6 +183,11 @@ Action addSimulateCommand(CLI::App& app) {
       ->check(CLI::PositiveNumber)
       ->group(model);
   cmd->add_option("--batch", o->batchPixels, "Pixels a worker renders between returning results")
+      ->capture_default_str()
+      ->group(model);
+  cmd->add_option("--batch-overhead-us", o->batchOverheadMicroseconds,
+                  "Full-speed microseconds each batch costs besides its pixels (result "
+                  "packing, cold caches), scaled by 1 / speed like the pixels")
       ->capture_default_str()
       ->group(model);
   cmd->add_option("--speed-index", o->speedIndexSeconds,

@@ -59,7 +59,9 @@ class NetworkModel {
 
  private:
   double transmitSeconds(uint64_t bytes) const;
-  size_t linkOf(int endpoint) const { return static_cast<size_t>(endpoint + 1); }
+  size_t linkOf(int endpoint) const {
+    return endpoint == kMaster ? 0 : static_cast<size_t>(endpoint) + 1;
+  }
 
   NetworkOptions options_;
   std::vector<double> outFree_;  // per endpoint (master first): when its outgoing link frees

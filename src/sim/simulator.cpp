@@ -164,7 +164,7 @@ class Simulation {
     } else if (w.machine.hasWork()) {
       w.inSetup = false;
       w.batch = w.machine.nextBatch();
-      seconds = costs_.seconds(w.batch) / w.speed;
+      seconds = (costs_.seconds(w.batch) + options_.batchOverheadSeconds) / w.speed;
     } else {
       return;
     }
@@ -235,6 +235,9 @@ void validateSimulationOptions(const SimulationOptions& o, uint64_t pixelCount) 
   }
   validateWorkerSpeeds(o.speeds, static_cast<int>(workers));
   if (o.batchPixels < 1) throw InputError("--batch must be at least 1");
+  if (!(o.batchOverheadSeconds >= 0) || !std::isfinite(o.batchOverheadSeconds)) {
+    throw InputError("--batch-overhead-us must be finite and >= 0");
+  }
   if (!(o.baseSpeedIndexSeconds > 0) || !std::isfinite(o.baseSpeedIndexSeconds)) {
     throw InputError("--speed-index must be a positive number of seconds");
   }

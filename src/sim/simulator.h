@@ -7,7 +7,8 @@
 //     computes (setup or a batch); the master handles one message at a time;
 //   - setup lasts the worker's speed index, baseSpeedIndex / speed (the local driver's setup
 //     is loading the scene and timing the Towers of Hanoi);
-//   - a batch lasts cost(batch) / speed, where cost is the map's full-speed seconds;
+//   - a batch lasts (cost(batch) + batchOverhead) / speed, where cost is the map's full-speed
+//     seconds;
 //   - results carry no colours, but are counted at the size they would have.
 // It emits the same event stream (metrics/events.h), hence the same report and Chrome trace,
 // with times in virtual seconds; the run ends when the master holds every pixel, as a real
@@ -34,6 +35,10 @@ struct SimulationOptions {
   StrategyOptions strategyOptions;
   std::vector<double> speeds;             // one per worker (their number is the worker count)
   uint64_t batchPixels = 128;             // pixels per returned batch, as in a real run
+  double batchOverheadSeconds = 0;        // full-speed seconds a batch costs besides its
+                                          // pixels (the per-chunk overhead h of the
+                                          // scheduling literature: packing results, cold
+                                          // caches); scaled by 1 / speed like the pixels
   double baseSpeedIndexSeconds = 0.08;    // the speed index of a speed-1 worker, seconds; also
                                           // the serial machine's (the cost map's recorder)
   std::vector<double> speedIndexSeconds;  // optional, one per worker: the speed indices the

@@ -67,6 +67,16 @@ TEST(SimulatorTest, OneWorkerIsSetupPlusCostPlusTheMessageChain) {
   }
 }
 
+TEST(SimulatorTest, BatchOverheadIsPaidPerBatchAtTheWorkersSpeed) {
+  const CostMap map = uniformCostMap(64, 64, 1.0);  // 32 batches of 128 pixels
+  SimulationOptions o = optionsFor("blocks", {0.5});
+  const double plain = simulate(map, o).report.elapsedSeconds;
+  o.batchOverheadSeconds = 1e-3;
+  const SimulatedRun run = simulate(map, o);
+  EXPECT_NEAR(run.report.elapsedSeconds - plain, 32 * 1e-3 / 0.5, 1e-9);
+  EXPECT_NEAR(run.report.workers[0].busySeconds, (1.0 + 32e-3) / 0.5, 1e-9);
+}
+
 TEST(SimulatorTest, ScatterOnFourEqualWorkersTakesAQuarter) {
   const CostMap map = uniformCostMap(128, 128, 2.0);
   const SimulatedRun run = simulate(map, optionsFor("scatter", {1, 1, 1, 1}));
