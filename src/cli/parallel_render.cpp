@@ -190,12 +190,17 @@ int renderParallelMpi(const RenderOptions& o, const SceneLoader& loadScene) {
     // From here a lost worker or an MPI failure ends the whole job with a message.
     const ParallelRun run = renderMpiMaster(session, request);
     return finishParallelRun(o, request.scene, run);
-  } catch (const InputError&) {
-    session.releaseWorkers(2);  // before the run: the workers exit quietly; main reports
-    throw;
-  } catch (...) {
+  } catch (const InputError& e) {
+    // Report before releasing: a released worker's exit can make mpirun end rank 0 at once.
+    std::fprintf(stderr, "%s\n", e.format().c_str());
+    std::fflush(stderr);
+    session.releaseWorkers(2);
+    return 2;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "prt: error: %s\n", e.what());
+    std::fflush(stderr);
     session.releaseWorkers(1);
-    throw;
+    return 1;
   }
 #else
   (void)o;
