@@ -72,7 +72,7 @@ INSTANTIATE_TEST_SUITE_P(AllStrategies, LocalDriverTest, ::testing::ValuesIn(str
 
 TEST(LocalDriverFaultTest, HungWorkerIsDetectedByTimeout) {
   LocalRunRequest r = request("reservoir", 3);
-  r.options.workerTimeoutSeconds = 1.0;
+  r.options.workerTimeoutSeconds = 2.0;  // generous: CI may run other tests alongside
   r.options.faults.push_back({2, 0, FaultInjection::Kind::Hang});
   const ParallelRun run = renderLocal(r);
   EXPECT_TRUE(run.image == serialReference());
