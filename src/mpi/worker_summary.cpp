@@ -1,76 +1,22 @@
 #include "mpi/worker_summary.h"
 
 #include <algorithm>
-#include <bit>
-#include <cstring>
-#include <limits>
 #include <stdexcept>
 #include <string>
-#include <type_traits>
+
+#include "cluster/byte_codec.h"
 
 namespace prt {
 namespace {
 
-// The same byte order as the protocol messages (cluster/messages.cpp).
-static_assert(std::endian::native == std::endian::little, "encoding assumes little-endian");
-
 constexpr uint8_t kVersion = 1;
-
-class Writer {
- public:
-  template <typename T>
-  void pod(const T& v) {
-    static_assert(std::is_trivially_copyable_v<T>);
-    const auto* p = reinterpret_cast<const uint8_t*>(&v);
-    out.insert(out.end(), p, p + sizeof(T));
-  }
-  void text(const std::string& s) {
-    if (s.size() > std::numeric_limits<uint16_t>::max()) {
-      throw std::runtime_error("worker summary: event label too long");
-    }
-    pod(static_cast<uint16_t>(s.size()));
-    out.insert(out.end(), s.begin(), s.end());
-  }
-  Bytes out;
-};
-
-class Reader {
- public:
-  Reader(const uint8_t* d, size_t n) : data_(d), size_(n) {}
-  template <typename T>
-  T pod() {
-    need(sizeof(T));
-    T v;
-    std::memcpy(&v, data_ + pos_, sizeof(T));
-    pos_ += sizeof(T);
-    return v;
-  }
-  std::string text() {
-    const auto n = pod<uint16_t>();
-    need(n);
-    std::string s(reinterpret_cast<const char*>(data_ + pos_), n);
-    pos_ += n;
-    return s;
-  }
-  void need(uint64_t n) const {
-    if (n > size_ - pos_) throw std::runtime_error("malformed worker summary: truncated");
-  }
-  void finish() const {
-    if (pos_ != size_) throw std::runtime_error("malformed worker summary: trailing bytes");
-  }
-
- private:
-  const uint8_t* data_;
-  size_t size_;
-  size_t pos_ = 0;
-};
 
 constexpr size_t kMinEventBytes = 1 + 4 + 8 + 8 + 8 + 8 + 4 + 2;
 
 }  // namespace
 
 Bytes encodeSummary(const WorkerSummary& summary) {
-  Writer w;
+  ByteWriter w;
   w.pod(kVersion);
   w.pod(summary.rays);
   w.pod(summary.tasksReceived);
@@ -89,7 +35,7 @@ Bytes encodeSummary(const WorkerSummary& summary) {
 }
 
 WorkerSummary decodeSummary(const uint8_t* data, size_t size) {
-  Reader r(data, size);
+  ByteReader r(data, size, "worker summary");
   if (r.pod<uint8_t>() != kVersion) throw std::runtime_error("worker summary: unknown version");
   WorkerSummary s;
   s.rays = r.pod<uint64_t>();
