@@ -1,29 +1,43 @@
 #pragma once
-// Throttle: emulates a machine k times slower on the one we have. After each stretch of
-// computing that took t seconds of this thread's CPU time it waits (k - 1) * t, so a worker
-// with slowdown k takes k times as long for everything it computes, the speed-index run
+// Throttle: emulates a machine k times slower on the one we have. A stretch of computing that
+// used c seconds of this thread's CPU time is made to last k * c seconds of wall time: after
+// it the thread waits k * c minus the wall time the stretch already took. A worker with
+// slowdown k thus takes k times as long for everything it computes, the speed-index run
 // included. Faithful only while the workers' combined demand, the sum of 1/k_i, fits in the
 // free cores.
 //
-// Why CPU time rather than wall time: when emulated workers briefly outnumber the cores, a
-// stretch's wall time grows with the queueing; stretching the queueing too would feed back
-// (longer waits, more overlap, longer stretches) and slow every worker far beyond k. With
-// CPU time only the work itself is stretched.
+// Why pace to CPU time, and count the wall time already spent:
+//  - stretching wall time k-fold would stretch queueing too: when emulated workers briefly
+//    outnumber the cores, longer waits make more overlap and longer stretches, and every
+//    worker ends far slower than k;
+//  - waiting (k - 1) * c after the stretch, on top of its wall time, charges the queueing to
+//    the worker: four workers starting their speed-index runs together on two cores each run
+//    at half a core, and a k = 2 worker measured 3c instead of 2c.
+// Pacing the end of the stretch to k * c absorbs the queueing into the wait, as long as the
+// stretch's wall time stays under k * c.
 // Reads clocks: used by drivers only. Thread-safe (no state besides k).
 
 #include <time.h>
 
+#include <algorithm>
 #include <chrono>
 #include <thread>
 
 namespace prt {
+
+// How long to wait after a stretch that used `cpuSeconds` of CPU and took `wallSeconds` of
+// wall time, so that it lasts `slowdown` times its CPU time in all; never negative.
+inline double throttlePauseSeconds(double slowdown, double cpuSeconds, double wallSeconds) {
+  return std::max(0.0, slowdown * cpuSeconds - wallSeconds);
+}
 
 class Throttle {
  public:
   explicit Throttle(double slowdown = 1.0) : slowdown_(slowdown) {}
   double slowdown() const { return slowdown_; }
 
-  // Runs fn, then waits (k - 1) times the CPU time it used. Returns the total wall seconds.
+  // Runs fn, then waits until it has lasted k times the CPU time it used. Returns the total
+  // wall seconds.
   template <typename F>
   double run(F&& fn) const {
     const auto start = std::chrono::steady_clock::now();
@@ -31,12 +45,17 @@ class Throttle {
     fn();
     if (slowdown_ > 1.0) {
       const double cpu = threadCpuSeconds() - cpuStart;
-      std::this_thread::sleep_for(std::chrono::duration<double>((slowdown_ - 1.0) * cpu));
+      const double wall = secondsSince(start);
+      std::this_thread::sleep_for(
+          std::chrono::duration<double>(throttlePauseSeconds(slowdown_, cpu, wall)));
     }
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return secondsSince(start);
   }
 
  private:
+  static double secondsSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
   static double threadCpuSeconds() {
     timespec ts{};
     clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);

@@ -1,0 +1,44 @@
+#include "drive/throttle.h"
+
+#include <gtest/gtest.h>
+
+namespace prt {
+namespace {
+
+TEST(Throttle, PausesUntilTheStretchLastsKTimesItsCpuTime) {
+  // Alone on a core: wall time equals CPU time, the wait is (k - 1) * c.
+  EXPECT_DOUBLE_EQ(throttlePauseSeconds(4.0, 0.010, 0.010), 0.030);
+  EXPECT_DOUBLE_EQ(throttlePauseSeconds(1.0, 0.010, 0.010), 0.0);
+}
+
+TEST(Throttle, AbsorbsQueueingIntoTheWait) {
+  // Sharing a core with another thread, the stretch took twice its CPU time: a k = 2 worker
+  // is already as slow as it should be and does not wait; a k = 4 worker waits the rest.
+  EXPECT_DOUBLE_EQ(throttlePauseSeconds(2.0, 0.010, 0.020), 0.0);
+  EXPECT_DOUBLE_EQ(throttlePauseSeconds(4.0, 0.010, 0.020), 0.020);
+}
+
+TEST(Throttle, NeverWaitsANegativeTime) {
+  EXPECT_EQ(throttlePauseSeconds(2.0, 0.010, 0.050), 0.0);
+}
+
+TEST(Throttle, RunReturnsTheStretchedWallTime) {
+  // Burn a little CPU: the run lasts at least k times the CPU time the work used.
+  const Throttle throttle(3.0);
+  volatile double sink = 0;
+  const auto cpuNow = [] {
+    timespec ts{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+  };
+  double cpu = 0;
+  const double wall = throttle.run([&] {
+    const double c0 = cpuNow();
+    for (int i = 0; i < 2000000; ++i) sink = sink + 1e-9 * i;
+    cpu = cpuNow() - c0;
+  });
+  EXPECT_GE(wall, 3.0 * cpu * 0.999);
+}
+
+}  // namespace
+}  // namespace prt
