@@ -5,8 +5,8 @@
 #include <tuple>
 
 #include "core/input_error.h"
-#include "core/speed_index.h"
 #include "drive/local_driver.h"
+#include "drive/speed_probe.h"
 #include "image/atomic_file.h"
 #include "image/image_io.h"
 #include "metrics/chrome_trace.h"
@@ -77,6 +77,11 @@ void addParallelOptions(CLI::App& cmd, RenderOptions& o) {
                  "slower (faithful while the sum of 1/k_i fits the free cores)")
       ->delimiter(',')
       ->group(parallel);
+  cmd.add_option("--speed-index", o.speedIndex,
+                 "Speed index the workers measure: hanoi (the paper's Towers of Hanoi run) or "
+                 "probe (rendering a fixed sample of the image's pixels)")
+      ->capture_default_str()
+      ->group(parallel);
   cmd.add_option("--batch", o.batchPixels, "Pixels a worker renders between returning results")
       ->capture_default_str()
       ->group(parallel);
@@ -119,6 +124,7 @@ ParallelOptions toParallelOptions(const RenderOptions& o, int workers) {
   p.strategyOptions.initialPercent = o.initialPercent;
   p.strategyOptions.chunk = o.chunk;
   p.slowdowns = o.slowdowns;
+  p.speedIndexKind = parseSpeedIndexKind(o.speedIndex);
   p.batchPixels = o.batchPixels;
   p.workerTimeoutSeconds = o.workerTimeoutSeconds;
   p.faults = parseFaults(o.faults);
@@ -149,7 +155,8 @@ int renderParallelLocal(const RenderOptions& o, const Scene& scene, const Render
   validateParallelOptions(request.options,
                           static_cast<uint64_t>(scene.image.width) * scene.image.height);
   request.serialSeconds = serialSeconds(o, scene, s);
-  request.masterSpeedIndexSeconds = measureSpeedIndexSeconds();
+  request.masterSpeedIndexSeconds =
+      serialSpeedIndexSeconds(request.options.speedIndexKind, scene, s);
   return finishParallelRun(o, scene, renderLocal(request));
 }
 
@@ -186,7 +193,8 @@ int renderParallelMpi(const RenderOptions& o, const SceneLoader& loadScene) {
     validateParallelOptions(request.options, static_cast<uint64_t>(request.scene.image.width) *
                                                  request.scene.image.height);
     request.serialSeconds = serialSeconds(o, request.scene, request.settings);
-    request.masterSpeedIndexSeconds = measureSpeedIndexSeconds();
+    request.masterSpeedIndexSeconds = serialSpeedIndexSeconds(
+        request.options.speedIndexKind, request.scene, request.settings);
     // From here a lost worker or an MPI failure ends the whole job with a message.
     const ParallelRun run = renderMpiMaster(session, request);
     return finishParallelRun(o, request.scene, run);

@@ -25,6 +25,7 @@ struct RenderOptions {
   double initialPercent = 80;              // reservoir: share handed out at the start
   unsigned long long chunk = 64;           // self-scheduling chunk
   std::vector<double> slowdowns;           // per worker, >= 1
+  std::string speedIndex = "hanoi";        // what workers measure: hanoi | probe
   unsigned long long batchPixels = 128;    // pixels per returned batch
   double workerTimeoutSeconds = 30;        // silence before a worker is declared lost
   std::optional<double> serialSeconds;     // serial time for speed-up

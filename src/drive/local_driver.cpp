@@ -44,7 +44,7 @@ struct WorkerOutcome {
 
 void runWorker(int id, const ParallelOptions& options, Network& net, WorkerOutcome& outcome) {
   Worker worker(id, WorkerOptions{options.batchPixels});
-  WorkerEngine engine(options.slowdownOf(id), options.speedIndexDiscs);
+  WorkerEngine engine(options.slowdownOf(id), options.speedIndexKind, options.speedIndexDiscs);
   Mailbox& box = *net.workers[static_cast<size_t>(id)];
   const FaultInjection* fault = nullptr;
   for (const FaultInjection& f : options.faults) {

@@ -118,3 +118,18 @@ TEST(LocalDriverReportTest, ReportCountsMessagesAndSpeedIndices) {
 
 }  // namespace
 }  // namespace prt
+
+namespace prt {
+namespace {
+
+TEST(LocalDriverSpeedIndexTest, ProbeSpeedIndexRanksSlowWorkersAndKeepsTheImage) {
+  LocalRunRequest r = request("reservoir", 2);
+  r.options.speedIndexKind = SpeedIndexKind::RenderProbe;
+  r.options.slowdowns = {1, 4};
+  const ParallelRun run = renderLocal(r);
+  EXPECT_TRUE(run.image == serialReference());
+  EXPECT_GT(run.report.workers[1].speedIndexSeconds, run.report.workers[0].speedIndexSeconds);
+}
+
+}  // namespace
+}  // namespace prt

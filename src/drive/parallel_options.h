@@ -7,6 +7,7 @@
 
 #include "balance/strategy.h"
 #include "core/speed_index.h"
+#include "drive/speed_index_kind.h"
 
 namespace prt {
 
@@ -25,6 +26,7 @@ struct ParallelOptions {
   std::vector<double> slowdowns;       // per worker, each >= 1; empty: all 1
   uint64_t batchPixels = 128;          // pixels per returned batch of results
   double workerTimeoutSeconds = 30;    // silence after which a worker owing an answer is lost
+  SpeedIndexKind speedIndexKind = SpeedIndexKind::Hanoi;  // what each worker measures
   int speedIndexDiscs = kSpeedIndexDiscs;  // size of each worker's Towers of Hanoi run
   std::vector<FaultInjection> faults;  // worker W is rank W+1 under MPI
 

@@ -2,6 +2,7 @@
 
 #include "core/check.h"
 #include "core/speed_index.h"
+#include "drive/speed_probe.h"
 #include "scene/scene_file.h"
 
 namespace prt {
@@ -13,6 +14,12 @@ void WorkerEngine::load(const SceneMsg& scene) {
 }
 
 double WorkerEngine::measureSpeedIndex() const {
+  if (speedIndexKind_ == SpeedIndexKind::RenderProbe) {
+    PRT_CHECK(renderer_ != nullptr);
+    constexpr int kProbePieces = 32;  // as many stretches as the Hanoi run below
+    return probeSeconds(*renderer_, kProbePieces,
+                        [this](auto&& render) { return throttle_.run(render); });
+  }
   // Solving for D discs is 2^(D-20) solves for 20 discs plus a few moves. Throttling each
   // 20-disc stretch on its own interleaves workers that start measuring at the same moment,
   // as their rendering interleaves, instead of making them all compete for the cores at once.

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "cluster/messages.h"
+#include "drive/speed_index_kind.h"
 #include "drive/throttle.h"
 #include "trace/renderer.h"
 
@@ -14,12 +15,13 @@ namespace prt {
 
 class WorkerEngine {
  public:
-  WorkerEngine(double slowdown, int speedIndexDiscs)
-      : throttle_(slowdown), speedIndexDiscs_(speedIndexDiscs) {}
+  WorkerEngine(double slowdown, SpeedIndexKind speedIndexKind, int speedIndexDiscs)
+      : throttle_(slowdown), speedIndexKind_(speedIndexKind), speedIndexDiscs_(speedIndexDiscs) {}
 
   // Parses the scene text (the master already validated it) and prepares the renderer.
   void load(const SceneMsg& scene);
-  // The Towers of Hanoi time, slowed down like everything else this worker computes.
+  // The speed index (Towers of Hanoi time, or the ray-tracing probe's on the loaded scene),
+  // slowed down like everything else this worker computes.
   double measureSpeedIndex() const;
   // Renders `batch` on one thread; returns 3 floats per pixel. `seconds` receives the wall
   // time including the slowdown wait, `rays` the rays traced.
@@ -29,6 +31,7 @@ class WorkerEngine {
 
  private:
   Throttle throttle_;
+  SpeedIndexKind speedIndexKind_;
   int speedIndexDiscs_;
   std::unique_ptr<World> world_;
   std::unique_ptr<Renderer> renderer_;

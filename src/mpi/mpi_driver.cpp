@@ -257,7 +257,7 @@ class WorkerRank {
         engine_(options.slowdowns.size() == static_cast<size_t>(session.workerCount())
                     ? options.slowdownOf(id_)
                     : 1.0,
-                options.speedIndexDiscs) {
+                options.speedIndexKind, options.speedIndexDiscs) {
     for (const FaultInjection& f : options.faults) {
       if (f.worker == id_) fault_ = &f;
     }

@@ -43,7 +43,7 @@ ParallelRun renderMpiMaster(MpiSession& session, const MpiRunRequest& request);
 // Ranks >= 1: runs worker rank - 1 until the master stops or releases it, and returns the
 // process exit code (0 after a finished run; the master's code after a release). All ranks
 // parse the same command line, so `options` matches the master's; only the per-worker fields
-// (slowdown, faults), batchPixels and speedIndexDiscs are used here.
+// (slowdown, faults), batchPixels, speedIndexKind and speedIndexDiscs are used here.
 int runMpiWorker(MpiSession& session, const ParallelOptions& options);
 
 }  // namespace prt
