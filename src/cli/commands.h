@@ -4,6 +4,7 @@
 
 #include <CLI/CLI.hpp>
 #include <functional>
+#include <string>
 
 namespace prt::cli {
 
@@ -14,5 +15,7 @@ Action addSpeedIndexCommand(CLI::App& app);
 Action addSimulateCommand(CLI::App& app);  // discrete-event simulation (simulate_command.cpp)
 Action addExportCommand(CLI::App& app);   // POV-Ray export (export_command.cpp)
 Action addCompareCommand(CLI::App& app);  // PRT vs POV-Ray images (compare_command.cpp)
+// The paper's experiments (experiment_command.cpp); `commandLine` is recorded in summaries.
+Action addExperimentCommand(CLI::App& app, const std::string& commandLine);
 
 }  // namespace prt::cli

@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <exception>
+#include <string>
 
 #include "cli/commands.h"
 #include "core/input_error.h"
@@ -16,6 +17,9 @@ int main(int argc, char** argv) {
   const prt::cli::Action simulate = prt::cli::addSimulateCommand(app);
   const prt::cli::Action exportPov = prt::cli::addExportCommand(app);
   const prt::cli::Action compare = prt::cli::addCompareCommand(app);
+  std::string commandLine = "prt";
+  for (int i = 1; i < argc; ++i) commandLine += std::string(" ") + argv[i];
+  const prt::cli::Action experiment = prt::cli::addExperimentCommand(app, commandLine);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -29,6 +33,7 @@ int main(int argc, char** argv) {
       if (sub->get_name() == "simulate") return simulate();
       if (sub->get_name() == "export") return exportPov();
       if (sub->get_name() == "compare") return compare();
+      if (sub->get_name() == "experiment") return experiment();
     }
   } catch (const prt::InputError& e) {
     std::fprintf(stderr, "%s\n", e.format().c_str());

@@ -1,0 +1,163 @@
+// compare: the paper's Figs. 19-21. Speed-up, efficiency and ASU of every strategy on test
+// cases A-D, real runs on emulated slow workers and the same configurations simulated from
+// each case's serial cost map; and the paper's headline claims (reservoir up to 87 % better
+// speed-up than scatter, 36 % than hybrid; 28 % better efficiency than scatter; 25 % and
+// 10 % better ASU) recomputed from our figures.
+
+#include <map>
+
+#include "balance/strategy.h"
+#include "core/speed_index.h"
+#include "lab/context.h"
+#include "lab/experiments.h"
+#include "lab/measure.h"
+
+namespace prt {
+namespace {
+
+struct Claim {
+  const char* measure;  // speedup, efficiency, asu
+  const char* other;    // scatter, hybrid
+  double paper;         // the paper's "at most X % better"
+};
+constexpr Claim kClaims[] = {{"speedup", "scatter", 87}, {"speedup", "hybrid", 36},
+                             {"efficiency", "scatter", 28}, {"asu", "scatter", 25},
+                             {"asu", "hybrid", 10}};
+
+double field(const RunSummary& s, const std::string& measure) {
+  if (measure == "speedup") return s.speedup;
+  if (measure == "efficiency") return s.efficiency;
+  return s.asu;
+}
+
+}  // namespace
+
+void runCompare(ExperimentContext& cx) {
+  std::vector<std::string> cases = cx.options().cases;
+  if (cases.empty()) cases = cx.quick() ? std::vector<std::string>{"A", "C"}
+                                        : std::vector<std::string>{"A", "B", "C", "D"};
+  std::vector<std::string> strategies = cx.options().strategies;
+  if (strategies.empty()) strategies = strategyNames();
+  for (const std::string& s : strategies) makeStrategy(s, {});  // InputError if unknown
+  const Scene scene = cx.scene(64, 48);
+  const std::vector<double> slowdowns = cx.slowdowns();
+  const double masterIndex = measureSpeedIndexSeconds();
+
+  std::vector<std::string> columns = {"case", "strategy", "source", "runs"};
+  for (const std::string& c : summaryColumns()) columns.push_back(c);
+  CsvTable table(columns);
+  CsvTable runs({"case", "strategy", "run", "elapsed_s", "speedup", "efficiency", "masu", "asu",
+                 "messages", "bytes"});
+  // results[source][case][strategy]
+  std::map<std::string, std::map<std::string, std::map<std::string, RunSummary>>> results;
+  std::string serialTimes;
+  for (const std::string& c : cases) {
+    const RenderSettings settings = cx.settings(c);
+    cx.progress("case " + c + ": serial time and cost map, " + std::to_string(cx.runs()) +
+                " render(s)");
+    const SerialMeasurement serial = measureSerial(scene, settings, cx.runs(), true);
+    serialTimes += (serialTimes.empty() ? "" : ", ") + c + " " + csvNumber(serial.medianSeconds, 4) + " s";
+    for (const std::string& strategy : strategies) {
+      const ParallelOptions options = parallelOptions(strategy, slowdowns);
+      std::vector<RunReport> reports;
+      for (int run = 1; run <= cx.runs(); ++run) {
+        cx.progress("case " + c + ", " + strategy + ": run " + std::to_string(run) + " of " +
+                    std::to_string(cx.runs()));
+        reports.push_back(runReal(scene, settings, options, serial.medianSeconds, masterIndex));
+        const RunReport& r = reports.back();
+        runs.addRow({c, strategy, std::to_string(run), csvNumber(r.elapsedSeconds, 5),
+                     csvNumber(r.speedup.value_or(0), 4), csvNumber(r.efficiency, 4),
+                     csvNumber(r.masu, 4), csvNumber(r.asu.value_or(0), 4),
+                     std::to_string(r.messages), std::to_string(r.bytes)});
+      }
+      results["real"][c][strategy] = medianSummary(reports);
+      results["simulated"][c][strategy] =
+          medianSummary({runSimulated(*serial.costMap, options, masterIndex)});
+      for (const char* source : {"real", "simulated"}) {
+        std::vector<std::string> row = {c, strategy, source,
+                                        std::string(source) == "real" ? std::to_string(cx.runs()) : "1"};
+        for (const std::string& cell : summaryCells(results[source][c][strategy])) row.push_back(cell);
+        table.addRow(row);
+      }
+    }
+  }
+  cx.write(table, "compare.csv");
+  cx.write(runs, "compare-runs.csv");
+
+  struct Figure {
+    const char* file;
+    const char* measure;
+    const char* title;
+    const char* label;
+    double scale;
+  };
+  const Figure figures[] = {
+      {"compare-speedup.png", "speedup", "Fig. 19: speed-up", "speed-up", 1},
+      {"compare-efficiency.png", "efficiency", "Fig. 20: efficiency", "efficiency, %", 100},
+      {"compare-asu.png", "asu", "Fig. 21: achieved speed-up (ASU)", "ASU, %", 100}};
+  for (const Figure& f : figures) {
+    Chart chart;
+    chart.kind = Chart::Kind::Bars;
+    chart.title = std::string(f.title) + " of every strategy, real runs, " +
+                  std::to_string(slowdowns.size()) + " emulated workers";
+    chart.yLabel = f.label;
+    chart.categories.clear();
+    for (const std::string& c : cases) chart.categories.push_back("case " + c);
+    for (const std::string& strategy : strategies) {
+      ChartSeries series{strategy, {}, {}, false};
+      for (const std::string& c : cases) {
+        series.y.push_back(f.scale * field(results["real"][c][strategy], f.measure));
+      }
+      chart.series.push_back(series);
+    }
+    cx.draw(chart, f.file);
+  }
+
+  cx.say("Every strategy on `" + cx.options().scenePath + "` at " +
+         std::to_string(scene.image.width) + "x" + std::to_string(scene.image.height) +
+         ". `real` rows: the local driver, median of " + std::to_string(cx.runs()) +
+         " run(s); `simulated` rows: the simulator replaying each case's serial cost map with "
+         "the same worker speeds. Serial times (one thread): " + serialTimes + ". " +
+         cx.emulationNote() + "\n\n");
+  cx.say("The paper's claims, recomputed (\"X % better\" = ours / theirs - 1, the largest over "
+         "the cases):\n\n| claim | paper | ");
+  std::vector<std::string> mine;
+  for (const char* m : {"reservoir", "reservoir-scatter"}) {
+    for (const std::string& s : strategies) {
+      if (s == m) mine.push_back(m);
+    }
+  }
+  for (const std::string& m : mine) cx.say(m + " real | " + m + " simulated | ");
+  cx.say("\n|---|---|");
+  for (size_t i = 0; i < 2 * mine.size(); ++i) cx.say("---|");
+  cx.say("\n");
+  auto has = [&](const std::string& s) {
+    return std::find(strategies.begin(), strategies.end(), s) != strategies.end();
+  };
+  for (const Claim& claim : kClaims) {
+    if (!has(claim.other)) continue;
+    cx.say(std::string("| ") + claim.measure + " vs " + claim.other + " | " +
+           csvNumber(claim.paper) + " % | ");
+    for (const std::string& m : mine) {
+      for (const char* source : {"real", "simulated"}) {
+        double best = -1e9;
+        std::string where;
+        for (const std::string& c : cases) {
+          const double ours = field(results[source][c][m], claim.measure);
+          const double theirs = field(results[source][c][claim.other], claim.measure);
+          const double better = 100 * (ours / theirs - 1);
+          if (better > best) {
+            best = better;
+            where = c;
+          }
+        }
+        cx.say(csvNumber(best, 3) + " % (case " + where + ") | ");
+      }
+    }
+    cx.say("\n");
+  }
+  cx.say("\n" + markdownTable(table, {"case", "strategy", "source", "elapsed_s", "speedup",
+                                      "efficiency", "masu", "asu", "messages"}));
+}
+
+}  // namespace prt

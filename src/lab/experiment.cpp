@@ -1,0 +1,131 @@
+#include "lab/experiment.h"
+
+#include <cmath>
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+#include <thread>
+
+#include "balance/strategy.h"
+#include "core/input_error.h"
+#include "image/atomic_file.h"
+#include "lab/context.h"
+#include "lab/experiments.h"
+#include "trace/render_settings.h"
+
+namespace prt {
+namespace {
+
+struct Entry {
+  const char* name;
+  const char* title;
+  void (*run)(ExperimentContext&);
+};
+
+constexpr Entry kExperiments[] = {
+    {"table3", "Table III: serial times of test cases A-D", runTable3},
+    {"speed-index", "Fig. 17: Towers of Hanoi against a ray-tracing probe as speed index",
+     runSpeedIndex},
+    {"initial-percent", "Fig. 18: reservoir speed-up and efficiency against the initial percentage",
+     runInitialPercent},
+    {"compare", "Figs. 19-21: speed-up, efficiency and ASU of every strategy, cases A-D",
+     runCompare},
+    {"scale", "Scaling from 4 to 1,024 simulated workers", runScale},
+};
+
+const Entry& find(const std::string& name) {
+  for (const Entry& e : kExperiments) {
+    if (name == e.name) return e;
+  }
+  std::string list;
+  for (const Entry& e : kExperiments) list += (list.empty() ? "" : ", ") + std::string(e.name);
+  throw InputError("unknown experiment '" + name + "'; valid: " + list);
+}
+
+std::string cpuModel() {
+  std::ifstream in("/proc/cpuinfo");
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.rfind("model name", 0) == 0) {
+      const size_t colon = line.find(':');
+      if (colon != std::string::npos) return line.substr(colon + 2);
+    }
+  }
+  return "unknown CPU";
+}
+
+std::string today() {
+  const std::time_t now = std::time(nullptr);
+  char buffer[32];
+  std::tm tm{};
+  gmtime_r(&now, &tm);
+  std::strftime(buffer, sizeof buffer, "%Y-%m-%d %H:%M UTC", &tm);
+  return buffer;
+}
+
+void validate(const ExperimentOptions& o) {
+  if (o.outDir.empty()) throw InputError("--out DIR is required: where the results go");
+  if (o.runs < 0) throw InputError("--runs must be at least 1");
+  for (double k : o.slowdowns) {
+    if (!(k >= 1) || !std::isfinite(k)) {
+      throw InputError("--slowdown values must be finite and at least 1");
+    }
+  }
+  if (o.serialSeconds && !(*o.serialSeconds > 0 && std::isfinite(*o.serialSeconds))) {
+    throw InputError("--serial-seconds must be positive");
+  }
+  for (const std::string& s : o.strategies) makeStrategy(s, {});  // lists the valid names
+  for (const std::string& c : o.cases) {
+    if (!paperTestCase(c)) throw InputError("unknown test case '" + c + "'; valid: A, B, C, D");
+  }
+  if (!o.testCase.empty() && !paperTestCase(o.testCase)) {
+    throw InputError("unknown test case '" + o.testCase + "'; valid: A, B, C, D");
+  }
+  if (!std::filesystem::exists(o.scenePath)) {
+    throw InputError("no scene file '" + o.scenePath +
+                     "': run from the PRT source folder or pass --scene FILE");
+  }
+}
+
+}  // namespace
+
+std::vector<std::string> experimentNames() {
+  std::vector<std::string> names;
+  for (const Entry& e : kExperiments) names.push_back(e.name);
+  return names;
+}
+
+ExperimentOutput runExperiment(const std::string& name, const ExperimentOptions& options) {
+  const Entry& entry = find(name);
+  validate(options);
+  std::error_code error;
+  std::filesystem::create_directories(options.outDir, error);
+  if (error || !std::filesystem::is_directory(options.outDir)) {
+    throw InputError("cannot create the output folder '" + options.outDir + "': " +
+                     (error ? error.message() : "a file of that name is in the way"));
+  }
+
+  ExperimentContext cx(name, options);
+  cx.say("# " + std::string(entry.title) + "\n\n");
+  cx.say("`" + (options.commandLine.empty() ? "prt experiment " + name : options.commandLine) +
+         "`, " + today() + ", on " + cpuModel() + " (" +
+         std::to_string(std::thread::hardware_concurrency()) + " cores)" +
+         (options.quick ? "; **quick version** (small images, reduced sweep)" : "") + ".\n\n");
+  entry.run(cx);
+
+  ExperimentOutput& out = cx.output();
+  out.summary += "\nFiles: ";
+  for (size_t i = 0; i < out.files.size(); ++i) {
+    out.summary += (i ? ", " : "") + out.files[i];
+  }
+  out.summary += ".\n";
+  for (const std::string& w : out.warnings) out.summary += "\nWarning: " + w + "\n";
+  const std::string md = (std::filesystem::path(options.outDir) / (name + ".md")).string();
+  writeFileAtomically(md, [&](std::FILE* f) {
+    std::fwrite(out.summary.data(), 1, out.summary.size(), f);
+  });
+  out.files.push_back(name + ".md");
+  return out;
+}
+
+}  // namespace prt

@@ -1,0 +1,120 @@
+// initial-percent: the paper's Fig. 18. Reservoir speed-up and efficiency against the initial
+// percentage, real runs on emulated slow workers and the same configurations simulated from
+// the serial render's cost map, for the paper's reservoir and for reservoir-scatter.
+
+#include "core/speed_index.h"
+#include "lab/context.h"
+#include "lab/experiments.h"
+#include "lab/measure.h"
+
+namespace prt {
+
+void runInitialPercent(ExperimentContext& cx) {
+  const Scene scene = cx.scene(64, 48);
+  const std::string testCase = cx.testCase("C");
+  const RenderSettings settings = cx.settings(testCase);
+  const std::vector<double> slowdowns = cx.slowdowns();
+  const std::vector<double> percents =
+      cx.quick() ? std::vector<double>{20, 80, 100}
+                 : std::vector<double>{5, 10, 20, 30, 40, 50, 60, 70, 75, 80, 90, 100};
+  const std::vector<std::string> strategies = {"reservoir", "reservoir-scatter"};
+
+  cx.progress("serial time and cost map: " + std::to_string(cx.runs()) + " render(s), case " +
+              testCase);
+  const SerialMeasurement serial = measureSerial(scene, settings, cx.runs(), true);
+  const double masterIndex = measureSpeedIndexSeconds();
+
+  std::vector<std::string> columns = {"strategy", "initial_percent", "source", "runs"};
+  for (const std::string& c : summaryColumns()) columns.push_back(c);
+  CsvTable table(columns);
+  CsvTable runs({"strategy", "initial_percent", "run", "elapsed_s", "speedup", "efficiency",
+                 "asu"});
+  Chart speedup, efficiency;
+  for (const std::string& strategy : strategies) {
+    ChartSeries realSpeedup{strategy + " (real)", {}, {}, false};
+    ChartSeries simSpeedup{strategy + " (simulated)", {}, {}, true};
+    ChartSeries realEfficiency = realSpeedup, simEfficiency = simSpeedup;
+    for (double p : percents) {
+      ParallelOptions options = parallelOptions(strategy, slowdowns);
+      options.strategyOptions.initialPercent = p;
+      std::vector<RunReport> reports;
+      for (int run = 1; run <= cx.runs(); ++run) {
+        cx.progress(strategy + " at " + csvNumber(p) + " %: run " + std::to_string(run) +
+                    " of " + std::to_string(cx.runs()));
+        reports.push_back(runReal(scene, settings, options, serial.medianSeconds, masterIndex));
+        const RunReport& r = reports.back();
+        runs.addRow({strategy, csvNumber(p), std::to_string(run), csvNumber(r.elapsedSeconds, 5),
+                     csvNumber(r.speedup.value_or(0), 4), csvNumber(r.efficiency, 4),
+                     csvNumber(r.asu.value_or(0), 4)});
+      }
+      const RunSummary real = medianSummary(reports);
+      const RunSummary sim = medianSummary({runSimulated(*serial.costMap, options, masterIndex)});
+      for (const auto& [source, s] : {std::pair{"real", real}, std::pair{"simulated", sim}}) {
+        std::vector<std::string> row = {strategy, csvNumber(p), source,
+                                        source == std::string("real") ? std::to_string(cx.runs()) : "1"};
+        for (const std::string& cell : summaryCells(s)) row.push_back(cell);
+        table.addRow(row);
+      }
+      for (ChartSeries* series : {&realSpeedup, &simSpeedup, &realEfficiency, &simEfficiency}) {
+        series->x.push_back(p);
+      }
+      realSpeedup.y.push_back(real.speedup);
+      simSpeedup.y.push_back(sim.speedup);
+      realEfficiency.y.push_back(100 * real.efficiency);
+      simEfficiency.y.push_back(100 * sim.efficiency);
+    }
+    speedup.series.push_back(realSpeedup);
+    speedup.series.push_back(simSpeedup);
+    efficiency.series.push_back(realEfficiency);
+    efficiency.series.push_back(simEfficiency);
+  }
+  cx.write(table, "initial-percent.csv");
+  cx.write(runs, "initial-percent-runs.csv");
+
+  const std::string where = "case " + testCase + ", " + std::to_string(slowdowns.size()) +
+                            " workers";
+  speedup.title = "Fig. 18: speed-up against the initial percentage (" + where + ")";
+  speedup.xLabel = "initial percentage";
+  speedup.yLabel = "speed-up (serial time / parallel time)";
+  speedup.yMin = 0;
+  double masu = 0;
+  for (double k : slowdowns) masu += 1.0 / k;
+  char label[64];
+  std::snprintf(label, sizeof label, "emulated MASU %.2f", masu);
+  speedup.referenceLines = {{label, masu}};
+  cx.draw(speedup, "initial-percent-speedup.png");
+  efficiency.title = "Fig. 18: efficiency against the initial percentage (" + where + ")";
+  efficiency.xLabel = "initial percentage";
+  efficiency.yLabel = "efficiency, %";
+  efficiency.yMin = 0;
+  efficiency.yMax = 100;
+  cx.draw(efficiency, "initial-percent-efficiency.png");
+
+  // The best percentage by real speed-up, per strategy.
+  cx.say("The reservoir against its initial percentage on `" + cx.options().scenePath +
+         "`, case " + testCase + ", " + std::to_string(scene.image.width) + "x" +
+         std::to_string(scene.image.height) + ". Rows with source `real` are real runs (median "
+         "of " + std::to_string(cx.runs()) + "); `simulated` rows replay the serial render's "
+         "cost map in the simulator with the same worker speeds (no emulation overhead). "
+         "Serial time " + csvNumber(serial.medianSeconds, 4) + " s. " + cx.emulationNote() +
+         "\n\n");
+  for (const std::string& strategy : strategies) {
+    for (const char* source : {"real", "simulated"}) {
+      double best = -1, bestPercent = 0;
+      for (const auto& row : table.rows()) {
+        if (row[0] != strategy || row[2] != source) continue;
+        const double s = std::stod(row[table.column("speedup")]);
+        if (s > best) {
+          best = s;
+          bestPercent = std::stod(row[1]);
+        }
+      }
+      cx.say("- " + strategy + ", " + source + ": best speed-up " + csvNumber(best, 3) + " at " +
+             csvNumber(bestPercent) + " %\n");
+    }
+  }
+  cx.say("\n" + markdownTable(table, {"strategy", "initial_percent", "source", "elapsed_s",
+                                      "speedup", "efficiency", "asu"}));
+}
+
+}  // namespace prt

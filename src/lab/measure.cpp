@@ -1,0 +1,95 @@
+#include "lab/measure.h"
+
+#include <algorithm>
+
+#include "drive/local_driver.h"
+#include "lab/csv_table.h"
+#include "sim/simulator.h"
+#include "trace/renderer.h"
+
+namespace prt {
+
+SerialMeasurement measureSerial(const Scene& scene, const RenderSettings& settings, int runs,
+                                bool recordCostMap) {
+  SerialMeasurement m;
+  const World world(scene);
+  const Renderer renderer(world, settings);
+  for (int run = 0; run < std::max(1, runs); ++run) {
+    RenderStats stats;
+    std::vector<float> pixelSeconds;
+    const bool record = recordCostMap && run == 0;
+    renderImage(renderer, 1, &stats, nullptr, record ? &pixelSeconds : nullptr);
+    m.seconds.push_back(stats.seconds);
+    m.rays = stats.rays;
+    if (record) m.costMap.emplace(scene.image.width, scene.image.height, std::move(pixelSeconds));
+  }
+  m.medianSeconds = median(m.seconds);
+  return m;
+}
+
+RunReport runReal(const Scene& scene, const RenderSettings& settings,
+                  const ParallelOptions& options, double serialSeconds,
+                  double masterSpeedIndexSeconds) {
+  LocalRunRequest request;
+  request.scene = scene;
+  request.settings = settings;
+  request.options = options;
+  request.serialSeconds = serialSeconds;
+  request.masterSpeedIndexSeconds = masterSpeedIndexSeconds;
+  return renderLocal(request).report;
+}
+
+RunReport runSimulated(const CostMap& costs, const ParallelOptions& options,
+                       double masterSpeedIndexSeconds) {
+  SimulationOptions sim;
+  sim.strategy = options.strategy;
+  sim.strategyOptions = options.strategyOptions;
+  for (int w = 0; w < options.workers; ++w) sim.speeds.push_back(1.0 / options.slowdownOf(w));
+  sim.batchPixels = options.batchPixels;
+  sim.baseSpeedIndexSeconds = masterSpeedIndexSeconds;
+  return simulate(costs, sim).report;
+}
+
+double median(std::vector<double> values) {
+  if (values.empty()) return 0;
+  std::sort(values.begin(), values.end());
+  const size_t n = values.size();
+  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+RunSummary medianSummary(const std::vector<RunReport>& reports) {
+  auto of = [&](auto field) {
+    std::vector<double> v;
+    for (const RunReport& r : reports) v.push_back(field(r));
+    return median(v);
+  };
+  RunSummary s;
+  s.elapsedSeconds = of([](const RunReport& r) { return r.elapsedSeconds; });
+  s.speedup = of([](const RunReport& r) { return r.speedup.value_or(0.0); });
+  s.efficiency = of([](const RunReport& r) { return r.efficiency; });
+  s.masu = of([](const RunReport& r) { return r.masu; });
+  s.asu = of([](const RunReport& r) { return r.asu.value_or(0.0); });
+  s.messages = of([](const RunReport& r) { return static_cast<double>(r.messages); });
+  s.bytes = of([](const RunReport& r) { return static_cast<double>(r.bytes); });
+  return s;
+}
+
+std::vector<std::string> summaryColumns() {
+  return {"elapsed_s", "speedup", "efficiency", "masu", "asu", "messages", "bytes"};
+}
+
+std::vector<std::string> summaryCells(const RunSummary& s) {
+  return {csvNumber(s.elapsedSeconds, 4), csvNumber(s.speedup, 4), csvNumber(s.efficiency, 4),
+          csvNumber(s.masu, 4),           csvNumber(s.asu, 4),     csvNumber(s.messages, 8),
+          csvNumber(s.bytes, 10)};
+}
+
+ParallelOptions parallelOptions(const std::string& strategy, const std::vector<double>& slowdowns) {
+  ParallelOptions o;
+  o.workers = static_cast<int>(slowdowns.size());
+  o.strategy = strategy;
+  o.slowdowns = slowdowns;
+  return o;
+}
+
+}  // namespace prt

@@ -1,0 +1,60 @@
+#pragma once
+// The measurements experiments repeat: serial renders (the paper's SRT, one thread), real
+// parallel runs under the local driver, simulated runs of the same configuration, and the
+// medians and CSV cells of their reports.
+// Reads clocks (through the renderer and the drivers); not thread-safe.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "drive/parallel_options.h"
+#include "metrics/run_report.h"
+#include "sim/cost_map.h"
+#include "trace/render_settings.h"
+#include "trace/scene.h"
+
+namespace prt {
+
+struct SerialMeasurement {
+  std::vector<double> seconds;     // one per run, one thread each
+  double medianSeconds = 0;
+  uint64_t rays = 0;               // rays of one run (the same every run)
+  std::optional<CostMap> costMap;  // the first run's per-pixel seconds, when asked for
+};
+
+SerialMeasurement measureSerial(const Scene& scene, const RenderSettings& settings, int runs,
+                                bool recordCostMap);
+
+// One real run under the local driver.
+RunReport runReal(const Scene& scene, const RenderSettings& settings,
+                  const ParallelOptions& options, double serialSeconds,
+                  double masterSpeedIndexSeconds);
+
+// The same configuration in the simulator, replaying `costs` (its total is the serial time):
+// worker speeds 1 / slowdown, speed indices base / speed with base the master's.
+RunReport runSimulated(const CostMap& costs, const ParallelOptions& options,
+                       double masterSpeedIndexSeconds);
+
+// The report measures experiments tabulate, each the median over runs.
+struct RunSummary {
+  double elapsedSeconds = 0;
+  double speedup = 0;
+  double efficiency = 0;
+  double masu = 0;
+  double asu = 0;
+  double messages = 0;
+  double bytes = 0;
+};
+RunSummary medianSummary(const std::vector<RunReport>& reports);
+
+double median(std::vector<double> values);
+
+// CSV columns and cells for a RunSummary, in this order.
+std::vector<std::string> summaryColumns();  // elapsed_s, speedup, efficiency, masu, asu, ...
+std::vector<std::string> summaryCells(const RunSummary& s);
+
+// A ParallelOptions for `strategy` on the emulated workers `slowdowns`.
+ParallelOptions parallelOptions(const std::string& strategy, const std::vector<double>& slowdowns);
+
+}  // namespace prt
