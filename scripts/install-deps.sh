@@ -9,7 +9,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   openmpi-bin libopenmpi-dev
   povray
-  python3 python3-matplotlib gnuplot-nox hyperfine
+  python3 gnuplot-nox hyperfine
 )
 
 missing=()
