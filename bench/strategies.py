@@ -11,6 +11,7 @@ Faithfulness: `--slowdown 2,2,4,4` asks 1/2+1/2+1/4+1/4 = 1.5 cores of a 2-core 
 emulation only holds while that fits the free cores, so run it on an otherwise idle machine.
 
 Usage: bench/strategies.py [--prt build/prt] [--case A] [--runs 3] [--slowdown 2,2,4,4]
+                          [--width W --height H]
 """
 import argparse
 import json
@@ -39,37 +40,48 @@ def main():
     ap.add_argument("--runs", type=int, default=3)
     ap.add_argument("--slowdown", default="2,2,4,4")
     ap.add_argument("--strategies", default=",".join(STRATEGIES))
+    ap.add_argument("--width", type=int, help="image width (default: the scene's)")
+    ap.add_argument("--height", type=int, help="image height (default: the scene's)")
     ap.add_argument("--json", help="also write the raw results here")
     args = ap.parse_args()
     workers = len(args.slowdown.split(","))
     tmp = tempfile.mkdtemp(prefix="prt-bench-")
     out = os.path.join(tmp, "img.pfm")
+    size = []
+    if args.width:
+        size += ["--width", str(args.width)]
+    if args.height:
+        size += ["--height", str(args.height)]
 
     serial = []
     for _ in range(args.runs):
         t0 = time.perf_counter()
-        run([args.prt, "render", args.scene, "--case", args.case, "--threads", "1", "-o", out, "--quiet"])
+        run([args.prt, "render", args.scene, "--case", args.case, "--threads", "1", "-o", out, "--quiet"] + size)
         serial.append(time.perf_counter() - t0)
     serial_s = statistics.median(serial)
     print(f"serial (1 thread, case {args.case}): median {serial_s:.3f} s of {args.runs} runs")
 
-    results = {}
-    for strategy in args.strategies.split(","):
-        reports = []
-        for _ in range(args.runs):
+    # Round-robin over the strategies, so that a noisy spell on the machine hits them alike.
+    strategies = args.strategies.split(",")
+    all_reports = {s: [] for s in strategies}
+    for _ in range(args.runs):
+        for strategy in strategies:
             report = os.path.join(tmp, "report.json")
             run([args.prt, "render", args.scene, "--case", args.case, "--workers", str(workers),
                  "--strategy", strategy, "--slowdown", args.slowdown,
-                 "--serial-seconds", f"{serial_s:.6f}", "--report", report, "-o", out, "--quiet"])
+                 "--serial-seconds", f"{serial_s:.6f}", "--report", report, "-o", out, "--quiet"] + size)
             with open(report) as f:
-                reports.append(json.load(f))
+                all_reports[strategy].append(json.load(f))
+    results = {}
+    for strategy, reports in all_reports.items():
         med = lambda key: statistics.median(r[key] for r in reports)
         results[strategy] = {k: med(k) for k in ("elapsed_s", "speedup", "efficiency", "masu", "asu", "messages", "bytes")}
 
-    print(f"\n{workers} local workers, --slowdown {args.slowdown}, case {args.case}, median of {args.runs} runs")
-    print(f"{'strategy':<10} {'elapsed_s':>9} {'speedup':>8} {'effic.':>7} {'MASU':>6} {'ASU':>6} {'messages':>9} {'bytes':>10}")
+    where = f", {args.width}x{args.height}" if args.width and args.height else ""
+    print(f"\n{workers} local workers, --slowdown {args.slowdown}, case {args.case}{where}, median of {args.runs} runs")
+    print(f"{'strategy':<18} {'elapsed_s':>9} {'speedup':>8} {'effic.':>7} {'MASU':>6} {'ASU':>6} {'messages':>9} {'bytes':>10}")
     for s, r in results.items():
-        print(f"{s:<10} {r['elapsed_s']:9.3f} {r['speedup']:8.2f} {100*r['efficiency']:6.1f}% "
+        print(f"{s:<18} {r['elapsed_s']:9.3f} {r['speedup']:8.2f} {100*r['efficiency']:6.1f}% "
               f"{r['masu']:6.2f} {100*r['asu']:5.1f}% {r['messages']:9.0f} {r['bytes']:10.0f}")
     for mine in ("reservoir", "reservoir-scatter"):
         if mine not in results:

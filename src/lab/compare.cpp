@@ -57,22 +57,25 @@ void runCompare(ExperimentContext& cx) {
                 " render(s)");
     const SerialMeasurement serial = measureSerial(scene, settings, cx.runs(), true);
     serialTimes += (serialTimes.empty() ? "" : ", ") + c + " " + csvNumber(serial.medianSeconds, 4) + " s";
-    for (const std::string& strategy : strategies) {
-      const ParallelOptions options = parallelOptions(strategy, slowdowns);
-      std::vector<RunReport> reports;
-      for (int run = 1; run <= cx.runs(); ++run) {
+    // Round-robin over the strategies, so that a noisy spell on the machine hits them alike.
+    std::map<std::string, std::vector<RunReport>> reports;
+    for (int run = 1; run <= cx.runs(); ++run) {
+      for (const std::string& strategy : strategies) {
         cx.progress("case " + c + ", " + strategy + ": run " + std::to_string(run) + " of " +
                     std::to_string(cx.runs()));
-        reports.push_back(runReal(scene, settings, options, serial.medianSeconds, masterIndex));
-        const RunReport& r = reports.back();
+        const RunReport r = runReal(scene, settings, parallelOptions(strategy, slowdowns),
+                                    serial.medianSeconds, masterIndex);
         runs.addRow({c, strategy, std::to_string(run), csvNumber(r.elapsedSeconds, 5),
                      csvNumber(r.speedup.value_or(0), 4), csvNumber(r.efficiency, 4),
                      csvNumber(r.masu, 4), csvNumber(r.asu.value_or(0), 4),
                      std::to_string(r.messages), std::to_string(r.bytes)});
+        reports[strategy].push_back(r);
       }
-      results["real"][c][strategy] = medianSummary(reports);
-      results["simulated"][c][strategy] =
-          medianSummary({runSimulated(*serial.costMap, options, masterIndex)});
+    }
+    for (const std::string& strategy : strategies) {
+      results["real"][c][strategy] = medianSummary(reports[strategy]);
+      results["simulated"][c][strategy] = medianSummary(
+          {runSimulated(*serial.costMap, parallelOptions(strategy, slowdowns), masterIndex)});
       for (const char* source : {"real", "simulated"}) {
         std::vector<std::string> row = {c, strategy, source,
                                         std::string(source) == "real" ? std::to_string(cx.runs()) : "1"};

@@ -2,6 +2,8 @@
 // percentage, real runs on emulated slow workers and the same configurations simulated from
 // the serial render's cost map, for the paper's reservoir and for reservoir-scatter.
 
+#include <map>
+
 #include "core/speed_index.h"
 #include "lab/context.h"
 #include "lab/experiments.h"
@@ -29,26 +31,41 @@ void runInitialPercent(ExperimentContext& cx) {
   CsvTable table(columns);
   CsvTable runs({"strategy", "initial_percent", "run", "elapsed_s", "speedup", "efficiency",
                  "asu"});
+  auto optionsFor = [&](const std::string& strategy, double percent) {
+    ParallelOptions options = parallelOptions(strategy, slowdowns);
+    options.strategyOptions.initialPercent = percent;
+    return options;
+  };
+  // Real runs round-robin over every configuration, so that a noisy spell on the machine
+  // hits them alike; reports[strategy][percent index].
+  std::map<std::string, std::vector<std::vector<RunReport>>> reports;
+  for (const std::string& strategy : strategies) reports[strategy].resize(percents.size());
+  for (int run = 1; run <= cx.runs(); ++run) {
+    for (size_t i = 0; i < percents.size(); ++i) {
+      for (const std::string& strategy : strategies) {
+        const double p = percents[i];
+        cx.progress(strategy + " at " + csvNumber(p) + " %: run " + std::to_string(run) +
+                    " of " + std::to_string(cx.runs()));
+        const RunReport r = runReal(scene, settings, optionsFor(strategy, p),
+                                    serial.medianSeconds, masterIndex);
+        runs.addRow({strategy, csvNumber(p), std::to_string(run), csvNumber(r.elapsedSeconds, 5),
+                     csvNumber(r.speedup.value_or(0), 4), csvNumber(r.efficiency, 4),
+                     csvNumber(r.asu.value_or(0), 4)});
+        reports[strategy][i].push_back(r);
+      }
+    }
+  }
+
   Chart speedup, efficiency;
   for (const std::string& strategy : strategies) {
     ChartSeries realSpeedup{strategy + " (real)", {}, {}, false};
     ChartSeries simSpeedup{strategy + " (simulated)", {}, {}, true};
     ChartSeries realEfficiency = realSpeedup, simEfficiency = simSpeedup;
-    for (double p : percents) {
-      ParallelOptions options = parallelOptions(strategy, slowdowns);
-      options.strategyOptions.initialPercent = p;
-      std::vector<RunReport> reports;
-      for (int run = 1; run <= cx.runs(); ++run) {
-        cx.progress(strategy + " at " + csvNumber(p) + " %: run " + std::to_string(run) +
-                    " of " + std::to_string(cx.runs()));
-        reports.push_back(runReal(scene, settings, options, serial.medianSeconds, masterIndex));
-        const RunReport& r = reports.back();
-        runs.addRow({strategy, csvNumber(p), std::to_string(run), csvNumber(r.elapsedSeconds, 5),
-                     csvNumber(r.speedup.value_or(0), 4), csvNumber(r.efficiency, 4),
-                     csvNumber(r.asu.value_or(0), 4)});
-      }
-      const RunSummary real = medianSummary(reports);
-      const RunSummary sim = medianSummary({runSimulated(*serial.costMap, options, masterIndex)});
+    for (size_t i = 0; i < percents.size(); ++i) {
+      const double p = percents[i];
+      const RunSummary real = medianSummary(reports[strategy][i]);
+      const RunSummary sim =
+          medianSummary({runSimulated(*serial.costMap, optionsFor(strategy, p), masterIndex)});
       for (const auto& [source, s] : {std::pair{"real", real}, std::pair{"simulated", sim}}) {
         std::vector<std::string> row = {strategy, csvNumber(p), source,
                                         source == std::string("real") ? std::to_string(cx.runs()) : "1"};
