@@ -15,6 +15,13 @@
 //    at half a core, and a k = 2 worker measured 3c instead of 2c.
 // Pacing the end of the stretch to k * c absorbs the queueing into the wait, as long as the
 // stretch's wall time stays under k * c.
+//
+// What the emulated machine would have measured of a stretch is k * c: a real machine k times
+// slower runs it alone, with no queueing for a core. Speed indices are measured that way
+// (Stretch::emulatedSeconds), so that a burst of workers starting their speed-index runs at
+// once on too few cores does not make them look slower than they are; rendering is timed by
+// the wall clock, since the image really waits for it. Without a slowdown (k = 1) the worker
+// is the machine itself, and its wall time is what it measures, other load included.
 // Reads clocks: used by drivers only. Thread-safe (no state besides k).
 
 #include <time.h>
@@ -22,6 +29,7 @@
 #include <algorithm>
 #include <chrono>
 #include <thread>
+#include <utility>
 
 namespace prt {
 
@@ -31,25 +39,38 @@ inline double throttlePauseSeconds(double slowdown, double cpuSeconds, double wa
   return std::max(0.0, slowdown * cpuSeconds - wallSeconds);
 }
 
+// One throttled stretch of computing.
+struct Stretch {
+  double wallSeconds = 0;      // from start to the end of the wait
+  double emulatedSeconds = 0;  // its length on the emulated machine: k * the CPU time it
+                               // used, or the wall time when k = 1
+};
+
 class Throttle {
  public:
   explicit Throttle(double slowdown = 1.0) : slowdown_(slowdown) {}
   double slowdown() const { return slowdown_; }
 
-  // Runs fn, then waits until it has lasted k times the CPU time it used. Returns the total
-  // wall seconds.
+  // Runs fn, then waits until it has lasted k times the CPU time it used.
   template <typename F>
-  double run(F&& fn) const {
+  Stretch measure(F&& fn) const {
     const auto start = std::chrono::steady_clock::now();
     const double cpuStart = threadCpuSeconds();
     fn();
+    const double cpu = threadCpuSeconds() - cpuStart;
     if (slowdown_ > 1.0) {
-      const double cpu = threadCpuSeconds() - cpuStart;
       const double wall = secondsSince(start);
       std::this_thread::sleep_for(
           std::chrono::duration<double>(throttlePauseSeconds(slowdown_, cpu, wall)));
     }
-    return secondsSince(start);
+    const double wall = secondsSince(start);
+    return {wall, slowdown_ > 1.0 ? slowdown_ * cpu : wall};
+  }
+
+  // measure(fn), returning the wall seconds.
+  template <typename F>
+  double run(F&& fn) const {
+    return measure(std::forward<F>(fn)).wallSeconds;
   }
 
  private:

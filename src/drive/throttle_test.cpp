@@ -40,5 +40,17 @@ TEST(Throttle, RunReturnsTheStretchedWallTime) {
   EXPECT_GE(wall, 3.0 * cpu * 0.999);
 }
 
+TEST(Throttle, EmulatedTimeIsKTimesTheCpuTimeAndWallTimeWithoutSlowdown) {
+  volatile double sink = 0;
+  auto work = [&] {
+    for (int i = 0; i < 1000000; ++i) sink = sink + 1e-9 * i;
+  };
+  const Stretch slowed = Throttle(4.0).measure(work);
+  EXPECT_GT(slowed.emulatedSeconds, 0.0);
+  EXPECT_GE(slowed.wallSeconds, slowed.emulatedSeconds * 0.999);
+  const Stretch plain = Throttle(1.0).measure(work);
+  EXPECT_EQ(plain.emulatedSeconds, plain.wallSeconds);
+}
+
 }  // namespace
 }  // namespace prt
