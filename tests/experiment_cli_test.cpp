@@ -23,8 +23,9 @@ class ExperimentCliTest : public e2e::ScratchDirTest {
  protected:
   // Runs `prt experiment NAME --quick` on the benchmark scene into the scratch folder.
   Result quick(const std::string& name, const std::string& extra = "") {
-    return run("experiment " + name + " --quick --quiet --scene " PRT_SOURCE_DIR
-               "/scenes/complex.scene --out " + path("out") + " " + extra);
+    return run("experiment " + name +
+               " --quick --quiet --scene " PRT_SOURCE_DIR "/scenes/complex.scene --out " +
+               path("out") + " " + extra);
   }
   std::string header(const std::string& csv) {
     std::istringstream in(readFile(dir_ / "out" / csv));
@@ -62,7 +63,7 @@ TEST_F(ExperimentCliTest, Table3) {
 TEST_F(ExperimentCliTest, SpeedIndex) {
   const Result r = quick("speed-index");
   ASSERT_EQ(r.exitCode, 0) << r.output;
-  EXPECT_EQ(rows("speed-index.csv"), 2);  // hanoi, probe
+  EXPECT_EQ(rows("speed-index.csv"), 2);          // hanoi, probe
   EXPECT_EQ(rows("speed-index-workers.csv"), 8);  // 2 kinds x 4 workers x 1 run
   expectChart("speed-index.png");
 }

@@ -28,8 +28,7 @@ Action addExperimentCommand(CLI::App& app, const std::string& commandLine) {
   cmd->add_option("--out", o->experiment.outDir, "Folder for the results (created if missing)");
   cmd->add_flag("--quick", o->experiment.quick,
                 "A reduced version (small images, one run, a shorter sweep) in seconds");
-  cmd->add_option("--scene", o->experiment.scenePath, "The benchmark scene")
-      ->capture_default_str();
+  cmd->add_option("--scene", o->experiment.scenePath, "The benchmark scene")->capture_default_str();
   cmd->add_option("--runs", o->experiment.runs,
                   "Runs per real configuration, reported as medians (default 3; quick 1)")
       ->check(CLI::Range(1, 100));

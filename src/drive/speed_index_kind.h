@@ -14,7 +14,9 @@ enum class SpeedIndexKind {
   RenderProbe,  // render probePixels() of the scene with the run's settings
 };
 
-inline std::vector<std::string> speedIndexKindNames() { return {"hanoi", "probe"}; }
+inline std::vector<std::string> speedIndexKindNames() {
+  return {"hanoi", "probe"};
+}
 
 inline std::string speedIndexKindName(SpeedIndexKind kind) {
   return kind == SpeedIndexKind::Hanoi ? "hanoi" : "probe";

@@ -1,7 +1,7 @@
 #pragma once
-// The ray-tracing probe speed index. The paper's is the Towers of Hanoi time (core/speed_index.h): cheap, and
-// independent of the scene, but a recursion benchmark only approximates how fast a machine
-// ray-traces. The alternative the paper checks it against (its Fig. 17) is a ray-tracing
+// The ray-tracing probe speed index. The paper's is the Towers of Hanoi time (core/speed_index.h):
+// cheap, and independent of the scene, but a recursion benchmark only approximates how fast a
+// machine ray-traces. The alternative the paper checks it against (its Fig. 17) is a ray-tracing
 // probe: the time to render a fixed sample of the image itself, with the run's own scene and
 // settings. Both are times: lower is faster.
 //
@@ -43,11 +43,13 @@ double probeSeconds(const Renderer& renderer, int pieces, RunPiece&& runPiece) {
   return seconds;
 }
 
-// The serial machine's probe time: the median of `repeats` unthrottled runs on this thread.
-double measureProbeSeconds(const Renderer& renderer, int repeats = 3);
+// The serial machine's probe time: the fastest of `repeats` unthrottled runs on this thread.
+double measureProbeSeconds(const Renderer& renderer, int repeats = 5);
 
 // The serial machine's speed index of the given kind (the master's, for MASU), measured on
-// this thread without a slowdown: the median of three runs.
+// this thread without a slowdown: the fastest of five runs. Other load on a shared machine
+// only ever lengthens a run, so the fastest is the best estimate of the machine's own speed;
+// a median of three still moved by a fifth between runs on a busy two-core machine.
 double serialSpeedIndexSeconds(SpeedIndexKind kind, const Scene& scene,
                                const RenderSettings& settings);
 

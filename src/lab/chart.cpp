@@ -30,9 +30,8 @@ std::string number(double v) {
 }
 
 // Line styles: distinct colours, so eight strategies stay apart.
-constexpr const char* kColours[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd",
-                                    "#ff7f0e", "#8c564b", "#e377c2", "#17becf",
-                                    "#7f7f7f", "#bcbd22"};
+constexpr const char* kColours[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e",
+                                    "#8c564b", "#e377c2", "#17becf", "#7f7f7f", "#bcbd22"};
 constexpr size_t kColourCount = sizeof kColours / sizeof kColours[0];
 
 }  // namespace
@@ -72,10 +71,9 @@ std::string gnuplotScript(const Chart& chart, const std::string& pngFile) {
     for (size_t i = 0; i < chart.series.size(); ++i) {
       const ChartSeries& series = chart.series[i];
       s += i ? ", \\\n    " : " ";
-      s += "$d" + std::to_string(i) +
-           " using 1:2 with linespoints linewidth 2 pointtype " + std::to_string(5 + 2 * (i % 4)) +
-           " linecolor rgb \"" + kColours[i % kColourCount] + "\"" +
-           (series.dashed ? " dashtype 2" : "") + " title " + literal(series.title);
+      s += "$d" + std::to_string(i) + " using 1:2 with linespoints linewidth 2 pointtype " +
+           std::to_string(5 + 2 * (i % 4)) + " linecolor rgb \"" + kColours[i % kColourCount] +
+           "\"" + (series.dashed ? " dashtype 2" : "") + " title " + literal(series.title);
     }
     s += "\n";
     return s;
@@ -103,9 +101,8 @@ std::string gnuplotScript(const Chart& chart, const std::string& pngFile) {
   s += "plot";
   for (size_t i = 0; i < chart.series.size(); ++i) {
     s += i ? ", \\\n    " : " ";
-    s += "$bars using " + std::to_string(i + 2) +
-         (i == 0 ? ":xtic(1)" : "") + " linecolor rgb \"" + kColours[i % kColourCount] +
-         "\" title " + literal(chart.series[i].title);
+    s += "$bars using " + std::to_string(i + 2) + (i == 0 ? ":xtic(1)" : "") + " linecolor rgb \"" +
+         kColours[i % kColourCount] + "\" title " + literal(chart.series[i].title);
   }
   s += "\n";
   return s;
@@ -116,7 +113,8 @@ std::string drawChart(const Chart& chart, const std::string& pngPath) {
   const fs::path directory = png.parent_path();
   const fs::path script = fs::path(png).replace_extension(".gp");
   const std::string text = gnuplotScript(chart, png.filename().string());
-  writeFileAtomically(script.string(), [&](std::FILE* f) { std::fwrite(text.data(), 1, text.size(), f); });
+  writeFileAtomically(script.string(),
+                      [&](std::FILE* f) { std::fwrite(text.data(), 1, text.size(), f); });
 
   const std::string gnuplot = findProgram("gnuplot");
   if (gnuplot.empty()) {

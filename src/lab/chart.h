@@ -25,10 +25,10 @@ struct Chart {
   std::string title;
   std::string xLabel;
   std::string yLabel;
-  bool logX = false;                       // lines: base-2 x axis (worker counts)
+  bool logX = false;  // lines: base-2 x axis (worker counts)
   bool logY = false;
-  std::optional<double> yMin, yMax;        // default: gnuplot's autoscale
-  std::vector<std::string> categories;     // bars: one group per category, left to right
+  std::optional<double> yMin, yMax;     // default: gnuplot's autoscale
+  std::vector<std::string> categories;  // bars: one group per category, left to right
   std::vector<ChartSeries> series;
   std::vector<std::pair<std::string, double>> referenceLines;  // labelled horizontal lines
 };

@@ -45,8 +45,8 @@ TEST(Chart, BarScriptHasOneRowPerCategory) {
 }
 
 TEST(Chart, DrawsAPngWhenGnuplotIsInstalled) {
-  const auto dir = std::filesystem::temp_directory_path() /
-                   ("prt-chart-test-" + std::to_string(::getpid()));
+  const auto dir =
+      std::filesystem::temp_directory_path() / ("prt-chart-test-" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   const std::string png = (dir / "chart.png").string();
   const std::string why = drawChart(lines(), png);

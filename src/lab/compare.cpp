@@ -8,6 +8,7 @@
 
 #include "balance/strategy.h"
 #include "core/speed_index.h"
+#include "drive/speed_probe.h"
 #include "lab/context.h"
 #include "lab/experiments.h"
 #include "lab/measure.h"
@@ -20,8 +21,10 @@ struct Claim {
   const char* other;    // scatter, hybrid
   double paper;         // the paper's "at most X % better"
 };
-constexpr Claim kClaims[] = {{"speedup", "scatter", 87}, {"speedup", "hybrid", 36},
-                             {"efficiency", "scatter", 28}, {"asu", "scatter", 25},
+constexpr Claim kClaims[] = {{"speedup", "scatter", 87},
+                             {"speedup", "hybrid", 36},
+                             {"efficiency", "scatter", 28},
+                             {"asu", "scatter", 25},
                              {"asu", "hybrid", 10}};
 
 double field(const RunSummary& s, const std::string& measure) {
@@ -34,14 +37,16 @@ double field(const RunSummary& s, const std::string& measure) {
 
 void runCompare(ExperimentContext& cx) {
   std::vector<std::string> cases = cx.options().cases;
-  if (cases.empty()) cases = cx.quick() ? std::vector<std::string>{"A", "C"}
-                                        : std::vector<std::string>{"A", "B", "C", "D"};
+  if (cases.empty())
+    cases = cx.quick() ? std::vector<std::string>{"A", "C"}
+                       : std::vector<std::string>{"A", "B", "C", "D"};
   std::vector<std::string> strategies = cx.options().strategies;
   if (strategies.empty()) strategies = strategyNames();
   for (const std::string& s : strategies) makeStrategy(s, {});  // InputError if unknown
   const Scene scene = cx.scene(64, 48);
   const std::vector<double> slowdowns = cx.slowdowns();
-  const double masterIndex = measureSpeedIndexSeconds();
+  const double masterIndex =
+      serialSpeedIndexSeconds(SpeedIndexKind::Hanoi, scene, RenderSettings{});
 
   std::vector<std::string> columns = {"case", "strategy", "source", "runs"};
   for (const std::string& c : summaryColumns()) columns.push_back(c);
@@ -56,7 +61,8 @@ void runCompare(ExperimentContext& cx) {
     cx.progress("case " + c + ": serial time and cost map, " + std::to_string(cx.runs()) +
                 " render(s)");
     const SerialMeasurement serial = measureSerial(scene, settings, cx.runs(), true);
-    serialTimes += (serialTimes.empty() ? "" : ", ") + c + " " + csvNumber(serial.medianSeconds, 4) + " s";
+    serialTimes +=
+        (serialTimes.empty() ? "" : ", ") + c + " " + csvNumber(serial.medianSeconds, 4) + " s";
     // Round-robin over the strategies, so that a noisy spell on the machine hits them alike.
     std::map<std::string, std::vector<RunReport>> reports;
     for (int run = 1; run <= cx.runs(); ++run) {
@@ -77,9 +83,10 @@ void runCompare(ExperimentContext& cx) {
       results["simulated"][c][strategy] = medianSummary(
           {runSimulated(*serial.costMap, parallelOptions(strategy, slowdowns), masterIndex)});
       for (const char* source : {"real", "simulated"}) {
-        std::vector<std::string> row = {c, strategy, source,
-                                        std::string(source) == "real" ? std::to_string(cx.runs()) : "1"};
-        for (const std::string& cell : summaryCells(results[source][c][strategy])) row.push_back(cell);
+        std::vector<std::string> row = {
+            c, strategy, source, std::string(source) == "real" ? std::to_string(cx.runs()) : "1"};
+        for (const std::string& cell : summaryCells(results[source][c][strategy]))
+          row.push_back(cell);
         table.addRow(row);
       }
     }
@@ -120,10 +127,11 @@ void runCompare(ExperimentContext& cx) {
          std::to_string(scene.image.width) + "x" + std::to_string(scene.image.height) +
          ". `real` rows: the local driver, median of " + std::to_string(cx.runs()) +
          " run(s); `simulated` rows: the simulator replaying each case's serial cost map with "
-         "the same worker speeds. Serial times (one thread): " + serialTimes + ". " +
-         cx.emulationNote() + "\n\n");
-  cx.say("The paper's claims, recomputed (\"X % better\" = ours / theirs - 1, the largest over "
-         "the cases):\n\n| claim | paper | ");
+         "the same worker speeds. Serial times (one thread): " +
+         serialTimes + ". " + cx.emulationNote() + "\n\n");
+  cx.say(
+      "The paper's claims, recomputed (\"X % better\" = ours / theirs - 1, the largest over "
+      "the cases):\n\n| claim | paper | ");
   std::vector<std::string> mine;
   for (const char* m : {"reservoir", "reservoir-scatter"}) {
     for (const std::string& s : strategies) {

@@ -61,7 +61,8 @@ void ExperimentContext::write(const CsvTable& table, const std::string& file) {
 }
 
 void ExperimentContext::draw(const Chart& chart, const std::string& file) {
-  const std::string why = drawChart(chart, (std::filesystem::path(options_.outDir) / file).string());
+  const std::string why =
+      drawChart(chart, (std::filesystem::path(options_.outDir) / file).string());
   const std::string script = std::filesystem::path(file).replace_extension(".gp").string();
   output_.files.push_back(script);
   if (why.empty()) {
@@ -88,11 +89,13 @@ std::string ExperimentContext::emulationNote() const {
                 k.size(), list.c_str(), demand, cores);
   std::string note = text;
   if (demand <= static_cast<double>(cores) - 0.25) {
-    note += "The emulation is faithful while nothing else runs: the master and the workers' "
-            "combined demand fit the free cores.";
+    note +=
+        "The emulation is faithful while nothing else runs: the master and the workers' "
+        "combined demand fit the free cores.";
   } else {
-    note += "**The demand does not fit the cores with room for the master: the slow workers "
-            "run slower than emulated and the real figures are pessimistic.**";
+    note +=
+        "**The demand does not fit the cores with room for the master: the slow workers "
+        "run slower than emulated and the real figures are pessimistic.**";
   }
   return note;
 }

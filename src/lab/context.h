@@ -21,7 +21,7 @@ class ExperimentContext {
   const std::string& name() const { return name_; }
   const ExperimentOptions& options() const { return options_; }
   bool quick() const { return options_.quick; }
-  int runs() const;                      // options.runs, or 3 (quick: 1)
+  int runs() const;                       // options.runs, or 3 (quick: 1)
   std::vector<double> slowdowns() const;  // options.slowdowns, or 2,2,4,4
   // The scene at the requested size (--width, --height), else quickWidth x quickHeight in a
   // quick run, else fullWidth x fullHeight if given, else the scene's own.

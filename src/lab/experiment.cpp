@@ -101,8 +101,8 @@ ExperimentOutput runExperiment(const std::string& name, const ExperimentOptions&
   std::error_code error;
   std::filesystem::create_directories(options.outDir, error);
   if (error || !std::filesystem::is_directory(options.outDir)) {
-    throw InputError("cannot create the output folder '" + options.outDir + "': " +
-                     (error ? error.message() : "a file of that name is in the way"));
+    throw InputError("cannot create the output folder '" + options.outDir +
+                     "': " + (error ? error.message() : "a file of that name is in the way"));
   }
 
   ExperimentContext cx(name, options);
@@ -121,9 +121,8 @@ ExperimentOutput runExperiment(const std::string& name, const ExperimentOptions&
   out.summary += ".\n";
   for (const std::string& w : out.warnings) out.summary += "\nWarning: " + w + "\n";
   const std::string md = (std::filesystem::path(options.outDir) / (name + ".md")).string();
-  writeFileAtomically(md, [&](std::FILE* f) {
-    std::fwrite(out.summary.data(), 1, out.summary.size(), f);
-  });
+  writeFileAtomically(
+      md, [&](std::FILE* f) { std::fwrite(out.summary.data(), 1, out.summary.size(), f); });
   out.files.push_back(name + ".md");
   return out;
 }

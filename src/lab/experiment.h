@@ -25,19 +25,19 @@
 namespace prt {
 
 struct ExperimentOptions {
-  std::string outDir;                    // created if missing
-  bool quick = false;                    // a reduced version (small images, one run)
-  std::string scenePath;                 // the benchmark scene (scenes/complex.scene)
-  int runs = 0;                          // runs per real configuration; 0: 3, or 1 if quick
-  std::optional<int> width;              // image size; default: the experiment's
+  std::string outDir;        // created if missing
+  bool quick = false;        // a reduced version (small images, one run)
+  std::string scenePath;     // the benchmark scene (scenes/complex.scene)
+  int runs = 0;              // runs per real configuration; 0: 3, or 1 if quick
+  std::optional<int> width;  // image size; default: the experiment's
   std::optional<int> height;
-  std::vector<double> slowdowns;         // the emulated workers; empty: 2,2,4,4
-  std::vector<std::string> strategies;   // compare, scale; empty: every strategy
-  std::vector<std::string> cases;        // table3, compare; empty: A-D (quick: A, C)
-  std::string testCase;                  // speed-index (default A), initial-percent (C)
-  std::optional<double> serialSeconds;   // scale: the simulated serial time (default 3600 s)
-  bool quiet = false;                    // no progress lines on stderr
-  std::string commandLine;               // recorded in the summary
+  std::vector<double> slowdowns;        // the emulated workers; empty: 2,2,4,4
+  std::vector<std::string> strategies;  // compare, scale; empty: every strategy
+  std::vector<std::string> cases;       // table3, compare; empty: A-D (quick: A, C)
+  std::string testCase;                 // speed-index (default A), initial-percent (C)
+  std::optional<double> serialSeconds;  // scale: the simulated serial time (default 3600 s)
+  bool quiet = false;                   // no progress lines on stderr
+  std::string commandLine;              // recorded in the summary
 };
 
 struct ExperimentOutput {

@@ -8,8 +8,8 @@ namespace prt {
 namespace {
 
 TEST(Experiment, NamesAreThePapersExperiments) {
-  EXPECT_EQ(experimentNames(), (std::vector<std::string>{"table3", "speed-index",
-                                                         "initial-percent", "compare", "scale"}));
+  EXPECT_EQ(experimentNames(), (std::vector<std::string>{"table3", "speed-index", "initial-percent",
+                                                         "compare", "scale"}));
 }
 
 TEST(Experiment, UnknownNameListsTheValidOnes) {

@@ -5,6 +5,7 @@
 #include <map>
 
 #include "core/speed_index.h"
+#include "drive/speed_probe.h"
 #include "lab/context.h"
 #include "lab/experiments.h"
 #include "lab/measure.h"
@@ -24,13 +25,14 @@ void runInitialPercent(ExperimentContext& cx) {
   cx.progress("serial time and cost map: " + std::to_string(cx.runs()) + " render(s), case " +
               testCase);
   const SerialMeasurement serial = measureSerial(scene, settings, cx.runs(), true);
-  const double masterIndex = measureSpeedIndexSeconds();
+  const double masterIndex =
+      serialSpeedIndexSeconds(SpeedIndexKind::Hanoi, scene, RenderSettings{});
 
   std::vector<std::string> columns = {"strategy", "initial_percent", "source", "runs"};
   for (const std::string& c : summaryColumns()) columns.push_back(c);
   CsvTable table(columns);
-  CsvTable runs({"strategy", "initial_percent", "run", "elapsed_s", "speedup", "efficiency",
-                 "asu"});
+  CsvTable runs(
+      {"strategy", "initial_percent", "run", "elapsed_s", "speedup", "efficiency", "asu"});
   auto optionsFor = [&](const std::string& strategy, double percent) {
     ParallelOptions options = parallelOptions(strategy, slowdowns);
     options.strategyOptions.initialPercent = percent;
@@ -44,10 +46,10 @@ void runInitialPercent(ExperimentContext& cx) {
     for (size_t i = 0; i < percents.size(); ++i) {
       for (const std::string& strategy : strategies) {
         const double p = percents[i];
-        cx.progress(strategy + " at " + csvNumber(p) + " %: run " + std::to_string(run) +
-                    " of " + std::to_string(cx.runs()));
-        const RunReport r = runReal(scene, settings, optionsFor(strategy, p),
-                                    serial.medianSeconds, masterIndex);
+        cx.progress(strategy + " at " + csvNumber(p) + " %: run " + std::to_string(run) + " of " +
+                    std::to_string(cx.runs()));
+        const RunReport r =
+            runReal(scene, settings, optionsFor(strategy, p), serial.medianSeconds, masterIndex);
         runs.addRow({strategy, csvNumber(p), std::to_string(run), csvNumber(r.elapsedSeconds, 5),
                      csvNumber(r.speedup.value_or(0), 4), csvNumber(r.efficiency, 4),
                      csvNumber(r.asu.value_or(0), 4)});
@@ -67,8 +69,9 @@ void runInitialPercent(ExperimentContext& cx) {
       const RunSummary sim =
           medianSummary({runSimulated(*serial.costMap, optionsFor(strategy, p), masterIndex)});
       for (const auto& [source, s] : {std::pair{"real", real}, std::pair{"simulated", sim}}) {
-        std::vector<std::string> row = {strategy, csvNumber(p), source,
-                                        source == std::string("real") ? std::to_string(cx.runs()) : "1"};
+        std::vector<std::string> row = {
+            strategy, csvNumber(p), source,
+            source == std::string("real") ? std::to_string(cx.runs()) : "1"};
         for (const std::string& cell : summaryCells(s)) row.push_back(cell);
         table.addRow(row);
       }
@@ -88,8 +91,8 @@ void runInitialPercent(ExperimentContext& cx) {
   cx.write(table, "initial-percent.csv");
   cx.write(runs, "initial-percent-runs.csv");
 
-  const std::string where = "case " + testCase + ", " + std::to_string(slowdowns.size()) +
-                            " workers";
+  const std::string where =
+      "case " + testCase + ", " + std::to_string(slowdowns.size()) + " workers";
   speedup.title = "Fig. 18: speed-up against the initial percentage (" + where + ")";
   speedup.xLabel = "initial percentage";
   speedup.yLabel = "speed-up (serial time / parallel time)";
@@ -108,13 +111,16 @@ void runInitialPercent(ExperimentContext& cx) {
   cx.draw(efficiency, "initial-percent-efficiency.png");
 
   // The best percentage by real speed-up, per strategy.
-  cx.say("The reservoir against its initial percentage on `" + cx.options().scenePath +
-         "`, case " + testCase + ", " + std::to_string(scene.image.width) + "x" +
-         std::to_string(scene.image.height) + ". Rows with source `real` are real runs (median "
-         "of " + std::to_string(cx.runs()) + "); `simulated` rows replay the serial render's "
+  cx.say("The reservoir against its initial percentage on `" + cx.options().scenePath + "`, case " +
+         testCase + ", " + std::to_string(scene.image.width) + "x" +
+         std::to_string(scene.image.height) +
+         ". Rows with source `real` are real runs (median "
+         "of " +
+         std::to_string(cx.runs()) +
+         "); `simulated` rows replay the serial render's "
          "cost map in the simulator with the same worker speeds (no emulation overhead). "
-         "Serial time " + csvNumber(serial.medianSeconds, 4) + " s. " + cx.emulationNote() +
-         "\n\n");
+         "Serial time " +
+         csvNumber(serial.medianSeconds, 4) + " s. " + cx.emulationNote() + "\n\n");
   for (const std::string& strategy : strategies) {
     for (const char* source : {"real", "simulated"}) {
       double best = -1, bestPercent = 0;

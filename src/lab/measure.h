@@ -17,7 +17,7 @@
 namespace prt {
 
 struct SerialMeasurement {
-  std::vector<double> seconds;     // one per run, one thread each
+  std::vector<double> seconds;  // one per run, one thread each
   double medianSeconds = 0;
   uint64_t rays = 0;               // rays of one run (the same every run)
   std::optional<CostMap> costMap;  // the first run's per-pixel seconds, when asked for

@@ -10,6 +10,7 @@
 
 #include "balance/strategy.h"
 #include "core/speed_index.h"
+#include "drive/speed_probe.h"
 #include "lab/context.h"
 #include "lab/experiments.h"
 #include "lab/measure.h"
@@ -29,22 +30,23 @@ void runScale(ExperimentContext& cx) {
   std::vector<std::string> strategies = cx.options().strategies;
   if (strategies.empty()) strategies = strategyNames();
   for (const std::string& s : strategies) makeStrategy(s, {});  // InputError if unknown
-  const std::vector<int> counts = cx.quick() ? std::vector<int>{4, 8, 16, 32, 64}
-                                             : std::vector<int>{4, 8, 16, 32, 64, 128, 256,
-                                                                512, 1024};
+  const std::vector<int> counts = cx.quick()
+                                      ? std::vector<int>{4, 8, 16, 32, 64}
+                                      : std::vector<int>{4, 8, 16, 32, 64, 128, 256, 512, 1024};
   const Scene scene = cx.scene(160, 120, 1280, 720);
   const double serialSeconds = cx.options().serialSeconds.value_or(cx.quick() ? 60 : 3600);
   const std::string testCase = cx.testCase("A");
   if (static_cast<uint64_t>(counts.back()) >
       static_cast<uint64_t>(scene.image.width) * scene.image.height) {
-    throw InputError("scale: the image has fewer pixels than workers; use a larger --width and "
-                     "--height");
+    throw InputError(
+        "scale: the image has fewer pixels than workers; use a larger --width and "
+        "--height");
   }
   cx.progress("cost map: a serial render of case " + testCase + " at " +
               std::to_string(scene.image.width) + "x" + std::to_string(scene.image.height));
   const SerialMeasurement serial = measureSerial(scene, cx.settings(testCase), 1, true);
   const CostMap costs = serial.costMap->scaledTo(serialSeconds);
-  const double speedIndex = measureSpeedIndexSeconds();
+  const double speedIndex = serialSpeedIndexSeconds(SpeedIndexKind::Hanoi, scene, RenderSettings{});
 
   std::vector<std::string> columns = {"scenario", "workers", "strategy", "source"};
   for (const std::string& c : summaryColumns()) columns.push_back(c);
@@ -80,8 +82,9 @@ void runScale(ExperimentContext& cx) {
        {std::pair{std::string("homogeneous"), std::string("efficiency")},
         std::pair{std::string("heterogeneous"), std::string("asu")}}) {
     Chart chart;
-    chart.title = "Simulated " + scenario + " workers: " +
-                  (measure == "asu" ? std::string("ASU") : measure) + " against worker count";
+    chart.title = "Simulated " + scenario +
+                  " workers: " + (measure == "asu" ? std::string("ASU") : measure) +
+                  " against worker count";
     chart.xLabel = "workers";
     chart.yLabel = (measure == "asu" ? std::string("ASU") : measure) + ", %";
     chart.logX = true;
@@ -99,14 +102,17 @@ void runScale(ExperimentContext& cx) {
     cx.draw(chart, "scale-" + measure + "-" + scenario + ".png");
   }
 
-  cx.say("Simulated runs only: the simulator replays the per-pixel cost map of a real serial "
-         "render of `" + cx.options().scenePath + "` (case " + testCase + ", " +
-         std::to_string(scene.image.width) + "x" + std::to_string(scene.image.height) +
-         ", " + csvNumber(serial.medianSeconds, 4) + " s here), scaled to " +
-         csvNumber(serialSeconds) + " s of serial work, over a 1 Gbit/s LAN (50 us latency, "
-         "5 us of master time per message); speed index " + csvNumber(speedIndex, 3) +
-         " s at full speed. Homogeneous: every worker at full speed. Heterogeneous: half the "
-         "workers, picked at random (seed 1), four times slower.\n\n");
+  cx.say(
+      "Simulated runs only: the simulator replays the per-pixel cost map of a real serial "
+      "render of `" +
+      cx.options().scenePath + "` (case " + testCase + ", " + std::to_string(scene.image.width) +
+      "x" + std::to_string(scene.image.height) + ", " + csvNumber(serial.medianSeconds, 4) +
+      " s here), scaled to " + csvNumber(serialSeconds) +
+      " s of serial work, over a 1 Gbit/s LAN (50 us latency, "
+      "5 us of master time per message); speed index " +
+      csvNumber(speedIndex, 3) +
+      " s at full speed. Homogeneous: every worker at full speed. Heterogeneous: half the "
+      "workers, picked at random (seed 1), four times slower.\n\n");
 
   // Arvo and Heirich's claim, from the homogeneous figures.
   const bool haveScatter = results["homogeneous"].count("scatter") > 0;
@@ -115,9 +121,10 @@ void runScale(ExperimentContext& cx) {
     if (!isStatic(s)) dynamic.push_back(s);
   }
   if (haveScatter && !dynamic.empty()) {
-    cx.say("Arvo and Heirich's claim (static scatter decomposition is effective below 128 "
-           "computers and fails on complex images beyond), homogeneous workers:\n\n"
-           "| workers | scatter efficiency | best dynamic | its efficiency |\n|---|---|---|---|\n");
+    cx.say(
+        "Arvo and Heirich's claim (static scatter decomposition is effective below 128 "
+        "computers and fails on complex images beyond), homogeneous workers:\n\n"
+        "| workers | scatter efficiency | best dynamic | its efficiency |\n|---|---|---|---|\n");
     double worstBelow = 1, worstFrom = 1, gapFrom = 0;
     bool reached128 = false;
     for (int n : counts) {
@@ -149,14 +156,17 @@ void runScale(ExperimentContext& cx) {
       const bool effectiveBelow = worstBelow >= 0.9;
       const bool failsBeyond = worstFrom < 0.8;
       if (effectiveBelow && failsBeyond) {
-        cx.say("**The claim holds here**: scatter keeps up below 128 workers and falls well "
-               "behind beyond.\n");
+        cx.say(
+            "**The claim holds here**: scatter keeps up below 128 workers and falls well "
+            "behind beyond.\n");
       } else if (!failsBeyond) {
-        cx.say("**The claim is not reproduced here**: scatter stays within 20 % of the best "
-               "dynamic strategy at 128 workers and more.\n");
+        cx.say(
+            "**The claim is not reproduced here**: scatter stays within 20 % of the best "
+            "dynamic strategy at 128 workers and more.\n");
       } else {
-        cx.say("**The claim holds only in part**: scatter falls behind beyond 128 workers, "
-               "but is already more than 10 % behind below.\n");
+        cx.say(
+            "**The claim holds only in part**: scatter falls behind beyond 128 workers, "
+            "but is already more than 10 % behind below.\n");
       }
     } else {
       cx.say(" (the quick run stops at " + std::to_string(counts.back()) + " workers).\n");

@@ -36,10 +36,10 @@ void runSpeedIndex(ExperimentContext& cx) {
   cx.progress("serial time: " + std::to_string(cx.runs()) + " render(s), case " + testCase);
   const SerialMeasurement serial = measureSerial(scene, settings, cx.runs(), false);
 
-  CsvTable workers({"speed_index", "run", "worker", "slowdown", "speed_index_s",
-                    "relative_to_master", "error"});
-  CsvTable runs({"speed_index", "run", "master_speed_index_s", "elapsed_s", "speedup",
-                 "efficiency", "masu", "asu"});
+  CsvTable workers(
+      {"speed_index", "run", "worker", "slowdown", "speed_index_s", "relative_to_master", "error"});
+  CsvTable runs({"speed_index", "run", "master_speed_index_s", "elapsed_s", "speedup", "efficiency",
+                 "masu", "asu"});
   CsvTable table({"speed_index", "runs", "master_speed_index_s", "elapsed_s", "speedup",
                   "efficiency", "masu", "asu", "emulated_masu", "mean_index_error", "source"});
   std::vector<RunSummary> summaries;
@@ -59,9 +59,9 @@ void runSpeedIndex(ExperimentContext& cx) {
         const double relative = w.speedIndexSeconds / master;
         const double error = relative / w.slowdown - 1;
         errors.push_back(std::abs(error));
-        workers.addRow({name, std::to_string(run), std::to_string(w.worker),
-                        csvNumber(w.slowdown), csvNumber(w.speedIndexSeconds, 5),
-                        csvNumber(relative, 4), csvNumber(error, 4)});
+        workers.addRow({name, std::to_string(run), std::to_string(w.worker), csvNumber(w.slowdown),
+                        csvNumber(w.speedIndexSeconds, 5), csvNumber(relative, 4),
+                        csvNumber(error, 4)});
       }
       runs.addRow({name, std::to_string(run), csvNumber(master, 5), csvNumber(r.elapsedSeconds, 5),
                    csvNumber(r.speedup.value_or(0), 4), csvNumber(r.efficiency, 4),
@@ -82,8 +82,9 @@ void runSpeedIndex(ExperimentContext& cx) {
 
   Chart chart;
   chart.kind = Chart::Kind::Bars;
-  chart.title = "Fig. 17: speed indices, Towers of Hanoi vs a ray-tracing probe (reservoir 80 %, case " +
-                testCase + ")";
+  chart.title =
+      "Fig. 17: speed indices, Towers of Hanoi vs a ray-tracing probe (reservoir 80 %, case " +
+      testCase + ")";
   chart.yLabel = "median of " + std::to_string(cx.runs()) + " run(s)";
   chart.categories = {"MASU", "ASU", "speed-up"};
   const char* titles[] = {"Towers of Hanoi (the paper's)", "ray-tracing probe"};
@@ -102,15 +103,16 @@ void runSpeedIndex(ExperimentContext& cx) {
          " run(s) per speed index; serial time " + csvNumber(serial.medianSeconds, 4) +
          " s (one thread). " + cx.emulationNote() + "\n\n");
   cx.say(markdownTable(table, {"speed_index", "master_speed_index_s", "elapsed_s", "speedup",
-                               "efficiency", "masu", "asu", "emulated_masu",
-                               "mean_index_error"}));
-  cx.say("\n`mean_index_error`: how far each worker's index, relative to the master's, is from "
-         "its emulated slowdown k_i (0 = a perfect predictor). The emulated MASU is the sum of "
-         "1/k_i, what a perfect index would give.\n\n");
-  cx.say("Difference between the two indices, relative to the larger (the paper: 23.81 % for "
-         "the MASU, 3.14 % for the ASU): MASU " +
-         percent(relativeDifference(summaries[0].masu, summaries[1].masu)) + ", ASU " +
-         percent(relativeDifference(summaries[0].asu, summaries[1].asu)) + ".\n");
+                               "efficiency", "masu", "asu", "emulated_masu", "mean_index_error"}));
+  cx.say(
+      "\n`mean_index_error`: how far each worker's index, relative to the master's, is from "
+      "its emulated slowdown k_i (0 = a perfect predictor). The emulated MASU is the sum of "
+      "1/k_i, what a perfect index would give.\n\n");
+  cx.say(
+      "Difference between the two indices, relative to the larger (the paper: 23.81 % for "
+      "the MASU, 3.14 % for the ASU): MASU " +
+      percent(relativeDifference(summaries[0].masu, summaries[1].masu)) + ", ASU " +
+      percent(relativeDifference(summaries[0].asu, summaries[1].asu)) + ".\n");
 }
 
 }  // namespace prt

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/speed_index.h"
+#include "drive/speed_probe.h"
 #include "lab/context.h"
 #include "lab/experiments.h"
 #include "lab/measure.h"
@@ -33,12 +34,12 @@ void runTable3(ExperimentContext& cx) {
   std::vector<std::string> cases = cx.options().cases;
   if (cases.empty()) cases = {"A", "B", "C", "D"};
   const Scene scene = cx.scene(80, 60);
-  const double speedIndex = measureSpeedIndexSeconds();
+  const double speedIndex = serialSpeedIndexSeconds(SpeedIndexKind::Hanoi, scene, RenderSettings{});
 
   CsvTable runs({"case", "run", "seconds", "rays"});
   CsvTable table({"case", "drt", "ss", "width", "height", "runs", "median_s", "min_s", "max_s",
-                  "rays", "mrays_per_s", "relative_to_first", "paper_s",
-                  "paper_relative_to_first", "source"});
+                  "rays", "mrays_per_s", "relative_to_first", "paper_s", "paper_relative_to_first",
+                  "source"});
   std::vector<double> ours, paper;
   for (const std::string& c : cases) {
     const RenderSettings s = cx.settings(c);
@@ -55,7 +56,8 @@ void runTable3(ExperimentContext& cx) {
                   std::to_string(m.seconds.size()), csvNumber(m.medianSeconds, 5),
                   csvNumber(*std::min_element(m.seconds.begin(), m.seconds.end()), 5),
                   csvNumber(*std::max_element(m.seconds.begin(), m.seconds.end()), 5),
-                  std::to_string(m.rays), csvNumber(static_cast<double>(m.rays) / m.medianSeconds / 1e6, 4),
+                  std::to_string(m.rays),
+                  csvNumber(static_cast<double>(m.rays) / m.medianSeconds / 1e6, 4),
                   csvNumber(ours.back() / ours.front(), 4), csvNumber(paper.back(), 6),
                   csvNumber(paper.back() / paper.front(), 4), "real"});
   }
@@ -69,7 +71,10 @@ void runTable3(ExperimentContext& cx) {
   chart.logY = true;
   chart.categories = cases;
   ChartSeries mine{"PRT, this machine (" + std::to_string(scene.image.width) + "x" +
-                       std::to_string(scene.image.height) + ")", {}, {}, false};
+                       std::to_string(scene.image.height) + ")",
+                   {},
+                   {},
+                   false};
   ChartSeries theirs{"the paper's SRT (Table III)", {}, {}, false};
   for (size_t i = 0; i < cases.size(); ++i) {
     mine.y.push_back(ours[i] / ours.front());
@@ -82,12 +87,14 @@ void runTable3(ExperimentContext& cx) {
          std::to_string(scene.image.width) + "x" + std::to_string(scene.image.height) +
          ", median of " + std::to_string(cx.runs()) +
          " run(s) per case; all figures are real runs. This machine's speed index (Towers of "
-         "Hanoi, " + std::to_string(kSpeedIndexDiscs) + " discs): " + fixed(speedIndex, 4) +
+         "Hanoi, " +
+         std::to_string(kSpeedIndexDiscs) + " discs): " + fixed(speedIndex, 4) +
          " s (the paper's SRT: 0.3 s).\n\n");
   cx.say(markdownTable(table, {"case", "drt", "ss", "median_s", "rays", "mrays_per_s",
                                "relative_to_first", "paper_s", "paper_relative_to_first"}));
-  cx.say("\nThe paper's times read A and B as minutes:seconds and C and D as "
-         "hours:minutes:seconds (its C and D take hours).\n");
+  cx.say(
+      "\nThe paper's times read A and B as minutes:seconds and C and D as "
+      "hours:minutes:seconds (its C and D take hours).\n");
 }
 
 }  // namespace prt
