@@ -3,7 +3,8 @@
 #   mpi_render_test.sh PRT MPIEXEC SCENE WORKDIR MODE NP [ARG]
 # MODE
 #   image STRATEGY  the image is byte-identical to the serial render of the same scene
-#   report          --report JSON has the run's measures and one entry per worker
+#   report [FLAG]   --report JSON has the run's measures and one entry per worker (with FLAG,
+#                   e.g. --speed-index=probe, added to the command line)
 #   fault KIND      --inject-fault 1:0:KIND (crash|hang) fails the job, naming the rank
 #   singleton       one rank is refused with a clear message
 #   slowdown        a --slowdown list not matching the worker count is refused
@@ -49,7 +50,8 @@ case $mode in
     cmp serial.pfm mpi.pfm || fail "the MPI image differs from the serial one"
     ;;
   report)
-    mpi_prt --strategy reservoir --batch 16 -o mpi.pfm --report report.json --trace trace.json
+    # shellcheck disable=SC2086
+    mpi_prt --strategy reservoir --batch 16 -o mpi.pfm --report report.json --trace trace.json $arg
     [ "$status" -eq 0 ] || fail "mpirun exited with $status"
     python3 - "$((np - 1))" <<'PY'
 import json, sys
