@@ -40,13 +40,15 @@ RunReport runReal(const Scene& scene, const RenderSettings& settings,
 }
 
 RunReport runSimulated(const CostMap& costs, const ParallelOptions& options,
-                       double masterSpeedIndexSeconds) {
+                       double masterSpeedIndexSeconds,
+                       const std::vector<double>& workerSpeedIndices) {
   SimulationOptions sim;
   sim.strategy = options.strategy;
   sim.strategyOptions = options.strategyOptions;
   for (int w = 0; w < options.workers; ++w) sim.speeds.push_back(1.0 / options.slowdownOf(w));
   sim.batchPixels = options.batchPixels;
   sim.baseSpeedIndexSeconds = masterSpeedIndexSeconds;
+  sim.speedIndexSeconds = workerSpeedIndices;
   return simulate(costs, sim).report;
 }
 

@@ -32,9 +32,11 @@ RunReport runReal(const Scene& scene, const RenderSettings& settings,
                   double masterSpeedIndexSeconds);
 
 // The same configuration in the simulator, replaying `costs` (its total is the serial time):
-// worker speeds 1 / slowdown, speed indices base / speed with base the master's.
+// worker speeds 1 / slowdown, speed indices `workerSpeedIndices` (one per worker, to replay a
+// real run's) or, if empty, base / speed with base the master's.
 RunReport runSimulated(const CostMap& costs, const ParallelOptions& options,
-                       double masterSpeedIndexSeconds);
+                       double masterSpeedIndexSeconds,
+                       const std::vector<double>& workerSpeedIndices = {});
 
 // The report measures experiments tabulate, each the median over runs.
 struct RunSummary {
