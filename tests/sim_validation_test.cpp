@@ -52,16 +52,16 @@ TEST_P(SimValidationTest, SimulatedElapsedTimeIsWithinTenPercentOfARealRun) {
   double real = 0, simulated = 0;
   for (int attempt = 0; attempt < 3 && bestError > 0.10; ++attempt) {
     const double masterIndex = measureSpeedIndexSeconds(options.speedIndexDiscs, 5);
-    const RunReport r = runReal(*scene_, *paperTestCase("A"), options,
-                                serial_->medianSeconds, masterIndex);
+    const RunReport r =
+        runReal(*scene_, *paperTestCase("A"), options, serial_->medianSeconds, masterIndex);
     double compute = 0;
     std::vector<double> speedIndices;
     for (const WorkerReport& w : r.workers) {
       compute += w.busySeconds / w.slowdown;
       speedIndices.push_back(w.speedIndexSeconds);
     }
-    const RunReport s = runSimulated(serial_->costMap->scaledTo(compute), options, masterIndex,
-                                     speedIndices);
+    const RunReport s =
+        runSimulated(serial_->costMap->scaledTo(compute), options, masterIndex, speedIndices);
     const double error = std::abs(s.elapsedSeconds / r.elapsedSeconds - 1);
     if (error < bestError) {
       bestError = error;
