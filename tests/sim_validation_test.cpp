@@ -10,8 +10,8 @@
 // the speed indices the real workers measured, as bench/sim/validate.py's "calibrated" column
 // does at full size.
 // The slowdowns are large (8, 8, 16, 16: a third of a core in all), so the emulation stays
-// faithful on a busy machine, and each configuration gets up to three tries, taking the closest of
-// them, so a preempted run does not fail the suite.
+// faithful on a busy machine, and each configuration gets up to three tries, taking the
+// closest of them, so a preempted run does not fail the suite.
 
 #include <gtest/gtest.h>
 
