@@ -7,7 +7,7 @@
 // compiler) slows every CPU second of the real run, by a third at times, which no cost map
 // recorded earlier can know. So the map keeps its shape but is scaled to the compute the real
 // run did (the sum over workers of busy time / slowdown), and the setup is simulated from
-// the speed indices the real workers measured, as bench/sim/validate.py's "calibrated" column
+// the speed indices the real workers measured, as bench/sim/validate.py's "scaled" column
 // does at full size.
 // The slowdowns are large (8, 8, 16, 16: a third of a core in all), so the emulation stays
 // faithful on a busy machine, and each configuration gets up to three tries, taking the
