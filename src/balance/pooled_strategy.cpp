@@ -10,7 +10,7 @@ namespace prt {
 Decisions PooledStrategy::start(const StartInfo& info) {
   validateStartInfo(info);
   const int workerCount = static_cast<int>(info.speedIndexSeconds.size());
-  pool_ = initialPool(info.taskCount);
+  pool_ = initialPool(info);
   workers_.reset(workerCount);
   idle_.assign(static_cast<size_t>(workerCount), false);
   speedIndexSeconds_ = info.speedIndexSeconds;

@@ -24,9 +24,11 @@ class PooledStrategy : public Strategy {
   Decisions onWorkerLost(int worker, const TaskSet& unfinished) final;
 
  protected:
-  // The order in which tasks sit in the pool; hand-outs take its front. Defaults to scan-line
-  // order, 0 .. taskCount-1.
-  virtual TaskSet initialPool(uint64_t taskCount) const { return TaskSet::range(0, taskCount); }
+  // The order in which tasks sit in the pool; hand-outs take its front. Called first by
+  // start(). Defaults to scan-line order, 0 .. taskCount-1.
+  virtual TaskSet initialPool(const StartInfo& info) {
+    return TaskSet::range(0, info.taskCount);
+  }
   // Called by start() when the pool holds every task and every worker is live.
   virtual void prepare(const StartInfo& info) = 0;
   // Tasks start() gives `worker`; may be 0. Defaults to one hand-out.

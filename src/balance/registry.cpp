@@ -18,10 +18,6 @@
 namespace prt {
 namespace {
 
-// Interleaved strata of the scattered reservoir: enough that a worker's initial block spans
-// several whole strata on clusters of a few dozen workers.
-constexpr uint64_t kReservoirScatterStrata = 64;
-
 using Factory = std::function<std::unique_ptr<Strategy>(const StrategyOptions&)>;
 
 const std::vector<std::pair<std::string, Factory>>& factories() {
@@ -34,7 +30,7 @@ const std::vector<std::pair<std::string, Factory>>& factories() {
        }},
       {"reservoir-scatter",
        [](const StrategyOptions& o) {
-         return std::make_unique<ReservoirStrategy>(o.initialPercent, kReservoirScatterStrata);
+         return std::make_unique<ReservoirStrategy>(o.initialPercent, /*interleaved=*/true);
        }},
       {"blocks", [](const StrategyOptions&) { return std::make_unique<BlocksStrategy>(); }},
       {"self",

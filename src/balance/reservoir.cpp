@@ -1,22 +1,17 @@
 #include "balance/reservoir.h"
 
+#include "balance/interleaved_order.h"
 #include "balance/reservoir_math.h"
-#include "core/check.h"
 
 namespace prt {
 
-ReservoirStrategy::ReservoirStrategy(double initialPercent, uint64_t strata)
-    : initialPercent_(initialPercent), strata_(strata) {
+ReservoirStrategy::ReservoirStrategy(double initialPercent, bool interleaved)
+    : initialPercent_(initialPercent), interleaved_(interleaved) {
   validateStrategyOptions(StrategyOptions{.initialPercent = initialPercent});
-  PRT_CHECK(strata_ >= 1);
 }
 
-TaskSet ReservoirStrategy::initialPool(uint64_t taskCount) const {
-  TaskSet pool;
-  for (uint64_t s = 0; s < strata_ && s < taskCount; ++s) {
-    pool.append(TaskRun{s, (taskCount - s + strata_ - 1) / strata_, strata_});
-  }
-  return pool;
+TaskSet ReservoirStrategy::initialPool(const StartInfo& info) {
+  return interleaved_ ? interleavedOrder(info.taskCount) : TaskSet::range(0, info.taskCount);
 }
 
 void ReservoirStrategy::prepare(const StartInfo& info) {

@@ -6,11 +6,11 @@
 // the front of the reservoir; an empty reservoir answers NoMoreWork. No task ever moves
 // between workers.
 //
-// With strata S > 1 (strategy "reservoir-scatter"), the same procedures run over a scattered
-// task sequence: the pixels i mod S = 0 first, then i mod S = 1, and so on. Each contiguous
-// stretch of that sequence — an initial block, a hand-out — then samples the whole image, as
-// scatter decomposition does, instead of a band of scan lines whose cost may be far from
-// the average (an open sky costs a fraction of a cluster of glass). S = 1 is the paper's.
+// Interleaved (strategy "reservoir-scatter"), the same procedures run over an interleaved task
+// sequence (interleaved_order.h) instead of scan-line order. Each contiguous stretch of it —
+// an initial block, a hand-out — then samples the whole image, as scatter decomposition
+// does, instead of a band of scan lines whose cost may be far from the average (an open sky
+// costs a fraction of a cluster of glass). Scan-line order is the paper's.
 //
 // Lost workers (the paper has none): their tasks go back to the front of the reservoir and
 // the division of labour is recomputed over the live workers (see PooledStrategy).
@@ -26,14 +26,16 @@ namespace prt {
 class ReservoirStrategy final : public PooledStrategy {
  public:
   // initialPercent in (0, 100]; anything else throws InputError.
-  explicit ReservoirStrategy(double initialPercent = 80, uint64_t strata = 1);
-  std::string name() const override { return strata_ > 1 ? "reservoir-scatter" : "reservoir"; }
+  explicit ReservoirStrategy(double initialPercent = 80, bool interleaved = false);
+  std::string name() const override {
+    return interleaved_ ? "reservoir-scatter" : "reservoir";
+  }
 
   // The division of labour in use (after start()); 0 for lost workers.
   const std::vector<double>& division() const { return division_; }
 
  protected:
-  TaskSet initialPool(uint64_t taskCount) const override;
+  TaskSet initialPool(const StartInfo& info) override;
   void prepare(const StartInfo& info) override;
   uint64_t initialSize(int worker) override;
   uint64_t handOutSize(int worker) override;
@@ -41,7 +43,7 @@ class ReservoirStrategy final : public PooledStrategy {
 
  private:
   double initialPercent_;
-  uint64_t strata_;
+  bool interleaved_;
   std::vector<double> division_;
   std::vector<uint64_t> initialBlocks_;
 };

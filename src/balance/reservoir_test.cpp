@@ -94,23 +94,20 @@ TEST(ReservoirTest, RejectsBadSpeedIndices) {
 namespace prt {
 namespace {
 
-TEST(ReservoirScatterTest, BlocksAndHandOutsSampleTheWholeImage) {
-  ReservoirStrategy strategy(80, 4);
+TEST(ReservoirScatterTest, BlocksAndHandOutsFollowTheInterleavedOrder) {
+  ReservoirStrategy strategy(80, /*interleaved=*/true);
   EXPECT_EQ(strategy.name(), "reservoir-scatter");
-  // 2 equal workers, 40 tasks: the pool is 0,4,..,36, 1,5,..,37, 2,.., 3,..; limit 32, blocks 16.
+  // 2 equal workers, 40 tasks: 2 strata (0, 2, .., 38 then 1, 3, .., 39); limit 32, blocks
+  // of 16; the reservoir holds 25, 27, .., 39 and half of it goes to the first request.
   const Decisions start = strategy.start(StartInfo{40, {1.0, 1.0}});
   ASSERT_EQ(start.size(), 2u);
-  const auto& first = std::get<Assign>(start[0]);
-  EXPECT_EQ(first.tasks.size(), 16u);
-  EXPECT_EQ(first.tasks.at(0), 0u);
-  EXPECT_EQ(first.tasks.at(9), 36u);
-  EXPECT_EQ(first.tasks.at(10), 1u);  // the second stratum follows the first
-  const auto& second = std::get<Assign>(start[1]);
-  EXPECT_EQ(second.tasks.at(0), 25u);  // after 0,4,..,36 and 1,5,..,21
-  // The reservoir holds the rest of the last stratum, 11,15,..,39: half to the first request.
+  EXPECT_EQ(std::get<Assign>(start[0]).tasks, TaskSet::strided(0, 16, 2));
+  TaskSet second = TaskSet::strided(32, 4, 2);
+  second.append(TaskRun{1, 12, 2});
+  EXPECT_EQ(std::get<Assign>(start[1]).tasks, second);
   const Decisions more = strategy.onRequest(0);
   ASSERT_EQ(more.size(), 1u);
-  EXPECT_EQ(std::get<Assign>(more[0]).tasks.toVector(), (std::vector<uint64_t>{11, 15, 19, 23}));
+  EXPECT_EQ(std::get<Assign>(more[0]).tasks, TaskSet::strided(25, 4, 2));
 }
 
 }  // namespace

@@ -1,0 +1,45 @@
+#include "balance/interleaved_order.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace prt {
+namespace {
+
+bool isPrime(uint64_t n) {
+  if (n < 2) return false;
+  for (uint64_t d = 2; d * d <= n; ++d) {
+    if (n % d == 0) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+uint64_t interleavedStrata(uint64_t taskCount) {
+  if (taskCount <= 1) return 1;
+  uint64_t s = std::max<uint64_t>(2, taskCount / kStratumTasks);
+  while (!isPrime(s)) ++s;
+  return std::min(s, taskCount);
+}
+
+TaskSet interleavedOrder(uint64_t taskCount) {
+  const uint64_t strata = interleavedStrata(taskCount);
+  if (strata <= 1) return TaskSet::range(0, taskCount);
+  // The golden-ratio step, coprime with the prime number of strata (unless S = taskCount,
+  // which is then a prime too small to matter; any step 1..S-1 is coprime with it).
+  const double golden = (std::sqrt(5.0) - 1) / 2;
+  const uint64_t step = std::clamp<uint64_t>(
+      static_cast<uint64_t>(std::llround(golden * static_cast<double>(strata))), 1, strata - 1);
+  TaskSet order;
+  uint64_t first = 0;
+  for (uint64_t i = 0; i < strata; ++i) {
+    if (first < taskCount) {
+      order.append(TaskRun{first, (taskCount - first + strata - 1) / strata, strata});
+    }
+    first = (first + step) % strata;
+  }
+  return order;
+}
+
+}  // namespace prt

@@ -1,0 +1,33 @@
+#pragma once
+// An interleaved order of the tasks (pixels in scan-line order) in which every contiguous
+// stretch samples the whole image, so a strategy that hands out contiguous stretches of a
+// sequence (the reservoir's blocks and hand-outs) gives each worker a fair share of sky and
+// glass however the cost is spread. Used by "reservoir-scatter".
+//
+// The tasks are split into S strata, stratum j holding the pixels j, j + S, j + 2S, ...: about
+// kStratumTasks of them, spread from the top of the image to the bottom. The strata follow
+// one another in golden-ratio order, j = i * g mod S with g / S close to 0.618, so consecutive
+// strata land far apart across the image and any run of them covers it evenly (Weyl's
+// sequence; S is prime, so every stratum comes exactly once). A stretch of L tasks is then
+// L / kStratumTasks whole strata plus at most two partial ones: even across a cluster of
+// workers whose hand-outs are a few hundred tasks, no worker gets a band of scan lines.
+// Each stratum is one strided run, so the order stays compact: S runs in all.
+//
+// Pure function; thread-safe.
+
+#include <cstdint>
+
+#include "core/task_set.h"
+
+namespace prt {
+
+inline constexpr uint64_t kStratumTasks = 32;
+
+// The number of strata for `taskCount` tasks: the smallest prime >= taskCount / kStratumTasks
+// (at least 2, at most taskCount; 1 for one task).
+uint64_t interleavedStrata(uint64_t taskCount);
+
+// Every task 0 .. taskCount-1 exactly once, in interleaved order.
+TaskSet interleavedOrder(uint64_t taskCount);
+
+}  // namespace prt

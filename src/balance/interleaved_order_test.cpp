@@ -1,0 +1,58 @@
+#include "balance/interleaved_order.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <vector>
+
+namespace prt {
+namespace {
+
+TEST(InterleavedOrder, EveryTaskExactlyOnce) {
+  for (uint64_t n : {0ull, 1ull, 2ull, 3ull, 40ull, 63ull, 64ull, 1000ull, 307200ull}) {
+    const TaskSet order = interleavedOrder(n);
+    ASSERT_EQ(order.size(), n);
+    std::vector<uint64_t> tasks = order.toVector();
+    std::sort(tasks.begin(), tasks.end());
+    for (uint64_t i = 0; i < n; ++i) ASSERT_EQ(tasks[i], i) << n;
+  }
+}
+
+TEST(InterleavedOrder, StrataArePrimeAndHoldAboutThirtyTwoTasks) {
+  EXPECT_EQ(interleavedStrata(640 * 480), 9601u);  // 9600 rounded up to a prime
+  EXPECT_EQ(interleavedStrata(1), 1u);
+  EXPECT_EQ(interleavedStrata(40), 2u);
+  const TaskSet order = interleavedOrder(640 * 480);
+  EXPECT_EQ(order.runs().size(), 9601u) << "one compact run per stratum";
+  EXPECT_EQ(order.runs()[0], (TaskRun{0, 32, 9601}));
+}
+
+TEST(InterleavedOrder, ShortStretchesSampleTheWholeImage) {
+  // A 640x480 image: any stretch of 640 tasks (a hand-out on a large cluster) reaches from the
+  // top tenth of the rows to the bottom tenth, and from the left tenth of the columns to the
+  // right tenth, and its mean row and column sit near the image's centre.
+  const uint64_t w = 640, h = 480;
+  const std::vector<uint64_t> tasks = interleavedOrder(w * h).toVector();
+  for (size_t start = 0; start + 640 <= tasks.size(); start += 4999) {
+    uint64_t top = h, bottom = 0, left = w, right = 0;
+    double rows = 0, columns = 0;
+    for (size_t i = start; i < start + 640; ++i) {
+      const uint64_t x = tasks[i] % w, y = tasks[i] / w;
+      top = std::min(top, y);
+      bottom = std::max(bottom, y);
+      left = std::min(left, x);
+      right = std::max(right, x);
+      rows += static_cast<double>(y) / 640;
+      columns += static_cast<double>(x) / 640;
+    }
+    EXPECT_LT(top, h / 10) << start;
+    EXPECT_GT(bottom, h - h / 10) << start;
+    EXPECT_LT(left, w / 10) << start;
+    EXPECT_GT(right, w - w / 10) << start;
+    EXPECT_NEAR(rows, h / 2.0, h / 10.0) << start;
+    EXPECT_NEAR(columns, w / 2.0, w / 10.0) << start;
+  }
+}
+
+}  // namespace
+}  // namespace prt
