@@ -1,6 +1,8 @@
 #include "lab/experiment.h"
 
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <ctime>
 #include <filesystem>
 #include <fstream>
@@ -52,6 +54,18 @@ std::string cpuModel() {
     }
   }
   return "unknown CPU";
+}
+
+// The 1-minute load average, as a reminder of how busy the machine was; negative if unknown.
+double loadAverage() {
+  double load[1] = {-1};
+  return ::getloadavg(load, 1) == 1 ? load[0] : -1;
+}
+
+std::string loadNote(const char* when) {
+  char text[160];
+  std::snprintf(text, sizeof text, "load average %.2f %s", loadAverage(), when);
+  return text;
 }
 
 std::string today() {
@@ -111,9 +125,13 @@ ExperimentOutput runExperiment(const std::string& name, const ExperimentOptions&
          "`, " + today() + ", on " + cpuModel() + " (" +
          std::to_string(std::thread::hardware_concurrency()) + " cores)" +
          (options.quick ? "; **quick version** (small images, reduced sweep)" : "") + ".\n\n");
+  const std::string loadBefore = loadNote("at the start");
   entry.run(cx);
 
   ExperimentOutput& out = cx.output();
+  out.summary += "\nMachine load: " + loadBefore + ", " + loadNote("at the end") + " (" +
+                 std::to_string(std::thread::hardware_concurrency()) +
+                 " cores; real runs are only faithful on an otherwise idle machine).\n";
   out.summary += "\nFiles: ";
   for (size_t i = 0; i < out.files.size(); ++i) {
     out.summary += (i ? ", " : "") + out.files[i];
