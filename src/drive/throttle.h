@@ -16,13 +16,20 @@
 // Pacing the end of the stretch to k * c absorbs the queueing into the wait, as long as the
 // stretch's wall time stays under k * c.
 //
+// A wait also ends late: the timer's slack, and on a busy machine the wait for a core once
+// the thread is runnable again, a millisecond at times against waits of one to three. Each
+// late wake-up would add to the worker's time, so the lateness is carried as a lag into the next
+// stretch, whose wait is shortened by it: over back-to-back stretches a worker keeps to k times its
+// CPU time, and it is never ahead of that schedule. A stretch that starts more than a millisecond
+// after the last one ended (the worker waited for work) starts afresh, with no lag.
+//
 // What the emulated machine would have measured of a stretch is k * c: a real machine k times
 // slower runs it alone, with no queueing for a core. Speed indices are measured that way
 // (Stretch::emulatedSeconds), so that a burst of workers starting their speed-index runs at
 // once on too few cores does not make them look slower than they are; rendering is timed by
 // the wall clock, since the image really waits for it. Without a slowdown (k = 1) the worker
 // is the machine itself, and its wall time is what it measures, other load included.
-// Reads clocks: used by drivers only. Thread-safe (no state besides k).
+// Reads clocks: used by drivers only. One per worker thread; not thread-safe.
 
 #include <time.h>
 
@@ -34,9 +41,11 @@
 namespace prt {
 
 // How long to wait after a stretch that used `cpuSeconds` of CPU and took `wallSeconds` of
-// wall time, so that it lasts `slowdown` times its CPU time in all; never negative.
-inline double throttlePauseSeconds(double slowdown, double cpuSeconds, double wallSeconds) {
-  return std::max(0.0, slowdown * cpuSeconds - wallSeconds);
+// wall time, so that it lasts `slowdown` times its CPU time in all, less `lagSeconds` the
+// previous stretch ended late; never negative.
+inline double throttlePauseSeconds(double slowdown, double cpuSeconds, double wallSeconds,
+                                   double lagSeconds = 0) {
+  return std::max(0.0, slowdown * cpuSeconds - lagSeconds - wallSeconds);
 }
 
 // One throttled stretch of computing.
@@ -51,25 +60,31 @@ class Throttle {
   explicit Throttle(double slowdown = 1.0) : slowdown_(slowdown) {}
   double slowdown() const { return slowdown_; }
 
-  // Runs fn, then waits until it has lasted k times the CPU time it used.
+  // Runs fn, then waits until it has lasted k times the CPU time it used (less the lag the
+  // previous stretch left, if this one follows it at once).
   template <typename F>
-  Stretch measure(F&& fn) const {
+  Stretch measure(F&& fn) {
     const auto start = std::chrono::steady_clock::now();
     const double cpuStart = threadCpuSeconds();
     fn();
     const double cpu = threadCpuSeconds() - cpuStart;
     if (slowdown_ > 1.0) {
-      const double wall = secondsSince(start);
-      std::this_thread::sleep_for(
-          std::chrono::duration<double>(throttlePauseSeconds(slowdown_, cpu, wall)));
+      const bool backToBack =
+          hasRun_ && std::chrono::duration<double>(start - lastEnd_).count() < kBackToBackSeconds;
+      const double lag = backToBack ? lagSeconds_ : 0.0;
+      std::this_thread::sleep_for(std::chrono::duration<double>(
+          throttlePauseSeconds(slowdown_, cpu, secondsSince(start), lag)));
+      lagSeconds_ = std::max(0.0, secondsSince(start) - (slowdown_ * cpu - lag));
     }
-    const double wall = secondsSince(start);
+    lastEnd_ = std::chrono::steady_clock::now();
+    hasRun_ = true;
+    const double wall = std::chrono::duration<double>(lastEnd_ - start).count();
     return {wall, slowdown_ > 1.0 ? slowdown_ * cpu : wall};
   }
 
   // measure(fn), returning the wall seconds.
   template <typename F>
-  double run(F&& fn) const {
+  double run(F&& fn) {
     return measure(std::forward<F>(fn)).wallSeconds;
   }
 
@@ -83,7 +98,12 @@ class Throttle {
     return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
   }
 
+  static constexpr double kBackToBackSeconds = 1e-3;
+
   double slowdown_;
+  double lagSeconds_ = 0;  // how far the last stretch ended behind its schedule
+  std::chrono::steady_clock::time_point lastEnd_;
+  bool hasRun_ = false;
 };
 
 }  // namespace prt

@@ -20,11 +20,36 @@ TEST(Throttle, AbsorbsQueueingIntoTheWait) {
 
 TEST(Throttle, NeverWaitsANegativeTime) {
   EXPECT_EQ(throttlePauseSeconds(2.0, 0.010, 0.050), 0.0);
+  EXPECT_EQ(throttlePauseSeconds(2.0, 0.010, 0.010, 0.5), 0.0);
+}
+
+TEST(Throttle, ALateWakeUpShortensTheNextWait) {
+  // The previous wait ended 2 ms late: the next stretch waits 2 ms less.
+  EXPECT_DOUBLE_EQ(throttlePauseSeconds(4.0, 0.010, 0.010, 0.002), 0.028);
+}
+
+TEST(Throttle, BackToBackStretchesKeepToTheirScheduleOverall) {
+  // However late each wake-up, n back-to-back stretches of c CPU seconds last about k * n * c
+  // (at most one late wake-up more), and never less.
+  Throttle throttle(3.0);
+  volatile double sink = 0;
+  const auto start = std::chrono::steady_clock::now();
+  double emulated = 0;
+  for (int i = 0; i < 20; ++i) {
+    emulated += throttle
+                    .measure([&] {
+                      for (int j = 0; j < 200000; ++j) sink = sink + 1e-9 * j;
+                    })
+                    .emulatedSeconds;
+  }
+  const double wall =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_GE(wall, emulated * 0.999);
 }
 
 TEST(Throttle, RunReturnsTheStretchedWallTime) {
   // Burn a little CPU: the run lasts at least k times the CPU time the work used.
-  const Throttle throttle(3.0);
+  Throttle throttle(3.0);
   volatile double sink = 0;
   const auto cpuNow = [] {
     timespec ts{};
@@ -45,11 +70,12 @@ TEST(Throttle, EmulatedTimeIsKTimesTheCpuTimeAndWallTimeWithoutSlowdown) {
   auto work = [&] {
     for (int i = 0; i < 1000000; ++i) sink = sink + 1e-9 * i;
   };
-  const Stretch slowed = Throttle(4.0).measure(work);
+  Throttle slow(4.0), plain(1.0);
+  const Stretch slowed = slow.measure(work);
   EXPECT_GT(slowed.emulatedSeconds, 0.0);
   EXPECT_GE(slowed.wallSeconds, slowed.emulatedSeconds * 0.999);
-  const Stretch plain = Throttle(1.0).measure(work);
-  EXPECT_EQ(plain.emulatedSeconds, plain.wallSeconds);
+  const Stretch full = plain.measure(work);
+  EXPECT_EQ(full.emulatedSeconds, full.wallSeconds);
 }
 
 }  // namespace

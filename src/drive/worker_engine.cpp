@@ -21,7 +21,7 @@ void WorkerEngine::load(const SceneMsg& scene) {
                                          RenderSettings{scene.samplesPerPixel, scene.drtRate});
 }
 
-double WorkerEngine::measureSpeedIndex() const {
+double WorkerEngine::measureSpeedIndex() {
   if (speedIndexKind_ == SpeedIndexKind::RenderProbe) {
     PRT_CHECK(renderer_ != nullptr);
     constexpr int kProbePieces = 32;  // as many stretches as the Hanoi run below
@@ -46,7 +46,7 @@ double WorkerEngine::measureSpeedIndex() const {
 }
 
 std::vector<float> WorkerEngine::render(const TaskSet& batch, double& seconds,
-                                        uint64_t& rays) const {
+                                        uint64_t& rays) {
   PRT_CHECK(renderer_ != nullptr);
   std::vector<Color> colors;
   seconds = throttle_.run([&] { rays += renderTasks(*renderer_, batch, 1, colors); });

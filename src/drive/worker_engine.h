@@ -22,10 +22,10 @@ class WorkerEngine {
   void load(const SceneMsg& scene);
   // The speed index (Towers of Hanoi time, or the ray-tracing probe's on the loaded scene),
   // slowed down like everything else this worker computes.
-  double measureSpeedIndex() const;
+  double measureSpeedIndex();
   // Renders `batch` on one thread; returns 3 floats per pixel. `seconds` receives the wall
   // time including the slowdown wait, `rays` the rays traced.
-  std::vector<float> render(const TaskSet& batch, double& seconds, uint64_t& rays) const;
+  std::vector<float> render(const TaskSet& batch, double& seconds, uint64_t& rays);
 
   const Throttle& throttle() const { return throttle_; }
 
