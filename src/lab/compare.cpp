@@ -4,6 +4,7 @@
 // speed-up than scatter, 36 % than hybrid; 28 % better efficiency than scatter; 25 % and
 // 10 % better ASU) recomputed from our figures.
 
+#include <algorithm>
 #include <map>
 
 #include "balance/strategy.h"
@@ -51,37 +52,37 @@ void runCompare(ExperimentContext& cx) {
   std::vector<std::string> columns = {"case", "strategy", "source", "runs"};
   for (const std::string& c : summaryColumns()) columns.push_back(c);
   CsvTable table(columns);
-  CsvTable runs({"case", "strategy", "run", "elapsed_s", "speedup", "efficiency", "masu", "asu",
-                 "messages", "bytes"});
+  CsvTable runs({"case", "strategy", "run", "serial_s", "elapsed_s", "speedup", "efficiency",
+                 "masu", "asu", "messages", "bytes"});
   // results[source][case][strategy]
   std::map<std::string, std::map<std::string, std::map<std::string, RunSummary>>> results;
   std::string serialTimes;
   for (const std::string& c : cases) {
     const RenderSettings settings = cx.settings(c);
-    cx.progress("case " + c + ": serial time and cost map, " + std::to_string(cx.runs()) +
-                " render(s)");
-    const SerialMeasurement serial = measureSerial(scene, settings, cx.runs(), true);
-    serialTimes +=
-        (serialTimes.empty() ? "" : ", ") + c + " " + csvNumber(serial.medianSeconds, 4) + " s";
+    cx.progress("case " + c + ": serial time and cost map");
+    SerialReference serial(scene, settings);
     // Round-robin over the strategies, so that a noisy spell on the machine hits them alike.
     std::map<std::string, std::vector<RunReport>> reports;
     for (int run = 1; run <= cx.runs(); ++run) {
       for (const std::string& strategy : strategies) {
         cx.progress("case " + c + ", " + strategy + ": run " + std::to_string(run) + " of " +
                     std::to_string(cx.runs()));
+        const double serialSeconds = serial.seconds();
         const RunReport r = runReal(scene, settings, parallelOptions(strategy, slowdowns),
-                                    serial.medianSeconds, masterIndex);
-        runs.addRow({c, strategy, std::to_string(run), csvNumber(r.elapsedSeconds, 5),
-                     csvNumber(r.speedup.value_or(0), 4), csvNumber(r.efficiency, 4),
-                     csvNumber(r.masu, 4), csvNumber(r.asu.value_or(0), 4),
-                     std::to_string(r.messages), std::to_string(r.bytes)});
+                                    serialSeconds, masterIndex);
+        runs.addRow({c, strategy, std::to_string(run), csvNumber(serialSeconds, 5),
+                     csvNumber(r.elapsedSeconds, 5), csvNumber(r.speedup.value_or(0), 4),
+                     csvNumber(r.efficiency, 4), csvNumber(r.masu, 4),
+                     csvNumber(r.asu.value_or(0), 4), std::to_string(r.messages),
+                     std::to_string(r.bytes)});
         reports[strategy].push_back(r);
       }
     }
+    serialTimes += (serialTimes.empty() ? "" : "; ") + c + " " + serial.describe();
     for (const std::string& strategy : strategies) {
       results["real"][c][strategy] = medianSummary(reports[strategy]);
       results["simulated"][c][strategy] = medianSummary(
-          {runSimulated(*serial.costMap, parallelOptions(strategy, slowdowns), masterIndex)});
+          {runSimulated(serial.costMap(), parallelOptions(strategy, slowdowns), masterIndex)});
       for (const char* source : {"real", "simulated"}) {
         std::vector<std::string> row = {
             c, strategy, source, std::string(source) == "real" ? std::to_string(cx.runs()) : "1"};
@@ -127,7 +128,8 @@ void runCompare(ExperimentContext& cx) {
          std::to_string(scene.image.width) + "x" + std::to_string(scene.image.height) +
          ". `real` rows: the local driver, median of " + std::to_string(cx.runs()) +
          " run(s); `simulated` rows: the simulator replaying each case's serial cost map with "
-         "the same worker speeds. Serial times (one thread): " +
+         "the same worker speeds. Serial times (one thread; measured again whenever the last "
+         "was a minute old): " +
          serialTimes + ". " + cx.emulationNote() + "\n\n");
   cx.say(
       "The paper's claims, recomputed (\"X % better\" = ours / theirs - 1, the largest over "

@@ -22,17 +22,16 @@ void runInitialPercent(ExperimentContext& cx) {
                  : std::vector<double>{5, 10, 20, 30, 40, 50, 60, 70, 75, 80, 90, 100};
   const std::vector<std::string> strategies = {"reservoir", "reservoir-scatter"};
 
-  cx.progress("serial time and cost map: " + std::to_string(cx.runs()) + " render(s), case " +
-              testCase);
-  const SerialMeasurement serial = measureSerial(scene, settings, cx.runs(), true);
+  cx.progress("serial time and cost map, case " + testCase);
+  SerialReference serial(scene, settings);
   const double masterIndex =
       serialSpeedIndexSeconds(SpeedIndexKind::Hanoi, scene, RenderSettings{});
 
   std::vector<std::string> columns = {"strategy", "initial_percent", "source", "runs"};
   for (const std::string& c : summaryColumns()) columns.push_back(c);
   CsvTable table(columns);
-  CsvTable runs(
-      {"strategy", "initial_percent", "run", "elapsed_s", "speedup", "efficiency", "asu"});
+  CsvTable runs({"strategy", "initial_percent", "run", "serial_s", "elapsed_s", "speedup",
+                 "efficiency", "asu"});
   auto optionsFor = [&](const std::string& strategy, double percent) {
     ParallelOptions options = parallelOptions(strategy, slowdowns);
     options.strategyOptions.initialPercent = percent;
@@ -48,11 +47,12 @@ void runInitialPercent(ExperimentContext& cx) {
         const double p = percents[i];
         cx.progress(strategy + " at " + csvNumber(p) + " %: run " + std::to_string(run) + " of " +
                     std::to_string(cx.runs()));
+        const double serialSeconds = serial.seconds();
         const RunReport r =
-            runReal(scene, settings, optionsFor(strategy, p), serial.medianSeconds, masterIndex);
-        runs.addRow({strategy, csvNumber(p), std::to_string(run), csvNumber(r.elapsedSeconds, 5),
-                     csvNumber(r.speedup.value_or(0), 4), csvNumber(r.efficiency, 4),
-                     csvNumber(r.asu.value_or(0), 4)});
+            runReal(scene, settings, optionsFor(strategy, p), serialSeconds, masterIndex);
+        runs.addRow({strategy, csvNumber(p), std::to_string(run), csvNumber(serialSeconds, 5),
+                     csvNumber(r.elapsedSeconds, 5), csvNumber(r.speedup.value_or(0), 4),
+                     csvNumber(r.efficiency, 4), csvNumber(r.asu.value_or(0), 4)});
         reports[strategy][i].push_back(r);
       }
     }
@@ -67,7 +67,7 @@ void runInitialPercent(ExperimentContext& cx) {
       const double p = percents[i];
       const RunSummary real = medianSummary(reports[strategy][i]);
       const RunSummary sim =
-          medianSummary({runSimulated(*serial.costMap, optionsFor(strategy, p), masterIndex)});
+          medianSummary({runSimulated(serial.costMap(), optionsFor(strategy, p), masterIndex)});
       for (const auto& [source, s] : {std::pair{"real", real}, std::pair{"simulated", sim}}) {
         std::vector<std::string> row = {
             strategy, csvNumber(p), source,
@@ -119,8 +119,8 @@ void runInitialPercent(ExperimentContext& cx) {
          std::to_string(cx.runs()) +
          "); `simulated` rows replay the serial render's "
          "cost map in the simulator with the same worker speeds (no emulation overhead). "
-         "Serial time " +
-         csvNumber(serial.medianSeconds, 4) + " s. " + cx.emulationNote() + "\n\n");
+         "Serial time (one thread, measured again whenever the last was a minute old) " +
+         serial.describe() + ". " + cx.emulationNote() + "\n\n");
   for (const std::string& strategy : strategies) {
     for (const char* source : {"real", "simulated"}) {
       double best = -1, bestPercent = 0;

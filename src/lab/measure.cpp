@@ -1,6 +1,7 @@
 #include "lab/measure.h"
 
 #include <algorithm>
+#include <chrono>
 
 #include "drive/local_driver.h"
 #include "lab/csv_table.h"
@@ -25,6 +26,38 @@ SerialMeasurement measureSerial(const Scene& scene, const RenderSettings& settin
   }
   m.medianSeconds = median(m.seconds);
   return m;
+}
+
+namespace {
+
+double steadySeconds() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+}  // namespace
+
+SerialReference::SerialReference(const Scene& scene, const RenderSettings& settings,
+                                 double maxAgeSeconds)
+    : scene_(scene),
+      settings_(settings),
+      maxAgeSeconds_(maxAgeSeconds),
+      first_(measureSerial(scene, settings, 1, true)),
+      all_{first_.medianSeconds},
+      measuredAt_(steadySeconds()) {}
+
+double SerialReference::seconds() {
+  if (steadySeconds() - measuredAt_ > maxAgeSeconds_) {
+    all_.push_back(measureSerial(scene_, settings_, 1, false).medianSeconds);
+    measuredAt_ = steadySeconds();
+  }
+  return all_.back();
+}
+
+std::string SerialReference::describe() const {
+  const auto [lo, hi] = std::minmax_element(all_.begin(), all_.end());
+  if (*hi == *lo) return csvNumber(*lo, 4) + " s";
+  return csvNumber(*lo, 4) + " s to " + csvNumber(*hi, 4) + " s (" + std::to_string(all_.size()) +
+         " measurements, each run compared with the latest)";
 }
 
 RunReport runReal(const Scene& scene, const RenderSettings& settings,

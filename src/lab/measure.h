@@ -26,6 +26,32 @@ struct SerialMeasurement {
 SerialMeasurement measureSerial(const Scene& scene, const RenderSettings& settings, int runs,
                                 bool recordCostMap);
 
+// The serial time parallel runs are compared with, kept fresh. On a shared machine whose
+// speed drifted by a third within minutes, a serial time measured once at the start made
+// later speed-ups exceed what the workers could deliver; so seconds() renders serially again
+// (one thread) whenever the last measurement is older than maxAgeSeconds, and each parallel
+// run is compared with the serial render nearest to it in time.
+class SerialReference {
+ public:
+  // Measures once at once, recording the cost map.
+  SerialReference(const Scene& scene, const RenderSettings& settings, double maxAgeSeconds = 60);
+
+  double seconds();  // the current serial time, measured again first if stale
+  const CostMap& costMap() const { return *first_.costMap; }  // of the first measurement
+  const std::vector<double>& measurements() const { return all_; }
+  uint64_t rays() const { return first_.rays; }
+  // For summaries: "2.66 s" or "2.61 s to 2.74 s (5 measurements)".
+  std::string describe() const;
+
+ private:
+  Scene scene_;
+  RenderSettings settings_;
+  double maxAgeSeconds_;
+  SerialMeasurement first_;
+  std::vector<double> all_;
+  double measuredAt_ = 0;  // steady-clock seconds
+};
+
 // One real run under the local driver.
 RunReport runReal(const Scene& scene, const RenderSettings& settings,
                   const ParallelOptions& options, double serialSeconds,

@@ -33,8 +33,8 @@ void runSpeedIndex(ExperimentContext& cx) {
   double emulatedMasu = 0;
   for (double k : slowdowns) emulatedMasu += 1.0 / k;
 
-  cx.progress("serial time: " + std::to_string(cx.runs()) + " render(s), case " + testCase);
-  const SerialMeasurement serial = measureSerial(scene, settings, cx.runs(), false);
+  cx.progress("serial time, case " + testCase);
+  SerialReference serial(scene, settings);
 
   CsvTable workers(
       {"speed_index", "run", "worker", "slowdown", "speed_index_s", "relative_to_master", "error"});
@@ -53,7 +53,7 @@ void runSpeedIndex(ExperimentContext& cx) {
     for (int run = 1; run <= cx.runs(); ++run) {
       cx.progress(name + " speed index: run " + std::to_string(run) + " of " +
                   std::to_string(cx.runs()));
-      reports.push_back(runReal(scene, settings, options, serial.medianSeconds, master));
+      reports.push_back(runReal(scene, settings, options, serial.seconds(), master));
       const RunReport& r = reports.back();
       for (const WorkerReport& w : r.workers) {
         const double relative = w.speedIndexSeconds / master;
@@ -100,8 +100,8 @@ void runSpeedIndex(ExperimentContext& cx) {
   cx.say("Real runs: the reservoir (initial 80 %) on `" + cx.options().scenePath + "`, case " +
          testCase + ", " + std::to_string(scene.image.width) + "x" +
          std::to_string(scene.image.height) + ", median of " + std::to_string(cx.runs()) +
-         " run(s) per speed index; serial time " + csvNumber(serial.medianSeconds, 4) +
-         " s (one thread). " + cx.emulationNote() + "\n\n");
+         " run(s) per speed index; serial time " + serial.describe() + " s (one thread). " +
+         cx.emulationNote() + "\n\n");
   cx.say(markdownTable(table, {"speed_index", "master_speed_index_s", "elapsed_s", "speedup",
                                "efficiency", "masu", "asu", "emulated_masu", "mean_index_error"}));
   cx.say(
