@@ -65,9 +65,12 @@ Color Shader::direct(const Hit& hit, const Vec3& n, const Vec3& toEye, Rng& rng,
       const double visible = world_.transmittance(Ray{origin, toLight}, 0.0, distance);
       if (visible <= 0) continue;
       const double highlight = std::max(0.0, dot(reflect(-toLight, n), toEye));
+      // pow(+0, n) is +0 for n > 0 (scene files require n >= 1): the call is skipped then.
+      const bool lit = highlight > 0 || !(m.phongExponent > 0);
       const Color local = (m.diffuse * cosine) * m.color +
-                          Color(m.specular > 0 ? m.specular * std::pow(highlight, m.phongExponent)
-                                               : 0.0);
+                          Color(m.specular > 0 && lit
+                                    ? m.specular * std::pow(highlight, m.phongExponent)
+                                    : 0.0);
       sum += visible * light.color * local;
     }
     result += sum / samples;

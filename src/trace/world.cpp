@@ -8,8 +8,17 @@
 namespace prt {
 namespace {
 
-// Bits 1, 2, 4 set for a negative x, y, z direction component (as Bvh::traverse tests it).
-int octantOf(const Vec3& d) { return (d.x < 0 ? 1 : 0) | (d.y < 0 ? 2 : 0) | (d.z < 0 ? 4 : 0); }
+// Bits 1, 2, 4 set for a negative x, y, z direction component (as Bvh::traverse tests it:
+// -0 is not negative).
+int octantOf(const Vec3& d) {
+#if defined(__SSE2__)
+  const __m128d zero = _mm_setzero_pd();
+  return _mm_movemask_pd(_mm_cmplt_pd(_mm_loadu_pd(&d.x), zero)) |
+         (_mm_movemask_pd(_mm_cmplt_sd(_mm_load_sd(&d.z), zero)) & 1) << 2;
+#else
+  return (d.x < 0 ? 1 : 0) | (d.y < 0 ? 2 : 0) | (d.z < 0 ? 4 : 0);
+#endif
+}
 
 // The transmissive surfaces a shadow ray crosses, kept in rank order: the product is taken in
 // that order whatever order the BVH found them in. Rarely more than a handful.
@@ -62,7 +71,7 @@ World::World(Scene scene) : scene_(std::move(scene)) {
     }
     if (isBounded(o.shape)) boxes.push_back(items_.back().box);
   }
-  bvh_ = PairBvh(boxes);
+  bvh_ = QuadBvh(boxes);
   const Bvh order(boxes);
   ranks_.resize(8 * items_.size());
   for (int octant = 0; octant < 8; ++octant) {
@@ -78,37 +87,52 @@ bool World::intersect(const Ray& ray, double tMin, double tMax, Hit& hit) const 
   // and no bounded object's rank is below it; also 0 before any hit, when ties must lose).
   double nearest = tMax;
   uint32_t bestRank = 0;
-  const Shape* best = nullptr;
+  const Plane* bestPlane = nullptr;
+  const Item* bestItem = nullptr;
   for (const Plane& p : planes_) {
     const double t = planeDistance(p.point, p.normal, ray);
     if (t > tMin && t < nearest) {
       nearest = t;
-      hit.object = p.object;
-      best = &scene_.objects[p.object].shape;
+      bestPlane = &p;
     }
   }
-  const RayQuery q(ray);
   const uint32_t* ranks = ranks_.data() + octantOf(ray.direction) * items_.size();
-  bvh_.traverse(SlabRay(q), tMin, nearest, [&](uint32_t index) {
+  bvh_.traverse<true>(ray, tMin, nearest, [&](uint32_t index) {
     const Item& item = items_[index];
     const double t = item.sphere ? sphereRoots(item.a, item.b.x, ray).firstAfter(tMin)
                                  : boxSlabs(item.a, item.b, ray).firstAfter(tMin);
     // Farther, or as far but later in the order (NaN, no crossing, fails both tests).
     if (!(t < nearest || (t == nearest && ranks[index] < bestRank))) return nearest;
     // The paper's per-object box test, which the object had to pass before.
-    if (!hitsBounds(item.box, q, tMin, nearest)) return nearest;
+    if (!hitsBounds(item.box, RayQuery(ray), tMin, nearest)) return nearest;
     nearest = t;
     bestRank = ranks[index];
-    hit.object = item.object;
-    best = &scene_.objects[item.object].shape;
+    bestItem = &item;
     return nearest;
   });
-  if (best == nullptr) return false;
-  const Crossings c =
-      std::visit([&](const auto& s) { return prt::intersect(s, ray, tMin, tMax); }, *best);
-  hit.t = c.t[0];
-  hit.normal = c.normal[0];
-  hit.point = ray.at(hit.t);
+  if (bestItem != nullptr) {
+    // The normal as intersect(shape) gives it for its first crossing, which is this one.
+    hit.object = bestItem->object;
+    if (bestItem->sphere) {
+      const double inv = 1.0 / bestItem->b.x;
+      hit.normal = (ray.at(nearest) - bestItem->a) * inv;
+    } else {
+      const BoxSlabs s = boxSlabs(bestItem->a, bestItem->b, ray);
+      hit.normal = Vec3();
+      if (nearest == s.tNear) {
+        hit.normal[s.nearAxis] = s.nearSign;
+      } else {
+        hit.normal[s.farAxis] = s.farSign;
+      }
+    }
+  } else if (bestPlane != nullptr) {
+    hit.object = bestPlane->object;
+    hit.normal = bestPlane->normal;
+  } else {
+    return false;
+  }
+  hit.t = nearest;
+  hit.point = ray.at(nearest);
   return true;
 }
 
@@ -121,11 +145,10 @@ double World::transmittance(const Ray& ray, double tMin, double distance) const 
       if (passed == 0) return 0;
     }
   }
-  const RayQuery q(ray);
   const uint32_t* ranks = ranks_.data() + octantOf(ray.direction) * items_.size();
   Attenuators attenuators;
   bool opaque = false;
-  bvh_.traverse(SlabRay(q), tMin, distance, [&](uint32_t index) {
+  bvh_.traverse<false>(ray, tMin, distance, [&](uint32_t index) {
     const Item& item = items_[index];
     int crossings = 0;
     if (item.sphere) {
@@ -137,7 +160,7 @@ double World::transmittance(const Ray& ray, double tMin, double distance) const 
       if (!s.hit) return distance;
       crossings = s.nearCrosses(tMin, distance) + s.farCrosses(tMin, distance);
     }
-    if (crossings == 0 || !hitsBounds(item.box, q, tMin, distance)) return distance;
+    if (crossings == 0 || !hitsBounds(item.box, RayQuery(ray), tMin, distance)) return distance;
     if (item.transmissivity == 0) {  // nothing passes, whatever else is crossed
       opaque = true;
       return -1.0;

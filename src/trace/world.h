@@ -8,12 +8,12 @@
 // which of two hits at exactly the same distance wins, and the rounding of a product of
 // several transmissivities. Both follow a fixed order per ray-direction octant, the order of
 // the original binary BVH (Bvh::visitOrder, planes first): images are bit-identical to those
-// rendered before the faster PairBvh replaced it for traversal.
+// rendered before the faster QuadBvh replaced it for traversal.
 
 #include <cstdint>
 #include <vector>
 
-#include "trace/pair_bvh.h"
+#include "trace/quad_bvh.h"
 #include "trace/scene.h"
 
 namespace prt {
@@ -55,7 +55,7 @@ class World {
   };
 
   Scene scene_;
-  PairBvh bvh_;
+  QuadBvh bvh_;
   std::vector<Item> items_;
   std::vector<Plane> planes_;
   // ranks_[octant * items + item]: the item's place in the tie-breaking order, from 1.

@@ -1,4 +1,4 @@
-#include "trace/pair_bvh.h"
+#include "trace/quad_bvh.h"
 
 #include <gtest/gtest.h>
 
@@ -32,26 +32,33 @@ Ray randomRay(Rng& rng) {
 
 // Every item whose box hitsBounds accepts is visited, for each size of tree (including the
 // bottom-up built small ones and the top-down built large ones).
-TEST(PairBvhTest, VisitsEveryItemWhoseBoxIsHit) {
+TEST(QuadBvhTest, VisitsEveryItemWhoseBoxIsHit) {
   for (int count : {1, 2, 3, 7, 40, 300}) {
     const std::vector<Bounds> boxes = randomBoxes(count, static_cast<uint64_t>(count));
-    const PairBvh bvh(boxes);
+    const QuadBvh bvh(boxes);
     Rng rng(3);
     for (int i = 0; i < 500; ++i) {
       const Ray ray = randomRay(rng);
       const RayQuery q(ray);
       const double tMax = rng.uniform() < 0.5 ? 1e30 : rng.uniform() * 20;
-      std::vector<uint32_t> visited;
-      bvh.traverse(SlabRay(q), 0, tMax, [&](uint32_t item) {
-        visited.push_back(item);
-        return tMax;
-      });
-      std::sort(visited.begin(), visited.end());
-      EXPECT_TRUE(std::adjacent_find(visited.begin(), visited.end()) == visited.end());
-      for (uint32_t item = 0; item < boxes.size(); ++item) {
-        if (hitsBounds(boxes[item], q, 0, tMax)) {
-          EXPECT_TRUE(std::binary_search(visited.begin(), visited.end(), item))
-              << count << " items, ray " << i << ", item " << item;
+      for (const bool ordered : {false, true}) {
+        std::vector<uint32_t> visited;
+        auto record = [&](uint32_t item) {
+          visited.push_back(item);
+          return tMax;
+        };
+        if (ordered) {
+          bvh.traverse<true>(q.ray, 0, tMax, record);
+        } else {
+          bvh.traverse<false>(q.ray, 0, tMax, record);
+        }
+        std::sort(visited.begin(), visited.end());
+        EXPECT_TRUE(std::adjacent_find(visited.begin(), visited.end()) == visited.end());
+        for (uint32_t item = 0; item < boxes.size(); ++item) {
+          if (hitsBounds(boxes[item], q, 0, tMax)) {
+            EXPECT_TRUE(std::binary_search(visited.begin(), visited.end(), item))
+                << count << " items, ray " << i << ", item " << item;
+          }
         }
       }
     }
@@ -60,9 +67,9 @@ TEST(PairBvhTest, VisitsEveryItemWhoseBoxIsHit) {
 
 // Shrinking tMax as boxes are entered finds the nearest box entry, as brute force does, and
 // a negative return stops the traversal at once.
-TEST(PairBvhTest, ShrinkingSearchFindsNearestAndStops) {
+TEST(QuadBvhTest, ShrinkingSearchFindsNearestAndStops) {
   const std::vector<Bounds> boxes = randomBoxes(200, 11);
-  const PairBvh bvh(boxes);
+  const QuadBvh bvh(boxes);
   Rng rng(4);
   for (int i = 0; i < 1000; ++i) {
     const RayQuery q(randomRay(rng));
@@ -80,7 +87,7 @@ TEST(PairBvhTest, ShrinkingSearchFindsNearestAndStops) {
       }
     }
     double nearest = 1e30;
-    bvh.traverse(SlabRay(q), 0, nearest, [&](uint32_t item) {
+    bvh.traverse<true>(q.ray, 0, nearest, [&](uint32_t item) {
       double lo = 0, hi = nearest;
       if (!hitsBounds(boxes[item], q, 0, hi)) return nearest;
       for (int k = 0; k < 200 && hi - lo > 1e-12; ++k) {
@@ -92,7 +99,7 @@ TEST(PairBvhTest, ShrinkingSearchFindsNearestAndStops) {
     });
     EXPECT_NEAR(nearest, expected, 1e-9);
     int visits = 0;
-    bvh.traverse(SlabRay(q), 0, 1e30, [&](uint32_t) {
+    bvh.traverse<true>(q.ray, 0, 1e30, [&](uint32_t) {
       ++visits;
       return -1.0;
     });
@@ -102,35 +109,35 @@ TEST(PairBvhTest, ShrinkingSearchFindsNearestAndStops) {
 
 // Degenerate inputs (all boxes equal, boxes nested in a chain) keep the depth, and so the
 // traversal stack, bounded.
-TEST(PairBvhTest, DepthStaysBoundedOnDegenerateInput) {
+TEST(QuadBvhTest, DepthStaysBoundedOnDegenerateInput) {
   const std::vector<Bounds> same(5000, Bounds{{0, 0, 0}, {1, 1, 1}});
-  const PairBvh a(same);
+  const QuadBvh a(same);
   EXPECT_LE(a.depth(), 128);
   std::vector<Bounds> nested;
   for (int i = 0; i < 3000; ++i) {
     const double s = std::ldexp(1.0, i % 60) * (1 + i * 1e-6);
     nested.push_back(Bounds{{0, 0, 0}, {s, s, s}});
   }
-  const PairBvh b(nested);
+  const QuadBvh b(nested);
   EXPECT_LE(b.depth(), 128);
   int visits = 0;
-  b.traverse(SlabRay(RayQuery(Ray{{0.5, 0.5, -1}, {0, 0, 1}})), 0, 1e300, [&](uint32_t) {
+  b.traverse<true>(Ray{{0.5, 0.5, -1}, {0, 0, 1}}, 0, 1e300, [&](uint32_t) {
     ++visits;
     return 1e300;
   });
   EXPECT_EQ(visits, 3000);
 }
 
-TEST(PairBvhTest, EmptyAndSingle) {
-  const PairBvh empty(std::vector<Bounds>{});
+TEST(QuadBvhTest, EmptyAndSingle) {
+  const QuadBvh empty(std::vector<Bounds>{});
   int visits = 0;
-  empty.traverse(SlabRay(RayQuery(Ray{{0, 0, 0}, {0, 0, 1}})), 0, 1e30, [&](uint32_t) {
+  empty.traverse<false>(Ray{{0, 0, 0}, {0, 0, 1}}, 0, 1e30, [&](uint32_t) {
     ++visits;
     return 1e30;
   });
   EXPECT_EQ(visits, 0);
-  const PairBvh one(std::vector<Bounds>{Bounds{{-1, -1, 2}, {1, 1, 3}}});
-  one.traverse(SlabRay(RayQuery(Ray{{0, 0, 0}, {0, 0, 1}})), 0, 1e30, [&](uint32_t item) {
+  const QuadBvh one(std::vector<Bounds>{Bounds{{-1, -1, 2}, {1, 1, 3}}});
+  one.traverse<true>(Ray{{0, 0, 0}, {0, 0, 1}}, 0, 1e30, [&](uint32_t item) {
     EXPECT_EQ(item, 0u);
     ++visits;
     return 1e30;
