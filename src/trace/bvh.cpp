@@ -22,6 +22,26 @@ Bvh::Bvh(const std::vector<Bounds>& bounds) {
   build(bounds, 0, static_cast<uint32_t>(bounds.size()));
 }
 
+std::vector<uint32_t> Bvh::visitOrder(int octant) const {
+  std::vector<uint32_t> order;
+  if (nodes_.empty()) return order;
+  // traverse() with every box hit.
+  std::vector<uint32_t> stack{0};
+  while (!stack.empty()) {
+    const Node& n = nodes_[stack.back()];
+    const uint32_t node = stack.back();
+    stack.pop_back();
+    if (n.itemCount > 0) {
+      for (uint32_t i = 0; i < n.itemCount; ++i) order.push_back(items_[n.firstOrSecondChild + i]);
+    } else {
+      const bool reversed = (octant >> n.axis) & 1;
+      stack.push_back(reversed ? node + 1 : n.firstOrSecondChild);
+      stack.push_back(reversed ? n.firstOrSecondChild : node + 1);
+    }
+  }
+  return order;
+}
+
 uint32_t Bvh::build(const std::vector<Bounds>& bounds, uint32_t begin, uint32_t end) {
   const uint32_t index = static_cast<uint32_t>(nodes_.size());
   nodes_.push_back({});

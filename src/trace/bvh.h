@@ -25,6 +25,11 @@ class Bvh {
 
   size_t nodeCount() const { return nodes_.size(); }
 
+  // The order in which `traverse` visits the items of the leaves it reaches, for a ray whose
+  // direction is negative along the axes whose bits (1: x, 2: y, 4: z) are set in `octant`:
+  // child order depends on nothing else.
+  std::vector<uint32_t> visitOrder(int octant) const;
+
  private:
   struct Node {
     Bounds box;

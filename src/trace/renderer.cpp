@@ -35,7 +35,7 @@ Color Renderer::renderPixel(uint64_t pixelIndex, uint64_t& rays) const {
     const Ray ray = camera_.generateRay(x + dx, y + dy);
     sum += shader_.trace(ray, 0, rng.child(1), rays);
   }
-  return sum / n;
+  return meanOf(sum, n);
 }
 
 namespace {

@@ -9,6 +9,13 @@
 
 namespace prt {
 
+// Stratum i of n, jittered by u in [0, 1): (i + u) / n. With a single stratum that is u
+// itself, bit for bit, and the division (slow) is skipped.
+inline double stratum(int i, int n, double u) { return n == 1 ? u : (i + u) / n; }
+
+// The mean of n samples summing to `sum`; sum itself, bit for bit, when n is 1.
+inline Vec3 meanOf(const Vec3& sum, int n) { return n == 1 ? sum : sum / n; }
+
 // A direction uniformly distributed over the cone of half-angle `halfAngleRadians` around unit
 // vector `axis`; u1, u2 in [0, 1).
 inline Vec3 sampleCone(const Vec3& axis, double halfAngleRadians, double u1, double u2) {

@@ -48,11 +48,11 @@ Color Shader::direct(const Hit& hit, const Vec3& n, const Vec3& toEye, Rng& rng,
         target = p->position;
       } else if (const auto* sph = std::get_if<SphereLight>(&light.shape)) {
         const Vec3 axis = normalize(sph->center - hit.point);
-        const double u1 = (s + rng.uniform()) / samples;  // stratified over the samples
+        const double u1 = stratum(s, samples, rng.uniform());  // stratified over the samples
         target = sampleDisc(sph->center, axis, sph->radius, u1, rng.uniform());
       } else {
         const auto& rect = std::get<RectLight>(light.shape);
-        const double u1 = (s + rng.uniform()) / samples;
+        const double u1 = stratum(s, samples, rng.uniform());
         target = rect.corner + u1 * rect.edge1 + rng.uniform() * rect.edge2;
       }
       Vec3 toLight = target - origin;
@@ -65,12 +65,15 @@ Color Shader::direct(const Hit& hit, const Vec3& n, const Vec3& toEye, Rng& rng,
       const double visible = world_.transmittance(Ray{origin, toLight}, 0.0, distance);
       if (visible <= 0) continue;
       const double highlight = std::max(0.0, dot(reflect(-toLight, n), toEye));
+      // pow(+0, n) is +0 for n > 0 (scene files require n >= 1): the call is skipped then.
+      const bool lit = highlight > 0 || !(m.phongExponent > 0);
       const Color local = (m.diffuse * cosine) * m.color +
-                          Color(m.specular > 0 ? m.specular * std::pow(highlight, m.phongExponent)
-                                               : 0.0);
+                          Color(m.specular > 0 && lit
+                                    ? m.specular * std::pow(highlight, m.phongExponent)
+                                    : 0.0);
       sum += visible * light.color * local;
     }
-    result += sum / samples;
+    result += meanOf(sum, samples);
   }
   return result;
 }
@@ -82,13 +85,13 @@ Color Shader::spawn(const Vec3& origin, const Vec3& direction, double spreadRadi
   const int n = settings_.drtRate;
   for (int i = 0; i < n; ++i) {
     Rng branch = rng.child(static_cast<uint64_t>(i));
-    const double u1 = (i + branch.uniform()) / n;  // stratified in the cone's polar angle
+    const double u1 = stratum(i, n, branch.uniform());  // stratified in the cone's polar angle
     Vec3 d = sampleCone(direction, spreadRadians, u1, branch.uniform());
     // A perturbed ray must stay on the side of the surface it was meant for.
     if ((dot(d, normal) > 0) != above) d = direction;
     sum += trace(Ray{origin, d}, depth, branch, rays);
   }
-  return sum / n;
+  return meanOf(sum, n);
 }
 
 Color Shader::trace(const Ray& ray, int depth, Rng rng, uint64_t& rays) const {

@@ -3,6 +3,13 @@
 // plane. Each reports every crossing of the surface inside (tMin, tMax), nearest first, with
 // the outward normal at it: the nearest answers camera and bounce rays, all of them let shadow
 // rays be attenuated by each transmissive surface they cross.
+//
+// The arithmetic lives in the inline kernels below (sphereRoots, boxSlabs), shared by
+// `intersect` and by World's hot paths, which need only the distances: both paths then compute
+// every crossing bit for bit alike, and the normal only for the hit that is kept.
+
+#include <cmath>
+#include <limits>
 
 #include "core/ray.h"
 #include "trace/bounds.h"
@@ -24,5 +31,90 @@ Crossings intersect(const PlaneShape& p, const Ray& ray, double tMin, double tMa
 // Bounds of a shape; planes are unbounded and return an empty (inverted) box.
 Bounds boundsOf(const Shape& shape);
 bool isBounded(const Shape& shape);
+
+// --- kernels ---------------------------------------------------------------------------------
+
+// Where the ray's line meets a sphere: both roots, t0 <= t1, or hit = false.
+struct SphereRoots {
+  bool hit = false;
+  double t0 = 0, t1 = 0;
+
+  // The first crossing beyond tMin, which `intersect` reports first whatever its tMax (if
+  // below tMax); NaN if none.
+  double firstAfter(double tMin) const {
+    if (!hit) return std::numeric_limits<double>::quiet_NaN();
+    if (t0 > tMin) return t0;
+    return t1 > tMin ? t1 : std::numeric_limits<double>::quiet_NaN();
+  }
+};
+
+inline SphereRoots sphereRoots(const Vec3& center, double radius, const Ray& ray) {
+  // Geometric form (Hearn & Baker): robust when the sphere is far away relative to its size.
+  const Vec3 oc = center - ray.origin;
+  const double tca = dot(oc, ray.direction);
+  const Vec3 perp = oc - tca * ray.direction;
+  const double d2 = dot(perp, perp);
+  const double r2 = radius * radius;
+  if (d2 > r2) return {};
+  const double thc = std::sqrt(r2 - d2);
+  return {true, tca - thc, tca + thc};
+}
+
+// Where the ray's line enters and leaves a box, and through which faces (axis -1: no face).
+struct BoxSlabs {
+  bool hit = false;
+  double tNear = -std::numeric_limits<double>::infinity();
+  double tFar = std::numeric_limits<double>::infinity();
+  int nearAxis = -1, farAxis = -1;
+  double nearSign = 0, farSign = 0;  // the face's outward normal is sign * unit(axis)
+
+  // Whether each crossing counts: the entry, then the exit (a distinct point after it).
+  bool nearCrosses(double tMin, double tMax) const {
+    return nearAxis >= 0 && tNear > tMin && tNear < tMax;
+  }
+  bool farCrosses(double tMin, double tMax) const {
+    return farAxis >= 0 && tFar > tMin && tFar < tMax && tFar > tNear;
+  }
+  // As SphereRoots::firstAfter.
+  double firstAfter(double tMin) const {
+    if (!hit) return std::numeric_limits<double>::quiet_NaN();
+    if (nearAxis >= 0 && tNear > tMin) return tNear;
+    if (farAxis >= 0 && tFar > tMin && tFar > tNear) return tFar;
+    return std::numeric_limits<double>::quiet_NaN();
+  }
+};
+
+inline BoxSlabs boxSlabs(const Vec3& lo, const Vec3& hi, const Ray& ray) {
+  BoxSlabs s;
+  for (int axis = 0; axis < 3; ++axis) {
+    const double o = ray.origin[axis];
+    const double d = ray.direction[axis];
+    if (d == 0.0) {
+      if (o < lo[axis] || o > hi[axis]) return s;  // parallel to and outside the slab
+      continue;
+    }
+    const double inv = 1.0 / d;
+    double t0 = (lo[axis] - o) * inv;
+    double t1 = (hi[axis] - o) * inv;
+    // Entering through the min face when travelling +, through the max face when travelling -.
+    double s0 = -1, s1 = 1;
+    if (t0 > t1) {
+      std::swap(t0, t1);
+      std::swap(s0, s1);
+    }
+    if (t0 > s.tNear) { s.tNear = t0; s.nearAxis = axis; s.nearSign = s0; }
+    if (t1 < s.tFar) { s.tFar = t1; s.farAxis = axis; s.farSign = s1; }
+    if (s.tNear > s.tFar) return s;
+  }
+  s.hit = true;
+  return s;
+}
+
+// The plane's crossing distance, or NaN when the ray arrives from behind or runs parallel.
+inline double planeDistance(const Vec3& point, const Vec3& normal, const Ray& ray) {
+  const double denom = dot(ray.direction, normal);
+  if (denom >= 0.0) return std::numeric_limits<double>::quiet_NaN();
+  return dot(point - ray.origin, normal) / denom;
+}
 
 }  // namespace prt

@@ -1,67 +1,174 @@
 #include "trace/world.h"
 
+#include <algorithm>
+
+#include "trace/bvh.h"
 #include "trace/shapes.h"
 
 namespace prt {
 namespace {
 
-Crossings crossings(const Shape& shape, const Ray& ray, double tMin, double tMax) {
-  return std::visit([&](const auto& s) { return intersect(s, ray, tMin, tMax); }, shape);
+// Bits 1, 2, 4 set for a negative x, y, z direction component (as Bvh::traverse tests it:
+// -0 is not negative).
+int octantOf(const Vec3& d) {
+#if defined(__SSE2__)
+  const __m128d zero = _mm_setzero_pd();
+  return _mm_movemask_pd(_mm_cmplt_pd(_mm_loadu_pd(&d.x), zero)) |
+         (_mm_movemask_pd(_mm_cmplt_sd(_mm_load_sd(&d.z), zero)) & 1) << 2;
+#else
+  return (d.x < 0 ? 1 : 0) | (d.y < 0 ? 2 : 0) | (d.z < 0 ? 4 : 0);
+#endif
 }
+
+// The transmissive surfaces a shadow ray crosses, kept in rank order: the product is taken in
+// that order whatever order the BVH found them in. Rarely more than a handful.
+class Attenuators {
+ public:
+  void add(uint32_t rank, int crossings, double transmissivity) {
+    if (count_ == kInline && spill_.empty()) spill_.assign(inline_, inline_ + kInline);
+    Entry* data = spill_.empty() ? inline_ : (spill_.push_back({}), spill_.data());
+    uint32_t i = count_++;
+    for (; i > 0 && data[i - 1].rank > rank; --i) data[i] = data[i - 1];
+    data[i] = {rank, crossings, transmissivity};
+  }
+  // Multiplies `passed` by every transmissivity, once per crossing, as the objects were
+  // visited one by one before: stopping once nothing passes.
+  double apply(double passed) const {
+    const Entry* data = spill_.empty() ? inline_ : spill_.data();
+    for (uint32_t e = 0; e < count_; ++e) {
+      for (int i = 0; i < data[e].crossings && passed > 0; ++i) passed *= data[e].transmissivity;
+    }
+    return passed;
+  }
+
+ private:
+  struct Entry {
+    uint32_t rank;
+    int crossings;
+    double transmissivity;
+  };
+  static constexpr uint32_t kInline = 16;
+  Entry inline_[kInline];
+  std::vector<Entry> spill_;
+  uint32_t count_ = 0;
+};
 
 }  // namespace
 
 World::World(Scene scene) : scene_(std::move(scene)) {
+  std::vector<Bounds> boxes;
   for (uint32_t i = 0; i < scene_.objects.size(); ++i) {
-    const Shape& shape = scene_.objects[i].shape;
-    if (isBounded(shape)) {
-      bounded_.push_back(i);
-      boxes_.push_back(boundsOf(shape));
+    const Object& o = scene_.objects[i];
+    const double transmissivity = o.material.transmissivity;
+    if (const auto* s = std::get_if<SphereShape>(&o.shape)) {
+      items_.push_back({s->center, Vec3(s->radius, 0, 0), boundsOf(o.shape), transmissivity, i,
+                        true});
+    } else if (const auto* b = std::get_if<BoxShape>(&o.shape)) {
+      items_.push_back({b->min, b->max, boundsOf(o.shape), transmissivity, i, false});
     } else {
-      unbounded_.push_back(i);
+      const auto& p = std::get<PlaneShape>(o.shape);
+      planes_.push_back({p.point, p.normal, transmissivity, i});
+    }
+    if (isBounded(o.shape)) boxes.push_back(items_.back().box);
+  }
+  bvh_ = QuadBvh(boxes);
+  const Bvh order(boxes);
+  ranks_.resize(8 * items_.size());
+  for (int octant = 0; octant < 8; ++octant) {
+    const std::vector<uint32_t> visit = order.visitOrder(octant);
+    for (uint32_t position = 0; position < visit.size(); ++position) {
+      ranks_[octant * items_.size() + visit[position]] = position + 1;
     }
   }
-  bvh_ = Bvh(boxes_);
 }
 
 bool World::intersect(const Ray& ray, double tMin, double tMax, Hit& hit) const {
-  bool found = false;
-  auto consider = [&](uint32_t object) {
-    const Crossings c = crossings(scene_.objects[object].shape, ray, tMin, tMax);
-    if (c.count > 0) {
-      tMax = c.t[0];
-      hit.t = c.t[0];
-      hit.normal = c.normal[0];
-      hit.object = object;
-      found = true;
+  // The best so far: its distance `nearest`, and its rank (0 for a plane: planes came first,
+  // and no bounded object's rank is below it; also 0 before any hit, when ties must lose).
+  double nearest = tMax;
+  uint32_t bestRank = 0;
+  const Plane* bestPlane = nullptr;
+  const Item* bestItem = nullptr;
+  for (const Plane& p : planes_) {
+    const double t = planeDistance(p.point, p.normal, ray);
+    if (t > tMin && t < nearest) {
+      nearest = t;
+      bestPlane = &p;
     }
-  };
-  for (uint32_t object : unbounded_) consider(object);
-  const RayQuery q(ray);
-  bvh_.traverse(q, tMin, tMax, [&](uint32_t item) {
-    if (hitsBounds(boxes_[item], q, tMin, tMax)) consider(bounded_[item]);
-    return tMax;
+  }
+  const uint32_t* ranks = ranks_.data() + octantOf(ray.direction) * items_.size();
+  bvh_.traverse<true>(ray, tMin, nearest, [&](uint32_t index) {
+    const Item& item = items_[index];
+    const double t = item.sphere ? sphereRoots(item.a, item.b.x, ray).firstAfter(tMin)
+                                 : boxSlabs(item.a, item.b, ray).firstAfter(tMin);
+    // Farther, or as far but later in the order (NaN, no crossing, fails both tests).
+    if (!(t < nearest || (t == nearest && ranks[index] < bestRank))) return nearest;
+    // The paper's per-object box test, which the object had to pass before.
+    if (!hitsBounds(item.box, RayQuery(ray), tMin, nearest)) return nearest;
+    nearest = t;
+    bestRank = ranks[index];
+    bestItem = &item;
+    return nearest;
   });
-  if (found) hit.point = ray.at(hit.t);
-  return found;
+  if (bestItem != nullptr) {
+    // The normal as intersect(shape) gives it for its first crossing, which is this one.
+    hit.object = bestItem->object;
+    if (bestItem->sphere) {
+      const double inv = 1.0 / bestItem->b.x;
+      hit.normal = (ray.at(nearest) - bestItem->a) * inv;
+    } else {
+      const BoxSlabs s = boxSlabs(bestItem->a, bestItem->b, ray);
+      hit.normal = Vec3();
+      if (nearest == s.tNear) {
+        hit.normal[s.nearAxis] = s.nearSign;
+      } else {
+        hit.normal[s.farAxis] = s.farSign;
+      }
+    }
+  } else if (bestPlane != nullptr) {
+    hit.object = bestPlane->object;
+    hit.normal = bestPlane->normal;
+  } else {
+    return false;
+  }
+  hit.t = nearest;
+  hit.point = ray.at(nearest);
+  return true;
 }
 
 double World::transmittance(const Ray& ray, double tMin, double distance) const {
   double passed = 1.0;
-  auto attenuate = [&](uint32_t object) {
-    const Crossings c = crossings(scene_.objects[object].shape, ray, tMin, distance);
-    for (int i = 0; i < c.count && passed > 0; ++i) passed *= material(object).transmissivity;
-  };
-  for (uint32_t object : unbounded_) {
-    attenuate(object);
-    if (passed == 0) return 0;
+  for (const Plane& p : planes_) {
+    const double t = planeDistance(p.point, p.normal, ray);
+    if (t > tMin && t < distance) {
+      passed *= p.transmissivity;
+      if (passed == 0) return 0;
+    }
   }
-  const RayQuery q(ray);
-  bvh_.traverse(q, tMin, distance, [&](uint32_t item) {
-    if (hitsBounds(boxes_[item], q, tMin, distance)) attenuate(bounded_[item]);
-    return passed == 0 ? -1.0 : distance;
+  const uint32_t* ranks = ranks_.data() + octantOf(ray.direction) * items_.size();
+  Attenuators attenuators;
+  bool opaque = false;
+  bvh_.traverse<false>(ray, tMin, distance, [&](uint32_t index) {
+    const Item& item = items_[index];
+    int crossings = 0;
+    if (item.sphere) {
+      const SphereRoots r = sphereRoots(item.a, item.b.x, ray);
+      if (!r.hit) return distance;
+      crossings = (r.t0 > tMin && r.t0 < distance) + (r.t1 > tMin && r.t1 < distance);
+    } else {
+      const BoxSlabs s = boxSlabs(item.a, item.b, ray);
+      if (!s.hit) return distance;
+      crossings = s.nearCrosses(tMin, distance) + s.farCrosses(tMin, distance);
+    }
+    if (crossings == 0 || !hitsBounds(item.box, RayQuery(ray), tMin, distance)) return distance;
+    if (item.transmissivity == 0) {  // nothing passes, whatever else is crossed
+      opaque = true;
+      return -1.0;
+    }
+    attenuators.add(ranks[index], crossings, item.transmissivity);
+    return distance;
   });
-  return passed;
+  return opaque ? 0.0 : attenuators.apply(passed);
 }
 
 }  // namespace prt

@@ -3,11 +3,17 @@
 // side list) — answering the two questions the shader asks: the nearest surface along a ray,
 // and how much light gets through along a shadow ray. Immutable after construction; safe to
 // share between threads.
+//
+// Results do not depend on the order the BVH happens to offer objects in. Two things would:
+// which of two hits at exactly the same distance wins, and the rounding of a product of
+// several transmissivities. Both follow a fixed order per ray-direction octant, the order of
+// the original binary BVH (Bvh::visitOrder, planes first): images are bit-identical to those
+// rendered before the faster QuadBvh replaced it for traversal.
 
 #include <cstdint>
 #include <vector>
 
-#include "trace/bvh.h"
+#include "trace/quad_bvh.h"
 #include "trace/scene.h"
 
 namespace prt {
@@ -34,11 +40,26 @@ class World {
   double transmittance(const Ray& ray, double tMin, double distance) const;
 
  private:
+  // A bounded object as the BVH's item, flattened for the hot loops.
+  struct Item {
+    Vec3 a, b;         // sphere: centre, (radius, 0, 0); box: min, max
+    Bounds box;        // for the paper's per-object box test
+    double transmissivity = 0;
+    uint32_t object = 0;
+    bool sphere = false;
+  };
+  struct Plane {
+    Vec3 point, normal;
+    double transmissivity = 0;
+    uint32_t object = 0;
+  };
+
   Scene scene_;
-  Bvh bvh_;
-  std::vector<uint32_t> bounded_;    // BVH item -> object index
-  std::vector<Bounds> boxes_;        // BVH item -> bounds, for the paper's per-object test
-  std::vector<uint32_t> unbounded_;  // planes
+  QuadBvh bvh_;
+  std::vector<Item> items_;
+  std::vector<Plane> planes_;
+  // ranks_[octant * items + item]: the item's place in the tie-breaking order, from 1.
+  std::vector<uint32_t> ranks_;
 };
 
 }  // namespace prt

@@ -1,0 +1,217 @@
+#include "trace/quad_bvh.h"
+
+#include <algorithm>
+#include <numeric>
+
+#include "core/check.h"
+
+namespace prt {
+namespace {
+
+constexpr uint32_t kItem = 1u << 31;
+
+// Beyond this depth, splits are made at the median: bounds the depth to
+// kSahDepth + log2(items) + kClusterItems whatever the boxes.
+constexpr int kSahDepth = 30;
+// Sets this small are built bottom-up instead, merging the pair of least bounding area first
+// (Walter et al. 2008): better than any split plane with a few large or oddly placed objects
+// (walls, pedestals), and cheap at this size (cubic in the count).
+constexpr uint32_t kClusterItems = 48;
+
+// The binary tree the four-way one is collapsed from.
+class BinaryTree {
+ public:
+  struct Node {
+    Bounds box[2];
+    uint32_t child[2] = {0, 0};  // kItem set: an item; otherwise a node
+  };
+
+  explicit BinaryTree(const std::vector<Bounds>& bounds) : bounds_(bounds), items_(bounds.size()) {
+    std::iota(items_.begin(), items_.end(), 0u);
+    Bounds box;
+    build(0, static_cast<uint32_t>(items_.size()), 1, box);
+  }
+
+  std::vector<Node> nodes;
+  int depth = 0;
+
+ private:
+  // Builds the subtree of items_[begin, end), returns the reference to it and its bounds.
+  uint32_t build(uint32_t begin, uint32_t end, int level, Bounds& box);
+  uint32_t cluster(uint32_t begin, uint32_t end, int level, Bounds& box);
+  uint32_t addNode(const Bounds& a, uint32_t childA, const Bounds& b, uint32_t childB);
+
+  const std::vector<Bounds>& bounds_;
+  std::vector<uint32_t> items_;
+};
+
+uint32_t BinaryTree::build(uint32_t begin, uint32_t end, int level, Bounds& box) {
+  const uint32_t count = end - begin;
+  if (count == 1) {
+    box = bounds_[items_[begin]];
+    return items_[begin] | kItem;
+  }
+  if (count <= kClusterItems) return cluster(begin, end, level, box);
+  depth = std::max(depth, level);
+
+  // Sort along each axis by centroid (ties by index, for a build independent of the sort
+  // implementation) and sweep for the split of least area-weighted cost.
+  auto byCentroid = [&](int axis) {
+    std::sort(items_.begin() + begin, items_.begin() + end, [&](uint32_t a, uint32_t b) {
+      const double ca = bounds_[a].lo[axis] + bounds_[a].hi[axis];
+      const double cb = bounds_[b].lo[axis] + bounds_[b].hi[axis];
+      return ca < cb || (ca == cb && a < b);
+    });
+  };
+  int bestAxis = 0;
+  uint32_t bestSplit = count / 2;  // items before it go left
+  if (level <= kSahDepth) {
+    double bestCost = std::numeric_limits<double>::infinity();
+    std::vector<double> rightArea(count);
+    for (int axis = 0; axis < 3; ++axis) {
+      byCentroid(axis);
+      Bounds right;
+      for (uint32_t i = count; i-- > 1;) {
+        right.extend(bounds_[items_[begin + i]]);
+        rightArea[i] = right.surfaceArea();
+      }
+      Bounds left;
+      for (uint32_t i = 1; i < count; ++i) {
+        left.extend(bounds_[items_[begin + i - 1]]);
+        const double cost = i * left.surfaceArea() + (count - i) * rightArea[i];
+        if (cost < bestCost) {
+          bestCost = cost;
+          bestAxis = axis;
+          bestSplit = i;
+        }
+      }
+    }
+  } else {
+    Bounds centroids;
+    for (uint32_t i = begin; i < end; ++i) centroids.extend(bounds_[items_[i]].centroid());
+    bestAxis = centroids.longestAxis();
+  }
+  byCentroid(bestAxis);
+
+  const auto index = static_cast<uint32_t>(nodes.size());
+  nodes.emplace_back();
+  Bounds left, right;
+  const uint32_t first = build(begin, begin + bestSplit, level + 1, left);
+  const uint32_t second = build(begin + bestSplit, end, level + 1, right);
+  nodes[index] = {{left, right}, {first, second}};
+  box = left;
+  box.extend(right);
+  return index;
+}
+
+uint32_t BinaryTree::cluster(uint32_t begin, uint32_t end, int level, Bounds& box) {
+  struct Cluster {
+    Bounds box;
+    int left = -1, right = -1;  // merged clusters; -1 for an item
+    uint32_t item = 0;
+  };
+  std::vector<Cluster> all;
+  std::vector<int> open;  // clusters not yet merged
+  for (uint32_t i = begin; i < end; ++i) {
+    open.push_back(static_cast<int>(all.size()));
+    all.push_back({bounds_[items_[i]], -1, -1, items_[i]});
+  }
+  while (open.size() > 1) {
+    double best = std::numeric_limits<double>::infinity();
+    size_t bi = 0, bj = 1;
+    for (size_t i = 0; i < open.size(); ++i) {
+      for (size_t j = i + 1; j < open.size(); ++j) {
+        Bounds u = all[open[i]].box;
+        u.extend(all[open[j]].box);
+        const double area = u.surfaceArea();
+        if (area < best) {
+          best = area;
+          bi = i;
+          bj = j;
+        }
+      }
+    }
+    Cluster merged;
+    merged.box = all[open[bi]].box;
+    merged.box.extend(all[open[bj]].box);
+    merged.left = open[bi];
+    merged.right = open[bj];
+    open[bi] = static_cast<int>(all.size());
+    open.erase(open.begin() + static_cast<std::ptrdiff_t>(bj));
+    all.push_back(merged);
+  }
+  // Emit parents before children, as the top-down build does.
+  auto emit = [&](auto&& self, int c, int at) -> uint32_t {
+    if (all[c].left < 0) return all[c].item | kItem;
+    depth = std::max(depth, at);
+    const auto index = static_cast<uint32_t>(nodes.size());
+    nodes.emplace_back();
+    const uint32_t first = self(self, all[c].left, at + 1);
+    const uint32_t second = self(self, all[c].right, at + 1);
+    nodes[index] = {{all[all[c].left].box, all[all[c].right].box}, {first, second}};
+    return index;
+  };
+  box = all[open[0]].box;
+  return emit(emit, open[0], level);
+}
+
+}  // namespace
+
+QuadBvh::QuadBvh(const std::vector<Bounds>& bounds) {
+  if (bounds.empty()) return;
+  PRT_CHECK(bounds.size() < kItem);
+  double maxCoordinate = 0;
+  for (const Bounds& b : bounds) {
+    for (int a = 0; a < 3; ++a) {
+      maxCoordinate = std::max({maxCoordinate, std::abs(b.lo[a]), std::abs(b.hi[a])});
+    }
+  }
+  maxCoordinate_ = floatAbove(maxCoordinate);
+  if (bounds.size() == 1) {  // a root node with the item in one lane, the others empty
+    nodes_.emplace_back();
+    nodes_[0].boxes.set(0, bounds[0]);
+    nodes_[0].child[0] = kItem;
+    depth_ = 1;
+    return;
+  }
+  const BinaryTree tree(bounds);
+  PRT_CHECK(tree.depth <= kMaxDepth);
+  depth_ = tree.depth;
+  nodes_.reserve(tree.nodes.size());
+
+  // Collapse: a four-way node takes the place of a binary node and its descendants down to
+  // four children, opening the child of largest area first (the likeliest to be entered).
+  struct Child {
+    Bounds box;
+    uint32_t ref;
+  };
+  auto collapse = [&](auto&& self, uint32_t binary) -> uint32_t {
+    const auto& b = tree.nodes[binary];
+    std::vector<Child> children{{b.box[0], b.child[0]}, {b.box[1], b.child[1]}};
+    while (children.size() < 4) {
+      int open = -1;
+      for (int i = 0; i < static_cast<int>(children.size()); ++i) {
+        if (!(children[i].ref & kItem) &&
+            (open < 0 || children[i].box.surfaceArea() > children[open].box.surfaceArea())) {
+          open = i;
+        }
+      }
+      if (open < 0) break;
+      const auto& inner = tree.nodes[children[open].ref];
+      children[open] = {inner.box[0], inner.child[0]};
+      children.push_back({inner.box[1], inner.child[1]});
+    }
+    const auto index = static_cast<uint32_t>(nodes_.size());
+    nodes_.emplace_back();
+    for (size_t lane = 0; lane < children.size(); ++lane) {
+      const uint32_t ref =
+          (children[lane].ref & kItem) ? children[lane].ref : self(self, children[lane].ref);
+      nodes_[index].boxes.set(static_cast<int>(lane), children[lane].box);
+      nodes_[index].child[lane] = ref;
+    }
+    return index;
+  };
+  collapse(collapse, 0);
+}
+
+}  // namespace prt
