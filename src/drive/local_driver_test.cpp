@@ -105,7 +105,10 @@ TEST(LocalDriverOptionsTest, BadOptionsAreInputErrors) {
 
 TEST(LocalDriverReportTest, ReportCountsMessagesAndSpeedIndices) {
   LocalRunRequest r = request("reservoir", 2);
-  r.options.slowdowns = {1, 3};
+  // Both emulated, so both indices are k times the CPU time of the same run (a full-speed
+  // worker reports wall time, which a busy machine can stretch past a slow worker's).
+  r.options.slowdowns = {2, 6};
+  r.options.speedIndexDiscs = 16;
   r.masterSpeedIndexSeconds = 0.01;
   r.serialSeconds = 1.0;
   const ParallelRun run = renderLocal(r);
@@ -125,7 +128,7 @@ namespace {
 TEST(LocalDriverSpeedIndexTest, ProbeSpeedIndexRanksSlowWorkersAndKeepsTheImage) {
   LocalRunRequest r = request("reservoir", 2);
   r.options.speedIndexKind = SpeedIndexKind::RenderProbe;
-  r.options.slowdowns = {1, 4};
+  r.options.slowdowns = {2, 8};
   const ParallelRun run = renderLocal(r);
   EXPECT_TRUE(run.image == serialReference());
   EXPECT_GT(run.report.workers[1].speedIndexSeconds, run.report.workers[0].speedIndexSeconds);
