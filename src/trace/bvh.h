@@ -2,6 +2,9 @@
 // Bvh: a bounding volume hierarchy over the bounded objects of a scene (binned SAH build,
 // flattened depth-first layout). Beyond the paper, which tests every object's box in turn:
 // with it, a scene of thousands of objects costs a few dozen box tests per ray.
+// World now traverses the faster QuadBvh, and keeps this tree's visit order (visitOrder) as
+// the order that decides equal distances and products of transmissivities, so that images
+// stay as they were.
 // Built once, then read-only: safe to query from many threads.
 
 #include <cstdint>

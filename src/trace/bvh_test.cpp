@@ -89,5 +89,34 @@ TEST(BvhTest, TransmittanceMultipliesEverySurfaceCrossed) {
   EXPECT_DOUBLE_EQ(world.transmittance(Ray{{0, 0, 20}, {0, 0, -1}}, 0, 10.5), 1.0);
 }
 
+// visitOrder(octant) is the order traverse() visits items in when every box is hit: here all
+// boxes contain the ray's origin, for rays of each octant (including -0 components).
+TEST(BvhTest, VisitOrderIsTheTraversalOrder) {
+  Rng rng(21);
+  std::vector<Bounds> boxes;
+  for (int i = 0; i < 60; ++i) {
+    const Vec3 c(rng.uniform() * 10 - 5, rng.uniform() * 10 - 5, rng.uniform() * 10 - 5);
+    Bounds b;
+    b.extend(Vec3(-0.1));  // the origin strictly inside
+    b.extend(Vec3(0.1));
+    b.extend(c);
+    b.extend(c * 0.5 + Vec3(rng.uniform(), rng.uniform(), rng.uniform()));
+    boxes.push_back(b);
+  }
+  const Bvh bvh(boxes);
+  for (int i = 0; i < 200; ++i) {
+    Vec3 d(rng.uniform() - 0.5, rng.uniform() - 0.5, rng.uniform() - 0.5);
+    if (i % 10 == 0) d.y = -0.0;
+    d = normalize(d);
+    const int octant = (d.x < 0 ? 1 : 0) | (d.y < 0 ? 2 : 0) | (d.z < 0 ? 4 : 0);
+    std::vector<uint32_t> visited;
+    bvh.traverse(RayQuery(Ray{{0, 0, 0}, d}), 0, 1e30, [&](uint32_t item) {
+      visited.push_back(item);
+      return 1e30;
+    });
+    EXPECT_EQ(visited, bvh.visitOrder(octant)) << "ray " << i;
+  }
+}
+
 }  // namespace
 }  // namespace prt

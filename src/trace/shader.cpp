@@ -1,6 +1,9 @@
 #include "trace/shader.h"
 
+#include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <numbers>
 
 #include "trace/sampling.h"
@@ -16,7 +19,24 @@ double surfaceEpsilon(const Vec3& p) {
 
 constexpr double kDegrees = std::numbers::pi / 180.0;
 
+// e with 2^e <= x < 2^(e + 1), for finite x > 0 (a subnormal reports -1023, which is lower:
+// safe below).
+int binaryExponent(double x) {
+  return static_cast<int>((std::bit_cast<uint64_t>(x) >> 52) & 0x7ff) - 1023;
+}
+
 }  // namespace
+
+bool specularIsNegligible(double highlight, double exponent, double specular,
+                          const Color& diffuse) {
+  // log2 of h^n is at most n (h - 1) / ln 2 (as ln h <= h - 1, for n > 0), log2(specular) is
+  // below e_s + 1, and a quarter of the last place of d is 2^(e_d - 54); one more factor of
+  // two covers the rounding of pow and of this estimate.
+  const double least = std::min({diffuse.x, diffuse.y, diffuse.z});
+  if (!(least > 0 && exponent > 0 && highlight < 1)) return false;
+  return exponent * (1 - highlight) * 1.4426 >
+         binaryExponent(specular) + 56 - binaryExponent(least);
+}
 
 bool refract(const Vec3& d, const Vec3& n, double eta, Vec3& transmitted) {
   const double cosI = -dot(d, n);
@@ -65,12 +85,15 @@ Color Shader::direct(const Hit& hit, const Vec3& n, const Vec3& toEye, Rng& rng,
       const double visible = world_.transmittance(Ray{origin, toLight}, 0.0, distance);
       if (visible <= 0) continue;
       const double highlight = std::max(0.0, dot(reflect(-toLight, n), toEye));
-      // pow(+0, n) is +0 for n > 0 (scene files require n >= 1): the call is skipped then.
+      const Color diffuse = (m.diffuse * cosine) * m.color;
+      // pow(+0, n) is +0 for n > 0 (scene files require n >= 1): the call is skipped then, and
+      // when the term could not change the sum anyway.
       const bool lit = highlight > 0 || !(m.phongExponent > 0);
-      const Color local = (m.diffuse * cosine) * m.color +
-                          Color(m.specular > 0 && lit
-                                    ? m.specular * std::pow(highlight, m.phongExponent)
-                                    : 0.0);
+      const bool needed =
+          m.specular > 0 && lit &&
+          !specularIsNegligible(highlight, m.phongExponent, m.specular, diffuse);
+      const Color local =
+          diffuse + Color(needed ? m.specular * std::pow(highlight, m.phongExponent) : 0.0);
       sum += visible * light.color * local;
     }
     result += meanOf(sum, samples);

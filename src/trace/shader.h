@@ -38,6 +38,12 @@ class Shader {
   RenderSettings settings_;
 };
 
+// Whether the Phong term specular * pow(highlight, exponent) is surely below a quarter of the
+// last place of every component of `diffuse`: added to them it would change no bit, so pow (a
+// slow call) need not be made. Holds often, Phong exponents being large.
+bool specularIsNegligible(double highlight, double exponent, double specular,
+                          const Color& diffuse);
+
 // Refraction of unit direction d through unit normal n (facing against d) with relative index
 // eta = n_incident / n_transmitted. Returns false on total internal reflection.
 bool refract(const Vec3& d, const Vec3& n, double eta, Vec3& transmitted);

@@ -207,5 +207,27 @@ TEST(ShaderTest, GlossyReflectionSpawnsDrtRays) {
   expectColorNear(c, Color(0.25, 0.5, 0.75));  // every perturbed ray sees the background
 }
 
+TEST(ShaderTest, NegligibleSpecularTermChangesNoBit) {
+  Rng rng(17);
+  int negligible = 0;
+  for (int i = 0; i < 200000; ++i) {
+    const double h = rng.uniform() < 0.1 ? 1 - rng.uniform() * 1e-3 : rng.uniform();
+    const double n = 1 + std::floor(rng.uniform() * 500);
+    const double specular = rng.uniform() < 0.1 ? 1e-300 : rng.uniform();
+    const double scale = std::ldexp(1.0, -static_cast<int>(rng.uniform() * 60));
+    const Color diffuse(rng.uniform() * scale, rng.uniform() * scale, rng.uniform() * scale);
+    if (!specularIsNegligible(h, n, specular, diffuse)) continue;
+    ++negligible;
+    const Color term(specular * std::pow(h, n));
+    ASSERT_EQ(diffuse + term, diffuse) << "h " << h << " n " << n << " specular " << specular;
+  }
+  EXPECT_GT(negligible, 50000);  // and it is the common case
+  // Never when the term can matter: no diffuse light, a full highlight, exponent <= 0.
+  EXPECT_FALSE(specularIsNegligible(0.1, 100, 1, Color(0.5, 0, 0.5)));
+  EXPECT_FALSE(specularIsNegligible(1, 400, 1, Color(0.5)));
+  EXPECT_FALSE(specularIsNegligible(0.1, 0, 1, Color(0.5)));
+  EXPECT_FALSE(specularIsNegligible(0.1, -2, 1, Color(0.5)));
+}
+
 }  // namespace
 }  // namespace prt

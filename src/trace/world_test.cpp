@@ -9,8 +9,9 @@
 namespace prt {
 namespace {
 
-// The queries as World answered them before PairBvh: the binary Bvh's traversal order, the
-// paper's per-object box test, then the shape. World must match it bit for bit.
+// The queries as World answered them before the four-way float BVH: the binary Bvh's
+// traversal order, the paper's per-object box test, then the shape. World must match it bit
+// for bit.
 class ReferenceWorld {
  public:
   explicit ReferenceWorld(const Scene& scene) : scene_(scene) {
