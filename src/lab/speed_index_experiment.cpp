@@ -100,7 +100,7 @@ void runSpeedIndex(ExperimentContext& cx) {
   cx.say("Real runs: the reservoir (initial 80 %) on `" + cx.options().scenePath + "`, case " +
          testCase + ", " + std::to_string(scene.image.width) + "x" +
          std::to_string(scene.image.height) + ", median of " + std::to_string(cx.runs()) +
-         " run(s) per speed index; serial time " + serial.describe() + " s (one thread). " +
+         " run(s) per speed index; serial time (one thread) " + serial.describe() + ". " +
          cx.emulationNote() + "\n\n");
   cx.say(markdownTable(table, {"speed_index", "master_speed_index_s", "elapsed_s", "speedup",
                                "efficiency", "masu", "asu", "emulated_masu", "mean_index_error"}));
