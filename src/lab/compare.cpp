@@ -43,7 +43,6 @@ void runCompare(ExperimentContext& cx) {
                        : std::vector<std::string>{"A", "B", "C", "D"};
   std::vector<std::string> strategies = cx.options().strategies;
   if (strategies.empty()) strategies = strategyNames();
-  for (const std::string& s : strategies) makeStrategy(s, {});  // InputError if unknown
   const Scene scene = cx.scene(64, 48);
   const std::vector<double> slowdowns = cx.slowdowns();
   const double masterIndex =

@@ -37,16 +37,22 @@ Scene ExperimentContext::scene(int quickWidth, int quickHeight, int fullWidth,
   return scene;
 }
 
+RenderSettings testCaseSettings(const std::string& name) {
+  const auto s = paperTestCase(name);
+  if (!s) throw InputError("unknown test case '" + name + "'; valid: A, B, C, D");
+  return *s;
+}
+
 std::string ExperimentContext::testCase(const std::string& fallback) const {
   const std::string c = options_.testCase.empty() ? fallback : options_.testCase;
-  if (!paperTestCase(c)) throw InputError("unknown test case '" + c + "'; valid: A, B, C, D");
+  testCaseSettings(c);
   return c;
 }
 
-RenderSettings ExperimentContext::settings(const std::string& testCase) const {
-  const auto s = paperTestCase(testCase);
-  if (!s) throw InputError("unknown test case '" + testCase + "'; valid: A, B, C, D");
-  return *s;
+double ExperimentContext::emulatedMasu() const {
+  double masu = 0;
+  for (double k : slowdowns()) masu += 1.0 / k;
+  return masu;
 }
 
 void ExperimentContext::progress(const std::string& line) const {
@@ -74,10 +80,9 @@ void ExperimentContext::draw(const Chart& chart, const std::string& file) {
 
 std::string ExperimentContext::emulationNote() const {
   const std::vector<double> k = slowdowns();
-  double demand = 0;
+  const double demand = emulatedMasu();  // cores the workers keep busy
   std::string list;
   for (double s : k) {
-    demand += 1.0 / s;
     char buffer[32];
     std::snprintf(buffer, sizeof buffer, "%s%g", list.empty() ? "" : ",", s);
     list += buffer;

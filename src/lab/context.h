@@ -14,6 +14,9 @@
 
 namespace prt {
 
+// The paper's test case `name` (A-D); InputError listing the valid ones otherwise.
+RenderSettings testCaseSettings(const std::string& name);
+
 class ExperimentContext {
  public:
   ExperimentContext(std::string name, const ExperimentOptions& options);
@@ -28,7 +31,7 @@ class ExperimentContext {
   Scene scene(int quickWidth, int quickHeight, int fullWidth = 0, int fullHeight = 0) const;
   // The test case `fallback` unless --case was given; InputError for an unknown case.
   std::string testCase(const std::string& fallback) const;
-  RenderSettings settings(const std::string& testCase) const;
+  RenderSettings settings(const std::string& testCase) const { return testCaseSettings(testCase); }
 
   // A line on stderr, unless quiet.
   void progress(const std::string& line) const;
@@ -39,6 +42,8 @@ class ExperimentContext {
   // Appends Markdown to the summary.
   void say(const std::string& markdown) { output_.summary += markdown; }
 
+  // The MASU a perfect speed index would give the emulated workers: the sum of 1/k_i.
+  double emulatedMasu() const;
   // "4 emulated workers (--slowdown 2,2,4,4) need 1.5 cores; this machine has 2: ...".
   std::string emulationNote() const;
 

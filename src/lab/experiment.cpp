@@ -13,7 +13,6 @@
 #include "image/atomic_file.h"
 #include "lab/context.h"
 #include "lab/experiments.h"
-#include "trace/render_settings.h"
 
 namespace prt {
 namespace {
@@ -89,12 +88,8 @@ void validate(const ExperimentOptions& o) {
     throw InputError("--serial-seconds must be positive");
   }
   for (const std::string& s : o.strategies) makeStrategy(s, {});  // lists the valid names
-  for (const std::string& c : o.cases) {
-    if (!paperTestCase(c)) throw InputError("unknown test case '" + c + "'; valid: A, B, C, D");
-  }
-  if (!o.testCase.empty() && !paperTestCase(o.testCase)) {
-    throw InputError("unknown test case '" + o.testCase + "'; valid: A, B, C, D");
-  }
+  for (const std::string& c : o.cases) testCaseSettings(c);
+  if (!o.testCase.empty()) testCaseSettings(o.testCase);
   if (!std::filesystem::exists(o.scenePath)) {
     throw InputError("no scene file '" + o.scenePath +
                      "': run from the PRT source folder or pass --scene FILE");

@@ -97,8 +97,7 @@ void runInitialPercent(ExperimentContext& cx) {
   speedup.xLabel = "initial percentage";
   speedup.yLabel = "speed-up (serial time / parallel time)";
   speedup.yMin = 0;
-  double masu = 0;
-  for (double k : slowdowns) masu += 1.0 / k;
+  const double masu = cx.emulatedMasu();
   char label[64];
   std::snprintf(label, sizeof label, "emulated MASU %.2f", masu);
   speedup.referenceLines = {{label, masu}};

@@ -29,7 +29,6 @@ bool isStatic(const std::string& strategy) {
 void runScale(ExperimentContext& cx) {
   std::vector<std::string> strategies = cx.options().strategies;
   if (strategies.empty()) strategies = strategyNames();
-  for (const std::string& s : strategies) makeStrategy(s, {});  // InputError if unknown
   const std::vector<int> counts = cx.quick()
                                       ? std::vector<int>{4, 8, 16, 32, 64}
                                       : std::vector<int>{4, 8, 16, 32, 64, 128, 256, 512, 1024};

@@ -30,8 +30,7 @@ void runSpeedIndex(ExperimentContext& cx) {
   const std::string testCase = cx.testCase("A");
   const RenderSettings settings = cx.settings(testCase);
   const std::vector<double> slowdowns = cx.slowdowns();
-  double emulatedMasu = 0;
-  for (double k : slowdowns) emulatedMasu += 1.0 / k;
+  const double emulatedMasu = cx.emulatedMasu();
 
   cx.progress("serial time, case " + testCase);
   SerialReference serial(scene, settings);
