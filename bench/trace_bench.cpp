@@ -46,6 +46,82 @@ void BM_ComplexScenePixels(benchmark::State& state) {
 }
 BENCHMARK(BM_ComplexScenePixels);
 
+// Queries as the shader makes them on the benchmark scene, gathered once: for a grid of camera
+// rays, the nearest-hit query of the camera ray and of its mirror bounce, and one shadow query
+// from each hit towards each light's centre. Replayed in a loop, they time World's two
+// queries alone.
+struct RecordedQueries {
+  struct Shadow {
+    Ray ray;
+    double distance;
+  };
+  std::vector<Ray> nearest;
+  std::vector<Shadow> shadow;
+};
+
+const RecordedQueries& complexSceneQueries() {
+  static const RecordedQueries queries = [] {
+    RecordedQueries q;
+    const Scene scene = loadSceneFile(PRT_SOURCE_DIR "/scenes/complex.scene");
+    const World world(scene);
+    const PinholeCamera camera(scene.camera, 160, 120);
+    auto shadowRays = [&](const Hit& hit, const Vec3& n) {
+      const Vec3 origin = hit.point + 1e-9 * n;
+      for (const Light& light : scene.lights) {
+        Vec3 target;
+        if (const auto* p = std::get_if<PointLight>(&light.shape)) target = p->position;
+        if (const auto* s = std::get_if<SphereLight>(&light.shape)) target = s->center;
+        if (const auto* r = std::get_if<RectLight>(&light.shape)) {
+          target = r->corner + 0.5 * r->edge1 + 0.5 * r->edge2;
+        }
+        const Vec3 d = target - origin;
+        const double distance = length(d);
+        if (dot(d, n) > 0) q.shadow.push_back({Ray{origin, d / distance}, distance});
+      }
+    };
+    for (int y = 0; y < 120; ++y) {
+      for (int x = 0; x < 160; ++x) {
+        Ray ray = camera.generateRay(x + 0.5, y + 0.5);
+        for (int bounce = 0; bounce < 2; ++bounce) {
+          q.nearest.push_back(ray);
+          Hit hit;
+          if (!world.intersect(ray, 0, std::numeric_limits<double>::infinity(), hit)) break;
+          const Vec3 n = dot(ray.direction, hit.normal) < 0 ? hit.normal : -hit.normal;
+          shadowRays(hit, n);
+          ray = Ray{hit.point + 1e-9 * n, reflect(ray.direction, n)};
+        }
+      }
+    }
+    return q;
+  }();
+  return queries;
+}
+
+void BM_ComplexSceneNearest(benchmark::State& state) {
+  const World world(loadSceneFile(PRT_SOURCE_DIR "/scenes/complex.scene"));
+  const RecordedQueries& q = complexSceneQueries();
+  size_t i = 0;
+  Hit hit;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(world.intersect(q.nearest[i], 0, 1e300, hit));
+    if (++i == q.nearest.size()) i = 0;
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_ComplexSceneNearest);
+
+void BM_ComplexSceneShadow(benchmark::State& state) {
+  const World world(loadSceneFile(PRT_SOURCE_DIR "/scenes/complex.scene"));
+  const RecordedQueries& q = complexSceneQueries();
+  size_t i = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(world.transmittance(q.shadow[i].ray, 0, q.shadow[i].distance));
+    if (++i == q.shadow.size()) i = 0;
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_ComplexSceneShadow);
+
 }  // namespace
 }  // namespace prt
 

@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "core/ray.h"
+#include "core/select.h"
 
 namespace prt {
 
@@ -37,16 +38,18 @@ struct RayQuery {
 
 // True when the ray meets the box within (tMin, tMax).
 inline bool hitsBounds(const Bounds& b, const RayQuery& q, double tMin, double tMax) {
+  // Branch-free (each select is one minsd or maxsd): whether a ray meets a box is a coin toss
+  // a branch predictor loses. The interval only narrows, so one check at the end suffices.
   for (int axis = 0; axis < 3; ++axis) {
-    double t0 = (b.lo[axis] - q.ray.origin[axis]) * q.invDirection[axis];
-    double t1 = (b.hi[axis] - q.ray.origin[axis]) * q.invDirection[axis];
-    if (t0 > t1) std::swap(t0, t1);
+    const double t0 = (b.lo[axis] - q.ray.origin[axis]) * q.invDirection[axis];
+    const double t1 = (b.hi[axis] - q.ray.origin[axis]) * q.invDirection[axis];
+    const double near = lessOr(t1, t0);  // the pair ordered (if t0 > t1, swapped)
+    const double far = greaterOr(t0, t1);
     // NaN (0 * inf for a ray in a slab plane) compares false and leaves the interval alone.
-    tMin = t0 > tMin ? t0 : tMin;
-    tMax = t1 < tMax ? t1 : tMax;
-    if (tMin > tMax) return false;
+    tMin = greaterOr(near, tMin);
+    tMax = lessOr(far, tMax);
   }
-  return true;
+  return tMin <= tMax;
 }
 
 }  // namespace prt

@@ -26,6 +26,7 @@
 #endif
 
 #include "core/ray.h"
+#include "core/select.h"
 #include "trace/bounds.h"
 
 namespace prt {
@@ -121,11 +122,12 @@ struct QuadRay {
 
 // The nearest float at or below x, and at or above x (x not NaN).
 inline float floatBelow(double x) {
-  auto f = static_cast<float>(x);
-  if (static_cast<double>(f) > x) {  // step one float down: f is finite and nonzero here
-    f = std::bit_cast<float>(std::bit_cast<uint32_t>(f) + (f > 0 ? -1 : 1));
-  }
-  return f;
+  const auto f = static_cast<float>(x);
+  // Rounding went up: step one float down (f is finite and nonzero then). Without a branch,
+  // the outcome being a coin toss.
+  const uint32_t bits = std::bit_cast<uint32_t>(f);
+  const uint32_t down = bits + 1u - 2u * static_cast<uint32_t>(f > 0);  // -1 or +1
+  return std::bit_cast<float>(selectBits(static_cast<double>(f) > x, down, bits));
 }
 inline float floatAbove(double x) { return -floatBelow(-x); }
 
