@@ -3,6 +3,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/portable_math.h"
+
 namespace prt {
 
 PinholeCamera::PinholeCamera(const Camera& camera, int width, int height)
@@ -12,7 +14,7 @@ PinholeCamera::PinholeCamera(const Camera& camera, int width, int height)
   forward_ = normalize(camera.lookAt - camera.eye);
   const Vec3 right = normalize(cross(camera.up, forward_));
   const Vec3 up = cross(forward_, right);
-  const double halfHeight = std::tan(camera.fovDegrees * std::numbers::pi / 360.0);
+  const double halfHeight = tanRadians(camera.fovDegrees * std::numbers::pi / 360.0);
   const double halfWidth = halfHeight * static_cast<double>(width) / height;
   right_ = right * halfWidth;
   up_ = up * halfHeight;

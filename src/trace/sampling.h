@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/portable_math.h"
 #include "core/vec3.h"
 
 namespace prt {
@@ -19,32 +20,33 @@ inline Vec3 meanOf(const Vec3& sum, int n) { return n == 1 ? sum : sum / n; }
 // A direction uniformly distributed over the cone of half-angle `halfAngleRadians` around unit
 // vector `axis`; u1, u2 in [0, 1).
 inline Vec3 sampleCone(const Vec3& axis, double halfAngleRadians, double u1, double u2) {
-  const double cosMax = std::cos(halfAngleRadians);
+  const double cosMax = cosRadians(halfAngleRadians);
   const double cosTheta = 1.0 - u1 * (1.0 - cosMax);
   const double sinTheta = std::sqrt(std::max(0.0, 1.0 - cosTheta * cosTheta));
-  const double phi = 2.0 * std::numbers::pi * u2;
+  double sinPhi, cosPhi;
+  sinCosTurns(u2, sinPhi, cosPhi);  // phi = 2 pi u2
   Vec3 u, v;
   orthonormalBasis(axis, u, v);
-  return sinTheta * std::cos(phi) * u + sinTheta * std::sin(phi) * v + cosTheta * axis;
+  return sinTheta * cosPhi * u + sinTheta * sinPhi * v + cosTheta * axis;
 }
 
 // A point uniformly distributed over the disc of radius r centred on `center`, perpendicular
 // to unit vector `normal` (Shirley's concentric map keeps strata compact).
 inline Vec3 sampleDisc(const Vec3& center, const Vec3& normal, double r, double u1, double u2) {
   const double a = 2.0 * u1 - 1.0, b = 2.0 * u2 - 1.0;
-  double radius = 0, phi = 0;
+  double radius = 0, cosPhi = 1, sinPhi = 0;
   if (a != 0 || b != 0) {
     if (a * a > b * b) {
-      radius = a;
-      phi = (std::numbers::pi / 4) * (b / a);
+      radius = a;  // phi = (pi/4) (b/a)
+      sinCosQuarter((std::numbers::pi / 4) * (b / a), sinPhi, cosPhi);
     } else {
-      radius = b;
-      phi = std::numbers::pi / 2 - (std::numbers::pi / 4) * (a / b);
+      radius = b;  // phi = pi/2 - x with x = (pi/4) (a/b): cos phi = sin x, sin phi = cos x
+      sinCosQuarter((std::numbers::pi / 4) * (a / b), cosPhi, sinPhi);
     }
   }
   Vec3 u, v;
   orthonormalBasis(normal, u, v);
-  return center + r * radius * (std::cos(phi) * u + std::sin(phi) * v);
+  return center + r * radius * (cosPhi * u + sinPhi * v);
 }
 
 // Sample i of n, stratified over a near-square grid of cells with one jittered point in each

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <numbers>
 
+#include "core/portable_math.h"
 #include "trace/sampling.h"
 
 namespace prt {
@@ -31,7 +32,7 @@ bool specularIsNegligible(double highlight, double exponent, double specular,
                           const Color& diffuse) {
   // log2 of h^n is at most n (h - 1) / ln 2 (as ln h <= h - 1, for n > 0), log2(specular) is
   // below e_s + 1, and a quarter of the last place of d is 2^(e_d - 54); one more factor of
-  // two covers the rounding of pow and of this estimate.
+  // two covers the rounding of powNonNegative and of this estimate.
   const double least = std::min({diffuse.x, diffuse.y, diffuse.z});
   if (!(least > 0 && exponent > 0 && highlight < 1)) return false;
   return exponent * (1 - highlight) * 1.4426 >
@@ -86,14 +87,14 @@ Color Shader::direct(const Hit& hit, const Vec3& n, const Vec3& toEye, Rng& rng,
       if (visible <= 0) continue;
       const double highlight = std::max(0.0, dot(reflect(-toLight, n), toEye));
       const Color diffuse = (m.diffuse * cosine) * m.color;
-      // pow(+0, n) is +0 for n > 0 (scene files require n >= 1): the call is skipped then, and
-      // when the term could not change the sum anyway.
+      // +0^n is +0 for n > 0 (scene files require n >= 1): the power is skipped then, and when
+      // the term could not change the sum anyway.
       const bool lit = highlight > 0 || !(m.phongExponent > 0);
       const bool needed =
           m.specular > 0 && lit &&
           !specularIsNegligible(highlight, m.phongExponent, m.specular, diffuse);
       const Color local =
-          diffuse + Color(needed ? m.specular * std::pow(highlight, m.phongExponent) : 0.0);
+          diffuse + Color(needed ? m.specular * powNonNegative(highlight, m.phongExponent) : 0.0);
       sum += visible * light.color * local;
     }
     result += meanOf(sum, samples);

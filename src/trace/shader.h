@@ -38,9 +38,9 @@ class Shader {
   RenderSettings settings_;
 };
 
-// Whether the Phong term specular * pow(highlight, exponent) is surely below a quarter of the
-// last place of every component of `diffuse`: added to them it would change no bit, so pow (a
-// slow call) need not be made. Holds often, Phong exponents being large.
+// Whether the Phong term specular * highlight^exponent is surely below a quarter of the last
+// place of every component of `diffuse`: added to them it would change no bit, so the power
+// need not be computed. Holds often, Phong exponents being large.
 bool specularIsNegligible(double highlight, double exponent, double specular,
                           const Color& diffuse);
 

@@ -1,0 +1,165 @@
+#pragma once
+// The transcendental functions the renderer needs (sine and cosine, tangent, power), computed
+// with nothing but IEEE additions, multiplications and divisions in a fixed order, so they give
+// the same bits on every machine. The C library's are not portable in that sense: glibc picks
+// among implementations at run time by CPU (with fused multiply-adds or without), and those
+// may differ in the last bit; a cluster of mixed machines would then render the same pixel two
+// ways. (The build forbids contracting a*b+c into an FMA: -ffp-contract=off.)
+//
+// Accuracy: a few units in the last place over the ranges documented below (powNonNegative:
+// see there), far finer than any image can show. Each function is also cheaper than the library call it replaces, being
+// inlined and free of the general argument reduction.
+
+#include <cmath>
+#include <cstdint>
+#include <limits>
+
+namespace prt {
+namespace portable_math_detail {
+
+// sin x and cos x for |x| <= pi/4 (a little beyond is fine): their Taylor series, to x^17 and
+// x^18, whose next terms are below 1e-19 there.
+inline void sinCosReduced(double x, double& s, double& c) {
+  const double z = x * x;
+  const double sinTail =
+      -1.0 / 6 +
+      z * (1.0 / 120 +
+           z * (-1.0 / 5040 +
+                z * (1.0 / 362880 +
+                     z * (-1.0 / 39916800 +
+                          z * (1.0 / 6227020800 +
+                               z * (-1.0 / 1307674368000 + z * (1.0 / 355687428096000)))))));
+  s = x + x * (z * sinTail);
+  const double cosTail =
+      1.0 / 24 +
+      z * (-1.0 / 720 +
+           z * (1.0 / 40320 +
+                z * (-1.0 / 3628800 +
+                     z * (1.0 / 479001600 +
+                          z * (-1.0 / 87178291200 +
+                               z * (1.0 / 20922789888000 + z * (-1.0 / 6402373705728000)))))));
+  // 1 - z/2 rounded first, then its rounding error put back (as fdlibm's kernel does).
+  const double half = 0.5 * z;
+  const double w = 1.0 - half;
+  c = w + (((1.0 - w) - half) + z * (z * cosTail));
+}
+
+// Rotates (sin r, cos r) by `quadrant` quarter turns: sin and cos of r + quadrant * pi/2.
+inline void rotateQuadrants(int64_t quadrant, double& s, double& c) {
+  const double sr = s, cr = c;
+  switch (quadrant & 3) {
+    case 0: break;
+    case 1: s = cr; c = -sr; break;
+    case 2: s = -sr; c = -cr; break;
+    default: s = -cr; c = sr; break;
+  }
+}
+
+}  // namespace portable_math_detail
+
+// sin x and cos x for |x| <= pi/4 (the whole range of the concentric disc map).
+inline void sinCosQuarter(double x, double& s, double& c) {
+  portable_math_detail::sinCosReduced(x, s, c);
+}
+
+// sin and cos of 2 pi u, for u in [0, 1): a uniform angle from a uniform number. Reduced
+// exactly: u - k/4 is exact (Sterbenz) for the nearest quarter k.
+inline void sinCosTurns(double u, double& s, double& c) {
+  const double k = std::floor(4.0 * u + 0.5);
+  const double x = (u - 0.25 * k) * 6.283185307179586;  // 2 pi
+  portable_math_detail::sinCosReduced(x, s, c);
+  portable_math_detail::rotateQuadrants(static_cast<int64_t>(k), s, c);
+}
+
+// sin x and cos x for |x| <= 1e6 radians (angles from scene files: spreads, fields of view).
+// Cody-Waite reduction by pi/2 split into a 33-bit head (k * head is exact) and a tail.
+inline void sinCosRadians(double x, double& s, double& c) {
+  constexpr double kTwoOverPi = 0x1.45f306dc9c883p-1;
+  constexpr double kHalfPiHead = 0x1.921fb544p+0;
+  constexpr double kHalfPiTail = 0x1.0b4611a626331p-34;
+  const double k = std::floor(x * kTwoOverPi + 0.5);
+  const double r = (x - k * kHalfPiHead) - k * kHalfPiTail;
+  portable_math_detail::sinCosReduced(r, s, c);
+  portable_math_detail::rotateQuadrants(static_cast<int64_t>(k), s, c);
+}
+
+inline double cosRadians(double x) {
+  double s, c;
+  sinCosRadians(x, s, c);
+  return c;
+}
+
+inline double tanRadians(double x) {
+  double s, c;
+  sinCosRadians(x, s, c);
+  return s / c;
+}
+
+// Natural logarithm of a positive finite x (x = m 2^e, m in [sqrt(1/2), sqrt(2)); ln m by the
+// series of atanh((m - 1) / (m + 1)), to the 23rd power). Returns -inf for 0.
+inline double logPositive(double x) {
+  if (!(x > 0)) return x == 0 ? -HUGE_VAL : std::numeric_limits<double>::quiet_NaN();
+  int e = 0;
+  double m = std::frexp(x, &e);  // exact: m in [1/2, 1)
+  if (m < 0x1.6a09e667f3bcdp-1) {  // sqrt(1/2)
+    m *= 2;
+    --e;
+  }
+  const double t = (m - 1.0) / (m + 1.0);
+  const double z = t * t;
+  const double tail =
+      2.0 / 3 +
+      z * (2.0 / 5 +
+           z * (2.0 / 7 +
+                z * (2.0 / 9 +
+                     z * (2.0 / 11 +
+                          z * (2.0 / 13 +
+                               z * (2.0 / 15 +
+                                    z * (2.0 / 17 + z * (2.0 / 19 + z * (2.0 / 21 + z * (2.0 / 23))))))))));
+  constexpr double kLn2Head = 0x1.62e42fefp-1;  // 33 bits: e * head is exact
+  constexpr double kLn2Tail = 0x1.473de6af278edp-34;
+  const double lnM = 2.0 * t + t * (z * tail);
+  return e * kLn2Head + (lnM + e * kLn2Tail);
+}
+
+// e^y: 0 below -746, +inf above 710. y = k ln 2 + r with |r| <= ln2 / 2, e^r by
+// its Taylor series to r^14, scaled by 2^k exactly (std::ldexp rounds once, into subnormals).
+inline double expOf(double y) {
+  if (y != y) return y;  // NaN
+  if (y < -746.0) return 0.0;
+  if (y > 710.0) return HUGE_VAL;
+  constexpr double kInvLn2 = 0x1.71547652b82fep+0;
+  constexpr double kLn2Head = 0x1.62e42fefp-1;
+  constexpr double kLn2Tail = 0x1.473de6af278edp-34;
+  const double k = std::floor(y * kInvLn2 + 0.5);
+  const double r = (y - k * kLn2Head) - k * kLn2Tail;
+  double p = 1.0 / 87178291200;  // 1/14!
+  constexpr double kInverseFactorials[] = {
+      1.0 / 6227020800, 1.0 / 479001600, 1.0 / 39916800, 1.0 / 3628800, 1.0 / 362880,
+      1.0 / 40320,      1.0 / 5040,      1.0 / 720,      1.0 / 120,     1.0 / 24,
+      1.0 / 6,          0.5};
+  for (double f : kInverseFactorials) p = f + r * p;
+  const double er = 1.0 + (r + r * (r * p));
+  return std::ldexp(er, static_cast<int>(k));
+}
+
+// x^n for x >= 0 and n > 0 (the Phong term: a highlight to a shininess exponent). A whole n up
+// to 2^20 by repeated squaring (at most 40 products; each squaring doubles the relative error,
+// which stays below about n units in the last place: 1e-13 for n = 1000); any other n as
+// e^(n ln x), within about |n ln x| units.
+inline double powNonNegative(double x, double n) {
+  if (x == 0) return 0.0;
+  if (n == std::floor(n) && n <= 1048576.0) {
+    auto bits = static_cast<uint32_t>(n);
+    double result = 1.0, square = x;
+    while (bits != 0) {
+      if (bits & 1u) result *= square;
+      bits >>= 1;
+      if (bits != 0) square *= square;
+    }
+    return result;
+  }
+  return expOf(n * logPositive(x));
+}
+
+}  // namespace prt
