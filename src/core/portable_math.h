@@ -7,8 +7,8 @@
 // ways. (The build forbids contracting a*b+c into an FMA: -ffp-contract=off.)
 //
 // Accuracy: a few units in the last place over the ranges documented below (powNonNegative:
-// see there), far finer than any image can show. Each function is also cheaper than the library call it replaces, being
-// inlined and free of the general argument reduction.
+// see there), far finer than any image can show. Each function is also cheaper than the library
+// call it replaces, being inlined and free of the general argument reduction.
 
 #include <cmath>
 #include <cstdint>
@@ -24,11 +24,10 @@ inline void sinCosReduced(double x, double& s, double& c) {
   const double sinTail =
       -1.0 / 6 +
       z * (1.0 / 120 +
-           z * (-1.0 / 5040 +
-                z * (1.0 / 362880 +
-                     z * (-1.0 / 39916800 +
-                          z * (1.0 / 6227020800 +
-                               z * (-1.0 / 1307674368000 + z * (1.0 / 355687428096000)))))));
+           z * (-1.0 / 5040 + z * (1.0 / 362880 + z * (-1.0 / 39916800 +
+                                                       z * (1.0 / 6227020800 +
+                                                            z * (-1.0 / 1307674368000 +
+                                                                 z * (1.0 / 355687428096000)))))));
   s = x + x * (z * sinTail);
   const double cosTail =
       1.0 / 24 +
@@ -48,10 +47,20 @@ inline void sinCosReduced(double x, double& s, double& c) {
 inline void rotateQuadrants(int64_t quadrant, double& s, double& c) {
   const double sr = s, cr = c;
   switch (quadrant & 3) {
-    case 0: break;
-    case 1: s = cr; c = -sr; break;
-    case 2: s = -sr; c = -cr; break;
-    default: s = -cr; c = sr; break;
+    case 0:
+      break;
+    case 1:
+      s = cr;
+      c = -sr;
+      break;
+    case 2:
+      s = -sr;
+      c = -cr;
+      break;
+    default:
+      s = -cr;
+      c = sr;
+      break;
   }
 }
 
@@ -100,7 +109,7 @@ inline double tanRadians(double x) {
 inline double logPositive(double x) {
   if (!(x > 0)) return x == 0 ? -HUGE_VAL : std::numeric_limits<double>::quiet_NaN();
   int e = 0;
-  double m = std::frexp(x, &e);  // exact: m in [1/2, 1)
+  double m = std::frexp(x, &e);    // exact: m in [1/2, 1)
   if (m < 0x1.6a09e667f3bcdp-1) {  // sqrt(1/2)
     m *= 2;
     --e;
@@ -115,7 +124,8 @@ inline double logPositive(double x) {
                      z * (2.0 / 11 +
                           z * (2.0 / 13 +
                                z * (2.0 / 15 +
-                                    z * (2.0 / 17 + z * (2.0 / 19 + z * (2.0 / 21 + z * (2.0 / 23))))))))));
+                                    z * (2.0 / 17 +
+                                         z * (2.0 / 19 + z * (2.0 / 21 + z * (2.0 / 23))))))))));
   constexpr double kLn2Head = 0x1.62e42fefp-1;  // 33 bits: e * head is exact
   constexpr double kLn2Tail = 0x1.473de6af278edp-34;
   const double lnM = 2.0 * t + t * (z * tail);
@@ -135,9 +145,8 @@ inline double expOf(double y) {
   const double r = (y - k * kLn2Head) - k * kLn2Tail;
   double p = 1.0 / 87178291200;  // 1/14!
   constexpr double kInverseFactorials[] = {
-      1.0 / 6227020800, 1.0 / 479001600, 1.0 / 39916800, 1.0 / 3628800, 1.0 / 362880,
-      1.0 / 40320,      1.0 / 5040,      1.0 / 720,      1.0 / 120,     1.0 / 24,
-      1.0 / 6,          0.5};
+      1.0 / 6227020800, 1.0 / 479001600, 1.0 / 39916800, 1.0 / 3628800, 1.0 / 362880, 1.0 / 40320,
+      1.0 / 5040,       1.0 / 720,       1.0 / 120,      1.0 / 24,      1.0 / 6,      0.5};
   for (double f : kInverseFactorials) p = f + r * p;
   const double er = 1.0 + (r + r * (r * p));
   return std::ldexp(er, static_cast<int>(k));

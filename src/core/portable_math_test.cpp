@@ -11,11 +11,15 @@ namespace prt {
 namespace {
 
 // |a - b| in units of the last place of b (b nonzero and normal).
-double ulps(double a, double b) { return std::abs(a - b) / (std::nextafter(std::abs(b), HUGE_VAL) - std::abs(b)); }
+double ulps(double a, double b) {
+  return std::abs(a - b) / (std::nextafter(std::abs(b), HUGE_VAL) - std::abs(b));
+}
 
 // Error measured against the absolute scale of sin and cos (their largest magnitude is 1):
 // near a zero of either function a relative measure means nothing.
-double errorInUnitUlps(double a, double b) { return std::abs(a - b) / 0x1p-53; }
+double errorInUnitUlps(double a, double b) {
+  return std::abs(a - b) / 0x1p-53;
+}
 
 TEST(PortableMathTest, SinCosQuarterMatchesTheLibraryWithinAnUlp) {
   Rng rng(1);
@@ -96,7 +100,8 @@ TEST(PortableMathTest, PowerOfTheKindsPhongUses) {
     const double a = std::pow(x, whole), b = std::pow(x, fractional);
     // Squaring doubles a relative error: about n units in the last place for a whole n.
     if (a > 1e-300) {
-      ASSERT_LE(std::abs(powNonNegative(x, whole) - a), 2 * whole * 0x1p-53 * a) << x << " " << whole;
+      ASSERT_LE(std::abs(powNonNegative(x, whole) - a), 2 * whole * 0x1p-53 * a)
+          << x << " " << whole;
     }
     if (b > 1e-300) {
       ASSERT_LE(std::abs(powNonNegative(x, fractional) - b), 1e-12 * b) << x << " " << fractional;
