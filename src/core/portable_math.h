@@ -11,36 +11,36 @@
 // call it replaces, being inlined and free of the general argument reduction.
 
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <limits>
 
 namespace prt {
 namespace portable_math_detail {
 
+// c[0] + z (c[1] + z (c[2] + ...)), innermost first.
+template <size_t N>
+constexpr double horner(double z, const double (&c)[N]) {
+  double p = c[N - 1];
+  for (size_t i = N - 1; i-- > 0;) p = c[i] + z * p;
+  return p;
+}
+
 // sin x and cos x for |x| <= pi/4 (a little beyond is fine): their Taylor series, to x^17 and
 // x^18, whose next terms are below 1e-19 there.
 inline void sinCosReduced(double x, double& s, double& c) {
+  constexpr double kSin[] = {
+      -1.0 / 6,        1.0 / 120,        -1.0 / 5040,          1.0 / 362880,
+      -1.0 / 39916800, 1.0 / 6227020800, -1.0 / 1307674368000, 1.0 / 355687428096000};
+  constexpr double kCos[] = {
+      1.0 / 24,        -1.0 / 720,         1.0 / 40320,          -1.0 / 3628800,
+      1.0 / 479001600, -1.0 / 87178291200, 1.0 / 20922789888000, -1.0 / 6402373705728000};
   const double z = x * x;
-  const double sinTail =
-      -1.0 / 6 +
-      z * (1.0 / 120 +
-           z * (-1.0 / 5040 + z * (1.0 / 362880 + z * (-1.0 / 39916800 +
-                                                       z * (1.0 / 6227020800 +
-                                                            z * (-1.0 / 1307674368000 +
-                                                                 z * (1.0 / 355687428096000)))))));
-  s = x + x * (z * sinTail);
-  const double cosTail =
-      1.0 / 24 +
-      z * (-1.0 / 720 +
-           z * (1.0 / 40320 +
-                z * (-1.0 / 3628800 +
-                     z * (1.0 / 479001600 +
-                          z * (-1.0 / 87178291200 +
-                               z * (1.0 / 20922789888000 + z * (-1.0 / 6402373705728000)))))));
+  s = x + x * (z * horner(z, kSin));
   // 1 - z/2 rounded first, then its rounding error put back (as fdlibm's kernel does).
   const double half = 0.5 * z;
   const double w = 1.0 - half;
-  c = w + (((1.0 - w) - half) + z * (z * cosTail));
+  c = w + (((1.0 - w) - half) + z * (z * horner(z, kCos)));
 }
 
 // Rotates (sin r, cos r) by `quadrant` quarter turns: sin and cos of r + quadrant * pi/2.
@@ -116,16 +116,9 @@ inline double logPositive(double x) {
   }
   const double t = (m - 1.0) / (m + 1.0);
   const double z = t * t;
-  const double tail =
-      2.0 / 3 +
-      z * (2.0 / 5 +
-           z * (2.0 / 7 +
-                z * (2.0 / 9 +
-                     z * (2.0 / 11 +
-                          z * (2.0 / 13 +
-                               z * (2.0 / 15 +
-                                    z * (2.0 / 17 +
-                                         z * (2.0 / 19 + z * (2.0 / 21 + z * (2.0 / 23))))))))));
+  constexpr double kAtanh[] = {2.0 / 3,  2.0 / 5,  2.0 / 7,  2.0 / 9,  2.0 / 11, 2.0 / 13,
+                               2.0 / 15, 2.0 / 17, 2.0 / 19, 2.0 / 21, 2.0 / 23};
+  const double tail = portable_math_detail::horner(z, kAtanh);
   constexpr double kLn2Head = 0x1.62e42fefp-1;  // 33 bits: e * head is exact
   constexpr double kLn2Tail = 0x1.473de6af278edp-34;
   const double lnM = 2.0 * t + t * (z * tail);
@@ -143,11 +136,20 @@ inline double expOf(double y) {
   constexpr double kLn2Tail = 0x1.473de6af278edp-34;
   const double k = std::floor(y * kInvLn2 + 0.5);
   const double r = (y - k * kLn2Head) - k * kLn2Tail;
-  double p = 1.0 / 87178291200;  // 1/14!
-  constexpr double kInverseFactorials[] = {
-      1.0 / 6227020800, 1.0 / 479001600, 1.0 / 39916800, 1.0 / 3628800, 1.0 / 362880, 1.0 / 40320,
-      1.0 / 5040,       1.0 / 720,       1.0 / 120,      1.0 / 24,      1.0 / 6,      0.5};
-  for (double f : kInverseFactorials) p = f + r * p;
+  constexpr double kExp[] = {0.5,
+                             1.0 / 6,
+                             1.0 / 24,
+                             1.0 / 120,
+                             1.0 / 720,
+                             1.0 / 5040,
+                             1.0 / 40320,
+                             1.0 / 362880,
+                             1.0 / 3628800,
+                             1.0 / 39916800,
+                             1.0 / 479001600,
+                             1.0 / 6227020800,
+                             1.0 / 87178291200};
+  const double p = portable_math_detail::horner(r, kExp);
   const double er = 1.0 + (r + r * (r * p));
   return std::ldexp(er, static_cast<int>(k));
 }
