@@ -19,7 +19,8 @@
 #   Timing   hyperfine --warmup 1 --runs RUNS, the median wall-clock time of each whole
 #            process (start-up, parsing, rendering, PNG writing); without hyperfine, the median
 #            of RUNS runs timed with date. Also reported: each renderer's own figure for the
-#            rendering alone (PRT's summary line, POV-Ray's "Trace Time"), from one more run.
+#            rendering alone (PRT's summary line, POV-Ray's "Trace Time"), the median of RUNS
+#            more runs, the two renderers taking turns.
 #   Ratio    PRT/POV-Ray speed = POV-Ray's time / PRT's time (above 1: PRT is faster).
 # Nothing is written outside a temporary directory, which is removed at the end.
 set -eu
@@ -81,10 +82,19 @@ for spp in "$@"; do
   prt_wall=$(time_command "$prt_command")
   pov_wall=$(time_command "$pov_command >/dev/null 2>&1")
 
-  # The renderers' own figures for the rendering alone.
-  prt_trace=$("$prt" render "$scene" --threads 1 --spp "$spp" --drt 1 --width "$width" \
-    --height "$height" -o prt.png | sed -n 's/.* DRT [0-9]*, \([0-9.]*\) s,.*/\1/p')
-  pov_trace=$(sh -c "$pov_command" 2>&1 | sed -n 's/.*Trace Time:.*(\([0-9.]*\) seconds).*/\1/p')
+  # The renderers' own figures for the rendering alone: medians of $runs more runs, PRT and
+  # POV-Ray taking turns so that a change in the machine's load falls on both.
+  : >prt-trace.txt
+  : >pov-trace.txt
+  i=0
+  while [ $i -lt "$runs" ]; do
+    "$prt" render "$scene" --threads 1 --spp "$spp" --drt 1 --width "$width" --height "$height" \
+      -o prt.png | sed -n 's/.* DRT [0-9]*, \([0-9.]*\) s,.*/\1/p' >>prt-trace.txt
+    sh -c "$pov_command" 2>&1 | sed -n 's/.*Trace Time:.*(\([0-9.]*\) seconds).*/\1/p' >>pov-trace.txt
+    i=$((i + 1))
+  done
+  prt_trace=$(median <prt-trace.txt)
+  pov_trace=$(median <pov-trace.txt)
 
   printf '%-5s %-10.3f %-10.3f %-10.2f %-12.3f %-12.3f %-10.2f\n' "$spp" "$prt_wall" "$pov_wall" \
     "$(echo "$pov_wall $prt_wall" | awk '{ print $1 / $2 }')" "$prt_trace" "$pov_trace" \
