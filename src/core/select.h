@@ -13,10 +13,23 @@
 
 namespace prt {
 
+#if defined(__SSE2__)
+namespace select_detail {
+// `a` in a register the compiler knows nothing about. GCC folds minsd and maxsd of two
+// constants by rules other than the processor's (min(NaN, 1) to NaN, where minsd gives 1);
+// with one operand opaque the instruction is always executed. Costs no instruction.
+inline __m128d opaque(double a) {
+  __m128d x = _mm_set_sd(a);
+  asm("" : "+x"(x));
+  return x;
+}
+}  // namespace select_detail
+#endif
+
 // a < b ? a : b (b when either is NaN), as minsd computes it.
 inline double lessOr(double a, double b) {
 #if defined(__SSE2__)
-  return _mm_cvtsd_f64(_mm_min_sd(_mm_set_sd(a), _mm_set_sd(b)));
+  return _mm_cvtsd_f64(_mm_min_sd(select_detail::opaque(a), _mm_set_sd(b)));
 #else
   return a < b ? a : b;
 #endif
@@ -25,7 +38,7 @@ inline double lessOr(double a, double b) {
 // a > b ? a : b (b when either is NaN), as maxsd computes it.
 inline double greaterOr(double a, double b) {
 #if defined(__SSE2__)
-  return _mm_cvtsd_f64(_mm_max_sd(_mm_set_sd(a), _mm_set_sd(b)));
+  return _mm_cvtsd_f64(_mm_max_sd(select_detail::opaque(a), _mm_set_sd(b)));
 #else
   return a > b ? a : b;
 #endif
