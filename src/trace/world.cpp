@@ -1,6 +1,10 @@
 #include "trace/world.h"
 
-#include <algorithm>
+#include <utility>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #include "trace/bvh.h"
 #include "trace/shapes.h"
@@ -56,7 +60,6 @@ class Attenuators {
 }  // namespace
 
 World::World(Scene scene) : scene_(std::move(scene)) {
-  std::vector<Bounds> boxes;
   for (uint32_t i = 0; i < scene_.objects.size(); ++i) {
     const Object& o = scene_.objects[i];
     const double transmissivity = o.material.transmissivity;
@@ -69,8 +72,9 @@ World::World(Scene scene) : scene_(std::move(scene)) {
       const auto& p = std::get<PlaneShape>(o.shape);
       planes_.push_back({p.point, p.normal, transmissivity, i});
     }
-    if (isBounded(o.shape)) boxes.push_back(items_.back().box);
   }
+  std::vector<Bounds> boxes;
+  for (const Item& item : items_) boxes.push_back(item.box);
   bvh_ = QuadBvh(boxes);
   const Bvh order(boxes);
   ranks_.resize(8 * items_.size());
