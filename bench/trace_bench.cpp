@@ -42,7 +42,8 @@ void BM_ComplexScenePixels(benchmark::State& state) {
     benchmark::DoNotOptimize(renderer.renderPixel(pixel, rays));
     pixel = (pixel + 7919) % renderer.pixelCount();
   }
-  state.counters["rays/s"] = benchmark::Counter(static_cast<double>(rays), benchmark::Counter::kIsRate);
+  state.counters["rays/s"] =
+      benchmark::Counter(static_cast<double>(rays), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_ComplexScenePixels);
 

@@ -15,7 +15,6 @@ namespace prt {
 namespace {
 
 namespace fs = std::filesystem;
-using e2e::readFile;
 using e2e::Result;
 using e2e::run;
 
@@ -28,13 +27,13 @@ class ExperimentCliTest : public e2e::ScratchDirTest {
                path("out") + " " + extra);
   }
   std::string header(const std::string& csv) {
-    std::istringstream in(readFile(dir_ / "out" / csv));
+    std::istringstream in(readWholeFile(dir_ / "out" / csv));
     std::string line;
     std::getline(in, line);
     return line;
   }
   int rows(const std::string& csv) {
-    std::istringstream in(readFile(dir_ / "out" / csv));
+    std::istringstream in(readWholeFile(dir_ / "out" / csv));
     std::string line;
     int n = -1;  // not the header
     while (std::getline(in, line)) ++n;
@@ -56,7 +55,7 @@ TEST_F(ExperimentCliTest, Table3) {
             "relative_to_first,paper_s,paper_relative_to_first,source");
   EXPECT_EQ(rows("table3.csv"), 4);
   expectChart("table3.png");
-  const std::string md = readFile(dir_ / "out" / "table3.md");
+  const std::string md = readWholeFile(dir_ / "out" / "table3.md");
   EXPECT_NE(md.find("real runs"), std::string::npos) << md;
 }
 
@@ -72,7 +71,7 @@ TEST_F(ExperimentCliTest, InitialPercent) {
   const Result r = quick("initial-percent", "--slowdown 2,4");
   ASSERT_EQ(r.exitCode, 0) << r.output;
   EXPECT_EQ(rows("initial-percent.csv"), 2 * 3 * 2);  // strategies x percents x sources
-  const std::string csv = readFile(dir_ / "out" / "initial-percent.csv");
+  const std::string csv = readWholeFile(dir_ / "out" / "initial-percent.csv");
   EXPECT_NE(csv.find(",real,"), std::string::npos);
   EXPECT_NE(csv.find(",simulated,"), std::string::npos);
   expectChart("initial-percent-speedup.png");
@@ -86,7 +85,7 @@ TEST_F(ExperimentCliTest, Compare) {
   expectChart("compare-speedup.png");
   expectChart("compare-efficiency.png");
   expectChart("compare-asu.png");
-  const std::string md = readFile(dir_ / "out" / "compare.md");
+  const std::string md = readWholeFile(dir_ / "out" / "compare.md");
   EXPECT_NE(md.find("speedup vs scatter"), std::string::npos) << md;
 }
 
@@ -94,7 +93,7 @@ TEST_F(ExperimentCliTest, Scale) {
   const Result r = quick("scale");
   ASSERT_EQ(r.exitCode, 0) << r.output;
   EXPECT_EQ(rows("scale.csv"), 2 * 5 * 8);  // scenarios x worker counts x strategies
-  const std::string csv = readFile(dir_ / "out" / "scale.csv");
+  const std::string csv = readWholeFile(dir_ / "out" / "scale.csv");
   EXPECT_EQ(csv.find(",real,"), std::string::npos) << "scale is simulated only";
   expectChart("scale-efficiency-homogeneous.png");
   expectChart("scale-asu-heterogeneous.png");

@@ -39,11 +39,6 @@ inline Result run(const std::string& args) {
   return r;
 }
 
-inline std::string readFile(const std::filesystem::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return std::string((std::istreambuf_iterator<char>(in)), {});
-}
-
 // A test fixture with a fresh scratch folder per test.
 class ScratchDirTest : public ::testing::Test {
  protected:

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/input_error.h"
+#include "scene/keywords.h"
 
 namespace prt {
 
@@ -14,19 +15,33 @@ enum class SpeedIndexKind {
   RenderProbe,  // render probePixels() of the scene with the run's settings
 };
 
+namespace speed_index_kind_detail {
+inline constexpr struct {
+  const char* name;
+  SpeedIndexKind kind;
+} kKinds[] = {{"hanoi", SpeedIndexKind::Hanoi}, {"probe", SpeedIndexKind::RenderProbe}};
+}  // namespace speed_index_kind_detail
+
 inline std::vector<std::string> speedIndexKindNames() {
-  return {"hanoi", "probe"};
+  std::vector<std::string> names;
+  for (const auto& k : speed_index_kind_detail::kKinds) names.emplace_back(k.name);
+  return names;
 }
 
 inline std::string speedIndexKindName(SpeedIndexKind kind) {
-  return kind == SpeedIndexKind::Hanoi ? "hanoi" : "probe";
+  for (const auto& k : speed_index_kind_detail::kKinds) {
+    if (k.kind == kind) return k.name;
+  }
+  return "?";
 }
 
 // "hanoi" or "probe"; anything else throws InputError listing the valid names.
 inline SpeedIndexKind parseSpeedIndexKind(const std::string& name) {
-  if (name == "hanoi") return SpeedIndexKind::Hanoi;
-  if (name == "probe") return SpeedIndexKind::RenderProbe;
-  throw InputError("unknown speed index '" + name + "'; valid: hanoi, probe");
+  for (const auto& k : speed_index_kind_detail::kKinds) {
+    if (name == k.name) return k.kind;
+  }
+  throw InputError("unknown speed index '" + name +
+                   "'; valid: " + joinNames(speedIndexKindNames()));
 }
 
 }  // namespace prt

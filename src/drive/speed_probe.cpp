@@ -1,9 +1,9 @@
 #include "drive/speed_probe.h"
 
 #include <algorithm>
-#include <chrono>
 
 #include "core/speed_index.h"
+#include "drive/throttle.h"
 
 namespace prt {
 
@@ -15,27 +15,30 @@ TaskSet probePixels(uint64_t pixelCount) {
   return TaskSet::strided(0, count, pixelCount / count);
 }
 
+namespace {
+
+// The least of `repeats` (at least one) measurements.
+template <typename Measure>
+double fastestOf(int repeats, Measure&& seconds) {
+  double fastest = seconds();
+  for (int i = 1; i < repeats; ++i) fastest = std::min(fastest, seconds());
+  return fastest;
+}
+
+}  // namespace
+
 double measureProbeSeconds(const Renderer& renderer, int repeats) {
-  std::vector<double> times;
-  for (int i = 0; i < std::max(1, repeats); ++i) {
-    times.push_back(probeSeconds(renderer, 1, [](auto&& render) {
-      const auto start = std::chrono::steady_clock::now();
-      render();
-      return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    }));
-  }
-  return *std::min_element(times.begin(), times.end());
+  Throttle plain;  // k = 1: times the probe, waits for nothing
+  return fastestOf(repeats, [&] {
+    return probeSeconds(renderer, 1, [&](auto&& render) { return plain.run(render); });
+  });
 }
 
 double serialSpeedIndexSeconds(SpeedIndexKind kind, const Scene& scene,
                                const RenderSettings& settings) {
   constexpr int kRepeats = 5;
   if (kind == SpeedIndexKind::Hanoi) {
-    double fastest = measureSpeedIndexSeconds(kSpeedIndexDiscs, 1);
-    for (int i = 1; i < kRepeats; ++i) {
-      fastest = std::min(fastest, measureSpeedIndexSeconds(kSpeedIndexDiscs, 1));
-    }
-    return fastest;
+    return fastestOf(kRepeats, [] { return measureSpeedIndexSeconds(kSpeedIndexDiscs, 1); });
   }
   const World world(scene);
   return measureProbeSeconds(Renderer(world, settings), kRepeats);

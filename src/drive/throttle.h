@@ -68,17 +68,17 @@ class Throttle {
     const double cpuStart = threadCpuSeconds();
     fn();
     const double cpu = threadCpuSeconds() - cpuStart;
+    // Before the first stretch lastEnd_ is the clock's epoch: never back to back.
+    const bool backToBack =
+        std::chrono::duration<double>(start - lastEnd_).count() < kBackToBackSeconds;
+    const double lag = backToBack ? lagSeconds_ : 0.0;
     if (slowdown_ > 1.0) {
-      const bool backToBack =
-          hasRun_ && std::chrono::duration<double>(start - lastEnd_).count() < kBackToBackSeconds;
-      const double lag = backToBack ? lagSeconds_ : 0.0;
       std::this_thread::sleep_for(std::chrono::duration<double>(
           throttlePauseSeconds(slowdown_, cpu, secondsSince(start), lag)));
-      lagSeconds_ = std::max(0.0, secondsSince(start) - (slowdown_ * cpu - lag));
     }
     lastEnd_ = std::chrono::steady_clock::now();
-    hasRun_ = true;
     const double wall = std::chrono::duration<double>(lastEnd_ - start).count();
+    if (slowdown_ > 1.0) lagSeconds_ = std::max(0.0, wall - (slowdown_ * cpu - lag));
     return {wall, slowdown_ > 1.0 ? slowdown_ * cpu : wall};
   }
 
@@ -103,7 +103,6 @@ class Throttle {
   double slowdown_;
   double lagSeconds_ = 0;  // how far the last stretch ended behind its schedule
   std::chrono::steady_clock::time_point lastEnd_;
-  bool hasRun_ = false;
 };
 
 }  // namespace prt

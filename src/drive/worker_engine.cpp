@@ -1,5 +1,7 @@
 #include "drive/worker_engine.h"
 
+#include <algorithm>
+
 #include "core/check.h"
 #include "core/speed_index.h"
 #include "drive/speed_probe.h"
@@ -7,6 +9,11 @@
 
 namespace prt {
 namespace {
+
+// Solving for D discs is 2^(D-20) solves for 20 discs plus a few moves. Throttling each
+// 20-disc stretch on its own interleaves workers that start measuring at the same moment,
+// as their rendering interleaves, instead of making them all compete for the cores at once.
+constexpr int kStretchDiscs = 20;
 
 void solveHanoiOnce(int discs) {
   volatile uint64_t sink = solveHanoi(discs);  // the work cannot be optimised away
@@ -17,36 +24,29 @@ void solveHanoiOnce(int discs) {
 
 void WorkerEngine::load(const SceneMsg& scene) {
   world_ = std::make_unique<World>(parseScene(scene.sceneText, "<scene from master>"));
-  renderer_ = std::make_unique<Renderer>(*world_,
-                                         RenderSettings{scene.samplesPerPixel, scene.drtRate});
+  renderer_ =
+      std::make_unique<Renderer>(*world_, RenderSettings{scene.samplesPerPixel, scene.drtRate});
 }
 
 double WorkerEngine::measureSpeedIndex() {
   if (speedIndexKind_ == SpeedIndexKind::RenderProbe) {
     PRT_CHECK(renderer_ != nullptr);
-    constexpr int kProbePieces = 32;  // as many stretches as the Hanoi run below
+    // As many stretches as the Hanoi run of the default disc count.
+    constexpr int kProbePieces = 1 << (kSpeedIndexDiscs - kStretchDiscs);
     return probeSeconds(*renderer_, kProbePieces, [this](auto&& render) {
       return throttle_.measure(render).emulatedSeconds;
     });
   }
-  // Solving for D discs is 2^(D-20) solves for 20 discs plus a few moves. Throttling each
-  // 20-disc stretch on its own interleaves workers that start measuring at the same moment,
-  // as their rendering interleaves, instead of making them all compete for the cores at once.
-  constexpr int kStretchDiscs = 20;
-  if (speedIndexDiscs_ <= kStretchDiscs) {
-    const int discs = speedIndexDiscs_;
-    return throttle_.measure([discs] { solveHanoiOnce(discs); }).emulatedSeconds;
-  }
+  const int discs = std::min(speedIndexDiscs_, kStretchDiscs);
+  const uint64_t stretches = 1ull << std::max(0, speedIndexDiscs_ - kStretchDiscs);
   double seconds = 0;
-  const uint64_t stretches = 1ull << (speedIndexDiscs_ - kStretchDiscs);
   for (uint64_t i = 0; i < stretches; ++i) {
-    seconds += throttle_.measure([] { solveHanoiOnce(kStretchDiscs); }).emulatedSeconds;
+    seconds += throttle_.measure([discs] { solveHanoiOnce(discs); }).emulatedSeconds;
   }
   return seconds;
 }
 
-std::vector<float> WorkerEngine::render(const TaskSet& batch, double& seconds,
-                                        uint64_t& rays) {
+std::vector<float> WorkerEngine::render(const TaskSet& batch, double& seconds, uint64_t& rays) {
   PRT_CHECK(renderer_ != nullptr);
   std::vector<Color> colors;
   seconds = throttle_.run([&] { rays += renderTasks(*renderer_, batch, 1, colors); });

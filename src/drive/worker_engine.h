@@ -27,7 +27,6 @@ class WorkerEngine {
   // time including the slowdown wait, `rays` the rays traced.
   std::vector<float> render(const TaskSet& batch, double& seconds, uint64_t& rays);
 
-  const Throttle& throttle() const { return throttle_; }
 
  private:
   Throttle throttle_;

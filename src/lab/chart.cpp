@@ -110,7 +110,6 @@ std::string gnuplotScript(const Chart& chart, const std::string& pngFile) {
 
 std::string drawChart(const Chart& chart, const std::string& pngPath) {
   const fs::path png = fs::absolute(pngPath);
-  const fs::path directory = png.parent_path();
   const fs::path script = fs::path(png).replace_extension(".gp");
   const std::string text = gnuplotScript(chart, png.filename().string());
   writeFileAtomically(script.string(),
@@ -121,24 +120,18 @@ std::string drawChart(const Chart& chart, const std::string& pngPath) {
     return "gnuplot is not installed (Debian: apt-get install gnuplot-nox); run gnuplot " +
            script.filename().string() + " later to draw it";
   }
-  // Draw to a temporary name in a scratch directory, then move it into place.
+  // The script names the image relative to gnuplot's working folder: drawn in a scratch
+  // folder, the image is then put in place atomically.
   const TempDirectory scratch("prt-chart-");
-  const std::string temporary = gnuplotScript(chart, (scratch.path() / "chart.png").string());
-  const fs::path scratchScript = scratch.path() / "chart.gp";
-  writeFileAtomically(scratchScript.string(),
-                      [&](std::FILE* f) { std::fwrite(temporary.data(), 1, temporary.size(), f); });
   const fs::path log = scratch.path() / "gnuplot.log";
-  const int status = runProgram(gnuplot, {scratchScript.string()}, scratch.path(), log);
+  const int status = runProgram(gnuplot, {script.string()}, scratch.path(), log);
   if (const std::string how = describeExit(status); !how.empty()) {
     return "gnuplot " + how + ": " + lastLines(readWholeFile(log), 5);
   }
-  std::error_code error;
-  fs::rename(scratch.path() / "chart.png", png, error);
-  if (error) {  // another file system: copy, then the copy is renamed into place
-    const fs::path staged = fs::path(png).concat(".tmp-chart");
-    fs::copy_file(scratch.path() / "chart.png", staged, fs::copy_options::overwrite_existing);
-    fs::rename(staged, png);
-  }
+  const std::string image = readWholeFile(scratch.path() / png.filename());
+  if (image.empty()) return "gnuplot drew no image: " + lastLines(readWholeFile(log), 5);
+  writeFileAtomically(png.string(),
+                      [&](std::FILE* f) { std::fwrite(image.data(), 1, image.size(), f); });
   return "";
 }
 

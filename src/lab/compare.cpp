@@ -8,7 +8,6 @@
 #include <map>
 
 #include "balance/strategy.h"
-#include "core/speed_index.h"
 #include "drive/speed_probe.h"
 #include "lab/context.h"
 #include "lab/experiments.h"
@@ -111,7 +110,6 @@ void runCompare(ExperimentContext& cx) {
     chart.title = std::string(f.title) + " of every strategy, real runs, " +
                   std::to_string(slowdowns.size()) + " emulated workers";
     chart.yLabel = f.label;
-    chart.categories.clear();
     for (const std::string& c : cases) chart.categories.push_back("case " + c);
     for (const std::string& strategy : strategies) {
       ChartSeries series{strategy, {}, {}, false};

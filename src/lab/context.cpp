@@ -2,9 +2,11 @@
 
 #include <cstdio>
 #include <filesystem>
-#include <thread>
 
 #include "core/input_error.h"
+#include "core/parallel.h"
+#include "lab/csv_table.h"
+#include "metrics/run_report.h"
 #include "scene/scene_file.h"
 
 namespace prt {
@@ -50,9 +52,7 @@ std::string ExperimentContext::testCase(const std::string& fallback) const {
 }
 
 double ExperimentContext::emulatedMasu() const {
-  double masu = 0;
-  for (double k : slowdowns()) masu += 1.0 / k;
-  return masu;
+  return maximumAchievableSpeedup(1.0, slowdowns());  // worker i's index: k_i times the serial
 }
 
 void ExperimentContext::progress(const std::string& line) const {
@@ -83,14 +83,13 @@ std::string ExperimentContext::emulationNote() const {
   const double demand = emulatedMasu();  // cores the workers keep busy
   std::string list;
   for (double s : k) {
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%s%g", list.empty() ? "" : ",", s);
-    list += buffer;
+    if (!list.empty()) list += ',';
+    list += csvNumber(s);
   }
-  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+  const int cores = hardwareThreads();
   char text[512];
   std::snprintf(text, sizeof text,
-                "%zu emulated workers (--slowdown %s) need %.2f cores; this machine has %u. ",
+                "%zu emulated workers (--slowdown %s) need %.2f cores; this machine has %d. ",
                 k.size(), list.c_str(), demand, cores);
   std::string note = text;
   if (demand <= static_cast<double>(cores) - 0.25) {

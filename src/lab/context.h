@@ -21,7 +21,6 @@ class ExperimentContext {
  public:
   ExperimentContext(std::string name, const ExperimentOptions& options);
 
-  const std::string& name() const { return name_; }
   const ExperimentOptions& options() const { return options_; }
   bool quick() const { return options_.quick; }
   int runs() const;                       // options.runs, or 3 (quick: 1)

@@ -6,10 +6,10 @@
 #include <ctime>
 #include <filesystem>
 #include <fstream>
-#include <thread>
 
 #include "balance/strategy.h"
 #include "core/input_error.h"
+#include "core/parallel.h"
 #include "image/atomic_file.h"
 #include "lab/context.h"
 #include "lab/experiments.h"
@@ -118,14 +118,14 @@ ExperimentOutput runExperiment(const std::string& name, const ExperimentOptions&
   cx.say("# " + std::string(entry.title) + "\n\n");
   cx.say("`" + (options.commandLine.empty() ? "prt experiment " + name : options.commandLine) +
          "`, " + today() + ", on " + cpuModel() + " (" +
-         std::to_string(std::thread::hardware_concurrency()) + " cores)" +
+         std::to_string(hardwareThreads()) + " cores)" +
          (options.quick ? "; **quick version** (small images, reduced sweep)" : "") + ".\n\n");
   const std::string loadBefore = loadNote("at the start");
   entry.run(cx);
 
   ExperimentOutput& out = cx.output();
   out.summary += "\nMachine load: " + loadBefore + ", " + loadNote("at the end") + " (" +
-                 std::to_string(std::thread::hardware_concurrency()) +
+                 std::to_string(hardwareThreads()) +
                  " cores; real runs are only faithful on an otherwise idle machine).\n";
   out.summary += "\nFiles: ";
   for (size_t i = 0; i < out.files.size(); ++i) {

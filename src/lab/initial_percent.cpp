@@ -4,7 +4,6 @@
 
 #include <map>
 
-#include "core/speed_index.h"
 #include "drive/speed_probe.h"
 #include "lab/context.h"
 #include "lab/experiments.h"

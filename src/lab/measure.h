@@ -38,8 +38,6 @@ class SerialReference {
 
   double seconds();  // the current serial time, measured again first if stale
   const CostMap& costMap() const { return *first_.costMap; }  // of the first measurement
-  const std::vector<double>& measurements() const { return all_; }
-  uint64_t rays() const { return first_.rays; }
   // For summaries: "2.66 s" or "2.61 s to 2.74 s (5 measurements)".
   std::string describe() const;
 

@@ -9,7 +9,6 @@
 #include <map>
 
 #include "balance/strategy.h"
-#include "core/speed_index.h"
 #include "drive/speed_probe.h"
 #include "lab/context.h"
 #include "lab/experiments.h"

@@ -1,7 +1,6 @@
 // table3: the serial ray tracer's time for the paper's test cases A-D (Table III), one
 // thread, on the benchmark scene, beside the paper's own times.
 
-#include <cmath>
 
 #include "core/speed_index.h"
 #include "drive/speed_probe.h"
