@@ -8,7 +8,6 @@
 #include <map>
 
 #include "balance/strategy.h"
-#include "drive/speed_probe.h"
 #include "lab/context.h"
 #include "lab/experiments.h"
 #include "lab/measure.h"
@@ -44,12 +43,9 @@ void runCompare(ExperimentContext& cx) {
   if (strategies.empty()) strategies = strategyNames();
   const Scene scene = cx.scene(64, 48);
   const std::vector<double> slowdowns = cx.slowdowns();
-  const double masterIndex =
-      serialSpeedIndexSeconds(SpeedIndexKind::Hanoi, scene, RenderSettings{});
+  const double masterIndex = cx.masterSpeedIndex(scene);
 
-  std::vector<std::string> columns = {"case", "strategy", "source", "runs"};
-  for (const std::string& c : summaryColumns()) columns.push_back(c);
-  CsvTable table(columns);
+  CsvTable table(summaryColumns({"case", "strategy", "source", "runs"}));
   CsvTable runs({"case", "strategy", "run", "serial_s", "elapsed_s", "speedup", "efficiency",
                  "masu", "asu", "messages", "bytes"});
   // results[source][case][strategy]
@@ -82,11 +78,9 @@ void runCompare(ExperimentContext& cx) {
       results["simulated"][c][strategy] = medianSummary(
           {runSimulated(serial.costMap(), parallelOptions(strategy, slowdowns), masterIndex)});
       for (const char* source : {"real", "simulated"}) {
-        std::vector<std::string> row = {
-            c, strategy, source, std::string(source) == "real" ? std::to_string(cx.runs()) : "1"};
-        for (const std::string& cell : summaryCells(results[source][c][strategy]))
-          row.push_back(cell);
-        table.addRow(row);
+        table.addRow(summaryRow(
+            {c, strategy, source, std::string(source) == "real" ? std::to_string(cx.runs()) : "1"},
+            results[source][c][strategy]));
       }
     }
   }

@@ -5,6 +5,7 @@
 
 #include "core/input_error.h"
 #include "core/parallel.h"
+#include "drive/speed_probe.h"
 #include "lab/csv_table.h"
 #include "metrics/run_report.h"
 #include "scene/scene_file.h"
@@ -53,6 +54,17 @@ std::string ExperimentContext::testCase(const std::string& fallback) const {
 
 double ExperimentContext::emulatedMasu() const {
   return maximumAchievableSpeedup(1.0, slowdowns());  // worker i's index: k_i times the serial
+}
+
+std::pair<std::string, double> ExperimentContext::emulatedMasuLine() const {
+  const double masu = emulatedMasu();
+  char label[64];
+  std::snprintf(label, sizeof label, "emulated MASU %.2f", masu);
+  return {label, masu};
+}
+
+double ExperimentContext::masterSpeedIndex(const Scene& scene) const {
+  return serialSpeedIndexSeconds(SpeedIndexKind::Hanoi, scene, RenderSettings{});
 }
 
 void ExperimentContext::progress(const std::string& line) const {

@@ -4,6 +4,7 @@
 // files, charts and the summary into the output directory. Internal to the lab library.
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "lab/chart.h"
@@ -43,6 +44,10 @@ class ExperimentContext {
 
   // The MASU a perfect speed index would give the emulated workers: the sum of 1/k_i.
   double emulatedMasu() const;
+  // A chart's reference line at emulatedMasu(), labelled "emulated MASU 1.50".
+  std::pair<std::string, double> emulatedMasuLine() const;
+  // The serial machine's speed index: the fastest of five Towers of Hanoi runs here.
+  double masterSpeedIndex(const Scene& scene) const;
   // "4 emulated workers (--slowdown 2,2,4,4) need 1.5 cores; this machine has 2: ...".
   std::string emulationNote() const;
 

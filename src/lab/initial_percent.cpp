@@ -4,7 +4,6 @@
 
 #include <map>
 
-#include "drive/speed_probe.h"
 #include "lab/context.h"
 #include "lab/experiments.h"
 #include "lab/measure.h"
@@ -23,12 +22,9 @@ void runInitialPercent(ExperimentContext& cx) {
 
   cx.progress("serial time and cost map, case " + testCase);
   SerialReference serial(scene, settings);
-  const double masterIndex =
-      serialSpeedIndexSeconds(SpeedIndexKind::Hanoi, scene, RenderSettings{});
+  const double masterIndex = cx.masterSpeedIndex(scene);
 
-  std::vector<std::string> columns = {"strategy", "initial_percent", "source", "runs"};
-  for (const std::string& c : summaryColumns()) columns.push_back(c);
-  CsvTable table(columns);
+  CsvTable table(summaryColumns({"strategy", "initial_percent", "source", "runs"}));
   CsvTable runs({"strategy", "initial_percent", "run", "serial_s", "elapsed_s", "speedup",
                  "efficiency", "asu"});
   auto optionsFor = [&](const std::string& strategy, double percent) {
@@ -58,6 +54,10 @@ void runInitialPercent(ExperimentContext& cx) {
   }
 
   Chart speedup, efficiency;
+  struct Best {
+    double speedup = -1, percent = 0;
+  };
+  std::map<std::string, std::map<std::string, Best>> best;  // [strategy][source]
   for (const std::string& strategy : strategies) {
     ChartSeries realSpeedup{strategy + " (real)", {}, {}, false};
     ChartSeries simSpeedup{strategy + " (simulated)", {}, {}, true};
@@ -68,11 +68,11 @@ void runInitialPercent(ExperimentContext& cx) {
       const RunSummary sim =
           medianSummary({runSimulated(serial.costMap(), optionsFor(strategy, p), masterIndex)});
       for (const auto& [source, s] : {std::pair{"real", real}, std::pair{"simulated", sim}}) {
-        std::vector<std::string> row = {
-            strategy, csvNumber(p), source,
-            source == std::string("real") ? std::to_string(cx.runs()) : "1"};
-        for (const std::string& cell : summaryCells(s)) row.push_back(cell);
-        table.addRow(row);
+        table.addRow(summaryRow({strategy, csvNumber(p), source,
+                                 source == std::string("real") ? std::to_string(cx.runs()) : "1"},
+                                s));
+        Best& b = best[strategy][source];
+        if (s.speedup > b.speedup) b = {s.speedup, p};
       }
       for (ChartSeries* series : {&realSpeedup, &simSpeedup, &realEfficiency, &simEfficiency}) {
         series->x.push_back(p);
@@ -96,10 +96,7 @@ void runInitialPercent(ExperimentContext& cx) {
   speedup.xLabel = "initial percentage";
   speedup.yLabel = "speed-up (serial time / parallel time)";
   speedup.yMin = 0;
-  const double masu = cx.emulatedMasu();
-  char label[64];
-  std::snprintf(label, sizeof label, "emulated MASU %.2f", masu);
-  speedup.referenceLines = {{label, masu}};
+  speedup.referenceLines = {cx.emulatedMasuLine()};
   cx.draw(speedup, "initial-percent-speedup.png");
   efficiency.title = "Fig. 18: efficiency against the initial percentage (" + where + ")";
   efficiency.xLabel = "initial percentage";
@@ -121,17 +118,9 @@ void runInitialPercent(ExperimentContext& cx) {
          serial.describe() + ". " + cx.emulationNote() + "\n\n");
   for (const std::string& strategy : strategies) {
     for (const char* source : {"real", "simulated"}) {
-      double best = -1, bestPercent = 0;
-      for (const auto& row : table.rows()) {
-        if (row[0] != strategy || row[2] != source) continue;
-        const double s = std::stod(row[table.column("speedup")]);
-        if (s > best) {
-          best = s;
-          bestPercent = std::stod(row[1]);
-        }
-      }
-      cx.say("- " + strategy + ", " + source + ": best speed-up " + csvNumber(best, 3) + " at " +
-             csvNumber(bestPercent) + " %\n");
+      const Best& b = best[strategy][source];
+      cx.say("- " + strategy + ", " + source + ": best speed-up " + csvNumber(b.speedup, 3) +
+             " at " + csvNumber(b.percent) + " %\n");
     }
   }
   cx.say("\n" + markdownTable(table, {"strategy", "initial_percent", "source", "elapsed_s",

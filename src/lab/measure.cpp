@@ -109,14 +109,24 @@ RunSummary medianSummary(const std::vector<RunReport>& reports) {
   return s;
 }
 
-std::vector<std::string> summaryColumns() {
-  return {"elapsed_s", "speedup", "efficiency", "masu", "asu", "messages", "bytes"};
+std::vector<std::string> summaryColumns(std::vector<std::string> head) {
+  for (const char* c : {"elapsed_s", "speedup", "efficiency", "masu", "asu", "messages", "bytes"}) {
+    head.emplace_back(c);
+  }
+  return head;
 }
 
-std::vector<std::string> summaryCells(const RunSummary& s) {
-  return {csvNumber(s.elapsedSeconds, 4), csvNumber(s.speedup, 4), csvNumber(s.efficiency, 4),
-          csvNumber(s.masu, 4),           csvNumber(s.asu, 4),     csvNumber(s.messages, 8),
-          csvNumber(s.bytes, 10)};
+std::vector<std::string> summaryRow(std::vector<std::string> head, const RunSummary& s) {
+  for (const auto& [value, digits] : {std::pair{s.elapsedSeconds, 4},
+                                      {s.speedup, 4},
+                                      {s.efficiency, 4},
+                                      {s.masu, 4},
+                                      {s.asu, 4},
+                                      {s.messages, 8},
+                                      {s.bytes, 10}}) {
+    head.push_back(csvNumber(value, digits));
+  }
+  return head;
 }
 
 ParallelOptions parallelOptions(const std::string& strategy, const std::vector<double>& slowdowns) {

@@ -76,9 +76,10 @@ RunSummary medianSummary(const std::vector<RunReport>& reports);
 
 double median(std::vector<double> values);
 
-// CSV columns and cells for a RunSummary, in this order.
-std::vector<std::string> summaryColumns();  // elapsed_s, speedup, efficiency, masu, asu, ...
-std::vector<std::string> summaryCells(const RunSummary& s);
+// A CSV header and row: the leading columns `head`, then a RunSummary's, in this order:
+// elapsed_s, speedup, efficiency, masu, asu, messages, bytes.
+std::vector<std::string> summaryColumns(std::vector<std::string> head);
+std::vector<std::string> summaryRow(std::vector<std::string> head, const RunSummary& s);
 
 // A ParallelOptions for `strategy` on the emulated workers `slowdowns`.
 ParallelOptions parallelOptions(const std::string& strategy, const std::vector<double>& slowdowns);

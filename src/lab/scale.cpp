@@ -9,7 +9,6 @@
 #include <map>
 
 #include "balance/strategy.h"
-#include "drive/speed_probe.h"
 #include "lab/context.h"
 #include "lab/experiments.h"
 #include "lab/measure.h"
@@ -44,10 +43,9 @@ void runScale(ExperimentContext& cx) {
               std::to_string(scene.image.width) + "x" + std::to_string(scene.image.height));
   const SerialMeasurement serial = measureSerial(scene, cx.settings(testCase), 1, true);
   const CostMap costs = serial.costMap->scaledTo(serialSeconds);
-  const double speedIndex = serialSpeedIndexSeconds(SpeedIndexKind::Hanoi, scene, RenderSettings{});
+  const double speedIndex = cx.masterSpeedIndex(scene);
 
-  std::vector<std::string> columns = {"scenario", "workers", "strategy", "source"};
-  for (const std::string& c : summaryColumns()) columns.push_back(c);
+  std::vector<std::string> columns = summaryColumns({"scenario", "workers", "strategy", "source"});
   columns.push_back("simulation_wall_s");
   CsvTable table(columns);
   // efficiency[scenario][strategy][workers], asu likewise
@@ -67,8 +65,8 @@ void runScale(ExperimentContext& cx) {
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         const RunSummary s = medianSummary({run.report});
         results[scenario][strategy][n] = s;
-        std::vector<std::string> row = {scenario, std::to_string(n), strategy, "simulated"};
-        for (const std::string& cell : summaryCells(s)) row.push_back(cell);
+        std::vector<std::string> row =
+            summaryRow({scenario, std::to_string(n), strategy, "simulated"}, s);
         row.push_back(csvNumber(wall, 3));
         table.addRow(row);
       }

@@ -91,9 +91,7 @@ void runSpeedIndex(ExperimentContext& cx) {
     chart.series.push_back(
         {titles[i], {}, {summaries[i].masu, summaries[i].asu, summaries[i].speedup}, false});
   }
-  char label[64];
-  std::snprintf(label, sizeof label, "emulated MASU %.2f", emulatedMasu);
-  chart.referenceLines = {{label, emulatedMasu}};
+  chart.referenceLines = {cx.emulatedMasuLine()};
   cx.draw(chart, "speed-index.png");
 
   cx.say("Real runs: the reservoir (initial 80 %) on `" + cx.options().scenePath + "`, case " +

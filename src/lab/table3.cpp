@@ -1,9 +1,9 @@
 // table3: the serial ray tracer's time for the paper's test cases A-D (Table III), one
 // thread, on the benchmark scene, beside the paper's own times.
 
+#include <cstdio>
 
 #include "core/speed_index.h"
-#include "drive/speed_probe.h"
 #include "lab/context.h"
 #include "lab/experiments.h"
 #include "lab/measure.h"
@@ -33,7 +33,7 @@ void runTable3(ExperimentContext& cx) {
   std::vector<std::string> cases = cx.options().cases;
   if (cases.empty()) cases = {"A", "B", "C", "D"};
   const Scene scene = cx.scene(80, 60);
-  const double speedIndex = serialSpeedIndexSeconds(SpeedIndexKind::Hanoi, scene, RenderSettings{});
+  const double speedIndex = cx.masterSpeedIndex(scene);
 
   CsvTable runs({"case", "run", "seconds", "rays"});
   CsvTable table({"case", "drt", "ss", "width", "height", "runs", "median_s", "min_s", "max_s",
