@@ -140,9 +140,7 @@ int runCompare(const CompareOptions& o) {
     writeImage(povImage, (dir / (stem + ".pov.png")).string());
     const std::string pair = (dir / (stem + ".compare.png")).string();
     writeImage(sideBySide(a, b, o.diffScale), pair);
-    writeFileAtomically((dir / povOptions.fileName).string(), [&](std::FILE* file) {
-      std::fwrite(povText.data(), 1, povText.size(), file);
-    });
+    writeFileAtomically((dir / povOptions.fileName).string(), povText);
     std::printf("  wrote %s (PRT | POV-Ray | difference x%g)\n", pair.c_str(), o.diffScale);
   }
   return 0;

@@ -44,8 +44,7 @@ int runExport(const ExportOptions& o) {
   options.areaLightGrid = o.areaGrid;
   options.fileName = std::filesystem::path(o.output).filename().string();
   const std::string text = toPovray(scene, settings, options);
-  writeFileAtomically(o.output,
-                      [&](std::FILE* file) { std::fwrite(text.data(), 1, text.size(), file); });
+  writeFileAtomically(o.output, text);
   if (!o.quiet) {
     std::printf("%s: POV-Ray 3.7 scene for %dx%d pixels, %d spp\n", o.output.c_str(),
                 scene.image.width, scene.image.height, settings.samplesPerPixel);

@@ -48,10 +48,6 @@ std::optional<double> serialSeconds(const RenderOptions& o, const Scene& scene,
   return stats.seconds;
 }
 
-void writeText(const std::string& path, const std::string& text) {
-  writeFileAtomically(path, [&](std::FILE* f) { std::fwrite(text.data(), 1, text.size(), f); });
-}
-
 }  // namespace
 
 void addParallelOptions(CLI::App& cmd, RenderOptions& o) {
@@ -133,10 +129,11 @@ ParallelOptions toParallelOptions(const RenderOptions& o, int workers) {
 
 int finishParallelRun(const RenderOptions& o, const Scene& scene, const ParallelRun& run) {
   writeImage(run.image, scene.image.output);
-  if (!o.reportPath.empty()) writeText(o.reportPath, run.report.toJson());
+  if (!o.reportPath.empty()) writeFileAtomically(o.reportPath, run.report.toJson());
   if (!o.tracePath.empty()) {
-    writeText(o.tracePath, chromeTraceJson(run.events, static_cast<int>(run.report.workers.size()),
-                                           run.report.elapsedSeconds));
+    writeFileAtomically(o.tracePath,
+                        chromeTraceJson(run.events, static_cast<int>(run.report.workers.size()),
+                                        run.report.elapsedSeconds));
   }
   if (!o.ownershipPath.empty()) writeImage(ownershipImage(run.image, run.owner), o.ownershipPath);
   if (!o.quiet) {

@@ -49,10 +49,6 @@ struct SimulateOptions {
 
 constexpr double kDefaultSerialSeconds = 60;
 
-void writeText(const std::string& path, const std::string& text) {
-  writeFileAtomically(path, [&](std::FILE* f) { std::fwrite(text.data(), 1, text.size(), f); });
-}
-
 CostMap loadCostMap(const SimulateOptions& o, std::string& source) {
   if (o.costMapPath.empty()) {
     const int width = o.width.value_or(640);
@@ -109,10 +105,11 @@ int runSimulate(const SimulateOptions& o) {
   const double wall =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-  if (!o.reportPath.empty()) writeText(o.reportPath, run.report.toJson());
+  if (!o.reportPath.empty()) writeFileAtomically(o.reportPath, run.report.toJson());
   if (!o.tracePath.empty()) {
-    writeText(o.tracePath, chromeTraceJson(run.events, static_cast<int>(run.report.workers.size()),
-                                           run.report.elapsedSeconds));
+    writeFileAtomically(o.tracePath,
+                        chromeTraceJson(run.events, static_cast<int>(run.report.workers.size()),
+                                        run.report.elapsedSeconds));
   }
   if (!o.quiet) {
     std::printf("simulated %dx%d, %s (%.3f s serial); %llu events in %.3f s of wall time\n%s",

@@ -83,4 +83,9 @@ void writeFileAtomically(const std::string& path,
   }
 }
 
+void writeFileAtomically(const std::string& path, std::string_view contents) {
+  writeFileAtomically(path,
+                      [&](std::FILE* f) { std::fwrite(contents.data(), 1, contents.size(), f); });
+}
+
 }  // namespace prt

@@ -14,6 +14,7 @@
 #include <cstdio>
 #include <functional>
 #include <string>
+#include <string_view>
 
 namespace prt {
 
@@ -24,5 +25,8 @@ namespace prt {
 // throws, unchanged.
 void writeFileAtomically(const std::string& path,
                          const std::function<void(std::FILE*)>& writeContents);
+
+// The same, with the whole contents in hand (text or bytes).
+void writeFileAtomically(const std::string& path, std::string_view contents);
 
 }  // namespace prt

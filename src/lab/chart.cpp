@@ -112,8 +112,7 @@ std::string drawChart(const Chart& chart, const std::string& pngPath) {
   const fs::path png = fs::absolute(pngPath);
   const fs::path script = fs::path(png).replace_extension(".gp");
   const std::string text = gnuplotScript(chart, png.filename().string());
-  writeFileAtomically(script.string(),
-                      [&](std::FILE* f) { std::fwrite(text.data(), 1, text.size(), f); });
+  writeFileAtomically(script.string(), text);
 
   const std::string gnuplot = findProgram("gnuplot");
   if (gnuplot.empty()) {
@@ -130,8 +129,7 @@ std::string drawChart(const Chart& chart, const std::string& pngPath) {
   }
   const std::string image = readWholeFile(scratch.path() / png.filename());
   if (image.empty()) return "gnuplot drew no image: " + lastLines(readWholeFile(log), 5);
-  writeFileAtomically(png.string(),
-                      [&](std::FILE* f) { std::fwrite(image.data(), 1, image.size(), f); });
+  writeFileAtomically(png.string(), image);
   return "";
 }
 

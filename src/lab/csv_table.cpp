@@ -55,8 +55,7 @@ std::string CsvTable::text() const {
 
 void CsvTable::write(const std::string& path) const {
   const std::string contents = text();
-  writeFileAtomically(path,
-                      [&](std::FILE* f) { std::fwrite(contents.data(), 1, contents.size(), f); });
+  writeFileAtomically(path, contents);
 }
 
 std::string csvNumber(double value, int significant) {

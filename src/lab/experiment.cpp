@@ -134,8 +134,7 @@ ExperimentOutput runExperiment(const std::string& name, const ExperimentOptions&
   out.summary += ".\n";
   for (const std::string& w : out.warnings) out.summary += "\nWarning: " + w + "\n";
   const std::string md = (std::filesystem::path(options.outDir) / (name + ".md")).string();
-  writeFileAtomically(
-      md, [&](std::FILE* f) { std::fwrite(out.summary.data(), 1, out.summary.size(), f); });
+  writeFileAtomically(md, out.summary);
   out.files.push_back(name + ".md");
   return out;
 }
