@@ -8,9 +8,12 @@
 #   scripts/run-experiments.sh [DIR] [-- extra flags]
 set -euo pipefail
 cd "$(dirname "$0")/.."
-out=${1:-docs/results}
-shift || true
-[ "${1:-}" = "--" ] && shift
+out=docs/results
+if [ $# -gt 0 ] && [ "$1" != "--" ]; then
+  out=$1
+  shift
+fi
+if [ "${1:-}" = "--" ]; then shift; fi
 [ -x build/prt ] || bash scripts/build.sh release
 for name in table3 speed-index initial-percent compare scale; do
   echo "== prt experiment $name --out $out $*"
