@@ -59,7 +59,8 @@ Color Shader::direct(const Hit& hit, const Vec3& n, const Vec3& toEye, Rng& rng,
   const double eps = surfaceEpsilon(hit.point);
   const Vec3 origin = hit.point + eps * n;
 
-  for (const Light& light : scene.lights) {
+  for (size_t l = 0; l < scene.lights.size(); ++l) {
+    const Light& light = scene.lights[l];
     const bool point = std::holds_alternative<PointLight>(light.shape);
     const int samples = point ? 1 : settings_.drtRate;
     Color sum;
@@ -83,7 +84,7 @@ Color Shader::direct(const Hit& hit, const Vec3& n, const Vec3& toEye, Rng& rng,
       const double cosine = dot(n, toLight);
       if (cosine <= 0) continue;
       ++rays;
-      const double visible = world_.transmittance(Ray{origin, toLight}, 0.0, distance);
+      const double visible = world_.transmittanceToLight(l, Ray{origin, toLight}, distance);
       if (visible <= 0) continue;
       const double highlight = std::max(0.0, dot(reflect(-toLight, n), toEye));
       const Color diffuse = (m.diffuse * cosine) * m.color;

@@ -57,6 +57,24 @@ class Attenuators {
   uint32_t count_ = 0;
 };
 
+// Every point a shadow ray towards the light may aim at.
+Bounds boundsOf(const LightShape& shape) {
+  Bounds b;
+  if (const auto* p = std::get_if<PointLight>(&shape)) {
+    b.extend(p->position);
+  } else if (const auto* s = std::get_if<SphereLight>(&shape)) {
+    b.extend(s->center - Vec3(s->radius));
+    b.extend(s->center + Vec3(s->radius));
+  } else {
+    const auto& r = std::get<RectLight>(shape);
+    for (const Vec3& q : {r.corner, r.corner + r.edge1, r.corner + r.edge2,
+                          r.corner + r.edge1 + r.edge2}) {
+      b.extend(q);
+    }
+  }
+  return b;
+}
+
 }  // namespace
 
 World::World(Scene scene) : scene_(std::move(scene)) {
@@ -76,6 +94,9 @@ World::World(Scene scene) : scene_(std::move(scene)) {
   std::vector<Bounds> boxes;
   for (const Item& item : items_) boxes.push_back(item.box);
   bvh_ = QuadBvh(boxes);
+  std::vector<Bounds> lights;
+  for (const Light& light : scene_.lights) lights.push_back(boundsOf(light.shape));
+  shafts_ = ShadowShafts(boxes, lights);
   const Bvh order(boxes);
   ranks_.resize(8 * items_.size());
   for (int octant = 0; octant < 8; ++octant) {
@@ -140,7 +161,9 @@ bool World::intersect(const Ray& ray, double tMin, double tMax, Hit& hit) const 
   return true;
 }
 
-double World::transmittance(const Ray& ray, double tMin, double distance) const {
+template <typename Candidates>
+double World::transmittance(const Ray& ray, double tMin, double distance,
+                            Candidates&& candidates) const {
   double passed = 1.0;
   for (const Plane& p : planes_) {
     const double t = planeDistance(p.point, p.normal, ray);
@@ -152,7 +175,7 @@ double World::transmittance(const Ray& ray, double tMin, double distance) const 
   const uint32_t* ranks = ranks_.data() + octantOf(ray.direction) * items_.size();
   Attenuators attenuators;
   bool opaque = false;
-  bvh_.traverse<false>(ray, tMin, distance, [&](uint32_t index) {
+  candidates([&](uint32_t index) {
     const Item& item = items_[index];
     int crossings = 0;
     if (item.sphere) {
@@ -173,6 +196,22 @@ double World::transmittance(const Ray& ray, double tMin, double distance) const 
     return distance;
   });
   return opaque ? 0.0 : attenuators.apply(passed);
+}
+
+double World::transmittance(const Ray& ray, double tMin, double distance) const {
+  return transmittance(ray, tMin, distance, [&](auto&& visit) {
+    bvh_.traverse<false>(ray, tMin, distance, visit);
+  });
+}
+
+double World::transmittanceToLight(size_t light, const Ray& ray, double distance) const {
+  const auto listed = shafts_.candidates(light, ray.origin);
+  if (!listed) return transmittance(ray, 0.0, distance);
+  return transmittance(ray, 0.0, distance, [&](auto&& visit) {
+    for (const uint32_t index : *listed) {
+      if (visit(index) < 0) return;
+    }
+  });
 }
 
 }  // namespace prt

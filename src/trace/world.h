@@ -1,6 +1,7 @@
 #pragma once
 // World: a Scene prepared for tracing — its objects in a BVH (planes, being unbounded, on a
-// side list) — answering the two questions the shader asks: the nearest surface along a ray,
+// side list), and for each light the objects that can shadow each part of space
+// (ShadowShafts) — answering the two questions the shader asks: the nearest surface along a ray,
 // and how much light gets through along a shadow ray. Immutable after construction; safe to
 // share between threads.
 //
@@ -15,6 +16,7 @@
 
 #include "trace/quad_bvh.h"
 #include "trace/scene.h"
+#include "trace/shadow_shafts.h"
 
 namespace prt {
 
@@ -38,6 +40,11 @@ class World {
   // Fraction of light that survives from ray.origin to distance `distance` along the ray: the
   // product of the transmissivities of every surface crossed (0 as soon as one is opaque).
   double transmittance(const Ray& ray, double tMin, double distance) const;
+  // The same, from 0, for a shadow ray from ray.origin to a point of scene().lights[light] (any
+  // point the shader samples: on the point, inside the sphere's box, on the rectangle) at
+  // `distance`: answered from the light's shadow shafts where they know the few objects that
+  // can be in the way, bit for bit as from the BVH.
+  double transmittanceToLight(size_t light, const Ray& ray, double distance) const;
 
  private:
   // A bounded object as the BVH's item, flattened for the hot loops.
@@ -54,8 +61,13 @@ class World {
     uint32_t object = 0;
   };
 
+  template <typename Candidates>
+  double transmittance(const Ray& ray, double tMin, double distance,
+                       Candidates&& candidates) const;
+
   Scene scene_;
   QuadBvh bvh_;
+  ShadowShafts shafts_;
   std::vector<Item> items_;
   std::vector<Plane> planes_;
   // ranks_[octant * items + item]: the item's place in the tie-breaking order, from 1.

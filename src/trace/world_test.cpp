@@ -4,6 +4,7 @@
 
 #include "core/rng.h"
 #include "trace/bvh.h"
+#include "trace/sampling.h"
 #include "trace/shapes.h"
 
 namespace prt {
@@ -180,6 +181,49 @@ TEST(WorldTest, EqualDistancesFollowTheReferenceOrder) {
   }
   EXPECT_GT(first, 100);
   EXPECT_GT(second, 100);
+}
+
+TEST(WorldTest, ShadowRaysTowardsALightMatchTheReference) {
+  Scene scene = testScene(5, 60);
+  scene.lights.push_back({PointLight{{1, 9, -2}}});
+  scene.lights.push_back({SphereLight{{-3, 6, 3}, 0.8}});
+  scene.lights.push_back({RectLight{{4, 3, -1}, {0, 0, 2}, {0, 1.5, 0}}});
+  const World world(scene);
+  const ReferenceWorld reference(scene);
+  Rng rng(21);
+  int partial = 0, blocked = 0;
+  for (int i = 0; i < 30000; ++i) {
+    // From a point of space or, as the shader does, just off a surface the ray hit.
+    Vec3 origin(rng.uniform() * 12 - 6, rng.uniform() * 6 + 0.01, rng.uniform() * 12 - 6);
+    Hit hit;
+    const Ray probe = randomRay(rng);
+    if (rng.uniform() < 0.6 && world.intersect(probe, 0, 1e9, hit)) {
+      const Vec3 n = dot(probe.direction, hit.normal) < 0 ? hit.normal : -hit.normal;
+      origin = hit.point + 1e-9 * n;
+    }
+    const size_t l = i % scene.lights.size();
+    Vec3 target;
+    if (const auto* p = std::get_if<PointLight>(&scene.lights[l].shape)) {
+      target = p->position;
+    } else if (const auto* s = std::get_if<SphereLight>(&scene.lights[l].shape)) {
+      target = sampleDisc(s->center, normalize(s->center - origin), s->radius, rng.uniform(),
+                          rng.uniform());
+    } else {
+      const auto& r = std::get<RectLight>(scene.lights[l].shape);
+      target = r.corner + rng.uniform() * r.edge1 + rng.uniform() * r.edge2;
+    }
+    Vec3 toLight = target - origin;
+    const double distance = length(toLight);
+    toLight /= distance;
+    const Ray ray{origin, toLight};
+    const double passed = world.transmittanceToLight(l, ray, distance);
+    ASSERT_EQ(passed, reference.transmittance(ray, 0, distance)) << "ray " << i;
+    ASSERT_EQ(passed, world.transmittance(ray, 0, distance)) << "ray " << i;
+    partial += passed > 0 && passed < 1;
+    blocked += passed == 0;
+  }
+  EXPECT_GT(partial, 1000);
+  EXPECT_GT(blocked, 1000);
 }
 
 }  // namespace
