@@ -132,6 +132,7 @@ void ShadowShafts::refine(const std::vector<Bounds>& items, const Bounds& light,
   std::vector<uint32_t> kept;
   for (const uint32_t i : candidates) {
     if (shaft.meets(items[i])) kept.push_back(i);
+    if (kept.size() > kCrowded) break;  // crowded: how crowded does not matter
   }
   const bool single = region.hi[0] - region.lo[0] == 1 && region.hi[1] - region.lo[1] == 1 &&
                       region.hi[2] - region.lo[2] == 1;
