@@ -84,6 +84,8 @@ ShadowShafts::ShadowShafts(const std::vector<Bounds>& items, const std::vector<B
   }
   // Far above the rounding of any coordinate, of a cell lookup or of a shadow ray's end.
   margin_ = 1e-7 * std::max(1.0, magnitude);
+  // From the objects up to the lights: the floor around the objects, under the lights, is in.
+  for (const Bounds& l : lights) grid.extend(l);
   grid = widened(grid, margin_);
 
   // About kCells cells, as near cubes as the grid's shape allows; an axis shorter than a cell
