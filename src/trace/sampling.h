@@ -17,10 +17,9 @@ inline double stratum(int i, int n, double u) { return n == 1 ? u : (i + u) / n;
 // The mean of n samples summing to `sum`; sum itself, bit for bit, when n is 1.
 inline Vec3 meanOf(const Vec3& sum, int n) { return n == 1 ? sum : sum / n; }
 
-// A direction uniformly distributed over the cone of half-angle `halfAngleRadians` around unit
-// vector `axis`; u1, u2 in [0, 1).
-inline Vec3 sampleCone(const Vec3& axis, double halfAngleRadians, double u1, double u2) {
-  const double cosMax = cosRadians(halfAngleRadians);
+// A direction uniformly distributed over the cone around unit vector `axis` whose half-angle
+// has cosine `cosMax` (cosRadians of it: computed once per material); u1, u2 in [0, 1).
+inline Vec3 sampleCone(const Vec3& axis, double cosMax, double u1, double u2) {
   const double cosTheta = 1.0 - u1 * (1.0 - cosMax);
   const double sinTheta = std::sqrt(std::max(0.0, 1.0 - cosTheta * cosTheta));
   double sinPhi, cosPhi;

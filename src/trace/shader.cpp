@@ -49,14 +49,26 @@ bool refract(const Vec3& d, const Vec3& n, double eta, Vec3& transmitted) {
 }
 
 Shader::Shader(const World& world, const RenderSettings& settings)
-    : world_(world), settings_(settings) {}
+    : world_(world), settings_(settings) {
+  auto spread = [](double degrees) {
+    const double radians = degrees * kDegrees;
+    return Spread{radians, cosRadians(radians)};
+  };
+  for (const Object& o : world.scene().objects) {
+    spreads_.push_back({spread(o.material.glossDegrees), spread(o.material.translucencyDegrees)});
+  }
+}
 
 Color Shader::direct(const Hit& hit, const Vec3& n, const Vec3& toEye, Rng& rng,
+                     uint64_t& rays) const {
+  return direct(hit, n, toEye, surfaceEpsilon(hit.point), rng, rays);
+}
+
+Color Shader::direct(const Hit& hit, const Vec3& n, const Vec3& toEye, double eps, Rng& rng,
                      uint64_t& rays) const {
   const Scene& scene = world_.scene();
   const Material& m = world_.material(hit.object);
   Color result = m.ambient * scene.environment.ambient * m.color;
-  const double eps = surfaceEpsilon(hit.point);
   const Vec3 origin = hit.point + eps * n;
 
   for (size_t l = 0; l < scene.lights.size(); ++l) {
@@ -103,15 +115,15 @@ Color Shader::direct(const Hit& hit, const Vec3& n, const Vec3& toEye, Rng& rng,
   return result;
 }
 
-Color Shader::spawn(const Vec3& origin, const Vec3& direction, double spreadRadians,
+Color Shader::spawn(const Vec3& origin, const Vec3& direction, const Spread& spread,
                     const Vec3& normal, bool above, int depth, Rng rng, uint64_t& rays) const {
-  if (spreadRadians <= 0) return trace(Ray{origin, direction}, depth, rng.child(0), rays);
+  if (spread.radians <= 0) return trace(Ray{origin, direction}, depth, rng.child(0), rays);
   Color sum;
   const int n = settings_.drtRate;
   for (int i = 0; i < n; ++i) {
     Rng branch = rng.child(static_cast<uint64_t>(i));
     const double u1 = stratum(i, n, branch.uniform());  // stratified in the cone's polar angle
-    Vec3 d = sampleCone(direction, spreadRadians, u1, branch.uniform());
+    Vec3 d = sampleCone(direction, spread.cosine, u1, branch.uniform());
     // A perturbed ray must stay on the side of the surface it was meant for.
     if ((dot(d, normal) > 0) != above) d = direction;
     sum += trace(Ray{origin, d}, depth, branch, rays);
@@ -131,24 +143,25 @@ Color Shader::trace(const Ray& ray, int depth, Rng rng, uint64_t& rays) const {
   const Vec3 n = entering ? hit.normal : -hit.normal;  // faces the incoming ray
   const Vec3 toEye = -ray.direction;
 
-  Color color = direct(hit, n, toEye, rng, rays);
-  if (depth >= scene.environment.maxDepth) return color;
-
   const double eps = surfaceEpsilon(hit.point);
+  Color color = direct(hit, n, toEye, eps, rng, rays);
+  if (depth >= scene.environment.maxDepth) return color;
+  const Spreads& spreads = spreads_[hit.object];
+
   if (m.reflectivity > 0) {
     const Vec3 r = reflect(ray.direction, n);
-    color += m.reflectivity * spawn(hit.point + eps * n, r, m.glossDegrees * kDegrees, n, true,
+    color += m.reflectivity * spawn(hit.point + eps * n, r, spreads.reflection, n, true,
                                     depth + 1, rng.child(1000), rays);
   }
   if (m.transmissivity > 0) {
     const double eta = entering ? 1.0 / m.ior : m.ior;
     Vec3 t;
     if (refract(ray.direction, n, eta, t)) {
-      color += m.transmissivity * spawn(hit.point - eps * n, t, m.translucencyDegrees * kDegrees,
+      color += m.transmissivity * spawn(hit.point - eps * n, t, spreads.transmission,
                                         n, false, depth + 1, rng.child(2000), rays);
     } else {  // total internal reflection: the transmitted light is reflected back inside
       color += m.transmissivity * spawn(hit.point + eps * n, reflect(ray.direction, n),
-                                        m.translucencyDegrees * kDegrees, n, true, depth + 1,
+                                        spreads.transmission, n, true, depth + 1,
                                         rng.child(2000), rays);
     }
   }

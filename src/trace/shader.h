@@ -10,6 +10,7 @@
 // Reads only immutable data; one Shader may be used by many threads at once.
 
 #include <cstdint>
+#include <vector>
 
 #include "core/rng.h"
 #include "trace/render_settings.h"
@@ -31,11 +32,23 @@ class Shader {
                uint64_t& rays) const;
 
  private:
-  Color spawn(const Vec3& origin, const Vec3& direction, double spreadRadians,
+  // The cone a glossy or blurry surface spreads its rays over: none when radians is 0.
+  struct Spread {
+    double radians = 0;
+    double cosine = 1;  // of the half-angle
+  };
+  struct Spreads {
+    Spread reflection, transmission;
+  };
+
+  Color direct(const Hit& hit, const Vec3& n, const Vec3& toEye, double eps, Rng& rng,
+               uint64_t& rays) const;
+  Color spawn(const Vec3& origin, const Vec3& direction, const Spread& spread,
               const Vec3& normal, bool above, int depth, Rng rng, uint64_t& rays) const;
 
   const World& world_;
   RenderSettings settings_;
+  std::vector<Spreads> spreads_;  // per object
 };
 
 // Whether the Phong term specular * highlight^exponent is surely below a quarter of the last
