@@ -49,12 +49,14 @@ BENCHMARK(BM_ComplexScenePixels);
 
 // Queries as the shader makes them on the benchmark scene, gathered once: for a grid of camera
 // rays, the nearest-hit query of the camera ray and of its mirror bounce, and one shadow query
-// from each hit towards each light's centre. Replayed in a loop, they time World's two
-// queries alone.
+// from each hit towards each light's centre. Replayed in a loop, they time World's queries
+// alone: shadow rays both through the BVH and as the shader asks them, from the light's
+// shadow shafts.
 struct RecordedQueries {
   struct Shadow {
     Ray ray;
     double distance;
+    size_t light;
   };
   explicit RecordedQueries(Scene scene);
   World world;
@@ -67,7 +69,8 @@ RecordedQueries::RecordedQueries(Scene sceneToLoad) : world(std::move(sceneToLoa
   const PinholeCamera camera(scene.camera, 160, 120);
   auto shadowRays = [&](const Hit& hit, const Vec3& n) {
     const Vec3 origin = hit.point + 1e-9 * n;
-    for (const Light& light : scene.lights) {
+    for (size_t l = 0; l < scene.lights.size(); ++l) {
+      const Light& light = scene.lights[l];
       Vec3 target;
       if (const auto* p = std::get_if<PointLight>(&light.shape)) target = p->position;
       if (const auto* s = std::get_if<SphereLight>(&light.shape)) target = s->center;
@@ -76,7 +79,7 @@ RecordedQueries::RecordedQueries(Scene sceneToLoad) : world(std::move(sceneToLoa
       }
       const Vec3 d = target - origin;
       const double distance = length(d);
-      if (dot(d, n) > 0) shadow.push_back({Ray{origin, d / distance}, distance});
+      if (dot(d, n) > 0) shadow.push_back({Ray{origin, d / distance}, distance, l});
     }
   };
   for (int y = 0; y < 120; ++y) {
@@ -122,6 +125,29 @@ void BM_ComplexSceneShadow(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations());
 }
 BENCHMARK(BM_ComplexSceneShadow);
+
+void BM_ComplexSceneShadowToLight(benchmark::State& state) {
+  const RecordedQueries& q = complexSceneQueries();
+  size_t i = 0;
+  for (auto _ : state) {
+    const RecordedQueries::Shadow& s = q.shadow[i];
+    benchmark::DoNotOptimize(q.world.transmittanceToLight(s.light, s.ray, s.distance));
+    if (++i == q.shadow.size()) i = 0;
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_ComplexSceneShadowToLight);
+
+// Preparing the benchmark scene for tracing: the BVH and every light's shadow shafts, which
+// each process of a parallel render does once.
+void BM_ComplexSceneWorld(benchmark::State& state) {
+  const Scene scene = loadSceneFile(PRT_SOURCE_DIR "/scenes/complex.scene");
+  for (auto _ : state) {
+    const World world(scene);
+    benchmark::DoNotOptimize(&world);
+  }
+}
+BENCHMARK(BM_ComplexSceneWorld)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace prt
