@@ -26,21 +26,27 @@ constexpr double horner(double z, const double (&c)[N]) {
   return p;
 }
 
-// sin x and cos x for |x| <= pi/4 (a little beyond is fine): their Taylor series, to x^17 and
-// x^18, whose next terms are below 1e-19 there.
+// sin x and cos x for |x| <= pi/4 (a little beyond is fine). The polynomials are minimax fits
+// on that interval (the coefficients of fdlibm's kernels, 6 per function: errors below 2^-58
+// for sin, 2^-60 for cos, before rounding), each evaluated as two short chains that run side
+// by side (Estrin's scheme, partly) rather than one long Horner chain: the shader calls this on
+// every area-light sample and every glossy ray, where its latency would stall the rest.
 inline void sinCosReduced(double x, double& s, double& c) {
-  constexpr double kSin[] = {
-      -1.0 / 6,        1.0 / 120,        -1.0 / 5040,          1.0 / 362880,
-      -1.0 / 39916800, 1.0 / 6227020800, -1.0 / 1307674368000, 1.0 / 355687428096000};
-  constexpr double kCos[] = {
-      1.0 / 24,        -1.0 / 720,         1.0 / 40320,          -1.0 / 3628800,
-      1.0 / 479001600, -1.0 / 87178291200, 1.0 / 20922789888000, -1.0 / 6402373705728000};
+  constexpr double kS1 = -1.66666666666666324348e-01, kS2 = 8.33333333332248946124e-03,
+                   kS3 = -1.98412698298579493134e-04, kS4 = 2.75573137070700676789e-06,
+                   kS5 = -2.50507602534068634195e-08, kS6 = 1.58969099521155010221e-10;
+  constexpr double kC1 = 4.16666666666666019037e-02, kC2 = -1.38888888888741095749e-03,
+                   kC3 = 2.48015872894767294178e-05, kC4 = -2.75573143513906633035e-07,
+                   kC5 = 2.08757232129817482790e-09, kC6 = -1.13596475577881948265e-11;
   const double z = x * x;
-  s = x + x * (z * horner(z, kSin));
-  // 1 - z/2 rounded first, then its rounding error put back (as fdlibm's kernel does).
+  const double w = z * z;
+  const double rs = (kS2 + z * (kS3 + z * kS4)) + z * w * (kS5 + z * kS6);
+  s = x + (z * x) * (kS1 + z * rs);
+  const double rc = z * (kC1 + z * (kC2 + z * kC3)) + (w * w) * (kC4 + z * (kC5 + z * kC6));
+  // 1 - z/2 rounded first, then its rounding error put back.
   const double half = 0.5 * z;
-  const double w = 1.0 - half;
-  c = w + (((1.0 - w) - half) + z * (z * horner(z, kCos)));
+  const double v = 1.0 - half;
+  c = v + (((1.0 - v) - half) + z * rc);
 }
 
 // Rotates (sin r, cos r) by `quadrant` quarter turns: sin and cos of r + quadrant * pi/2.
