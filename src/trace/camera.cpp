@@ -20,6 +20,18 @@ PinholeCamera::PinholeCamera(const Camera& camera, int width, int height)
   up_ = up * halfHeight;
 }
 
+bool PinholeCamera::project(const Vec3& p, double& px, double& py) const {
+  // generateRay's direction is forward + sx right + sy up, the three orthogonal.
+  const Vec3 v = p - eye_;
+  const double depth = dot(v, forward_);
+  if (!(depth > 0)) return false;
+  const double sx = dot(v, right_) / (dot(right_, right_) * depth);
+  const double sy = dot(v, up_) / (dot(up_, up_) * depth);
+  px = (sx + 1.0) / (2.0 * invWidth_);
+  py = (1.0 - sy) / (2.0 * invHeight_);
+  return true;
+}
+
 Ray PinholeCamera::generateRay(double px, double py) const {
   const double sx = 2.0 * px * invWidth_ - 1.0;
   const double sy = 1.0 - 2.0 * py * invHeight_;

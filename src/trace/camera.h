@@ -14,6 +14,10 @@ class PinholeCamera {
   // (px, py) in pixels: x in [0, width) to the right, y in [0, height) downwards.
   Ray generateRay(double px, double py) const;
 
+  // Where point p appears in the image, in the pixel units of generateRay (the inverse map, up
+  // to rounding); false when p is not in front of the eye.
+  bool project(const Vec3& p, double& px, double& py) const;
+
  private:
   Vec3 eye_, forward_, right_, up_;  // right_ and up_ are scaled to half the image plane
   double invWidth_, invHeight_;

@@ -17,12 +17,14 @@ Renderer::Renderer(const World& world, const RenderSettings& settings)
       width_(world.scene().image.width),
       height_(world.scene().image.height),
       camera_(world.scene().camera, width_, height_),
+      view_(camera_, width_, height_, world.itemBounds()),
       shader_(world, settings) {}
 
 Color Renderer::renderPixel(uint64_t pixelIndex, uint64_t& rays) const {
   const int x = static_cast<int>(pixelIndex % static_cast<uint64_t>(width_));
   const int y = static_cast<int>(pixelIndex / static_cast<uint64_t>(width_));
   const int n = settings_.samplesPerPixel;
+  const auto candidates = view_.candidates(x, y);
   Color sum;
   for (int s = 0; s < n; ++s) {
     Rng rng = Rng::forSample(pixelIndex, static_cast<uint32_t>(s));
@@ -33,7 +35,8 @@ Color Renderer::renderPixel(uint64_t pixelIndex, uint64_t& rays) const {
       stratifiedSample(s, n, jx, jy, dx, dy);
     }
     const Ray ray = camera_.generateRay(x + dx, y + dy);
-    sum += shader_.trace(ray, 0, rng.child(1), rays);
+    sum += candidates ? shader_.traceAmong(*candidates, ray, rng.child(1), rays)
+                      : shader_.trace(ray, 0, rng.child(1), rays);
   }
   return meanOf(sum, n);
 }

@@ -14,6 +14,7 @@
 #include "image/image.h"
 #include "trace/camera.h"
 #include "trace/shader.h"
+#include "trace/view_lists.h"
 
 namespace prt {
 
@@ -34,6 +35,7 @@ class Renderer {
   RenderSettings settings_;
   int width_, height_;
   PinholeCamera camera_;
+  ViewLists view_;
   Shader shader_;
 };
 

@@ -134,10 +134,25 @@ Color Shader::spawn(const Vec3& origin, const Vec3& direction, const Spread& spr
 Color Shader::trace(const Ray& ray, int depth, Rng rng, uint64_t& rays) const {
   ++rays;
   Hit hit;
-  const Scene& scene = world_.scene();
   if (!world_.intersect(ray, 0.0, std::numeric_limits<double>::infinity(), hit)) {
-    return scene.environment.background;
+    return world_.scene().environment.background;
   }
+  return shade(ray, hit, depth, rng, rays);
+}
+
+Color Shader::traceAmong(std::span<const uint32_t> candidates, const Ray& ray, Rng rng,
+                         uint64_t& rays) const {
+  ++rays;
+  Hit hit;
+  if (!world_.intersectAmong(candidates, ray, 0.0, std::numeric_limits<double>::infinity(),
+                             hit)) {
+    return world_.scene().environment.background;
+  }
+  return shade(ray, hit, 0, rng, rays);
+}
+
+Color Shader::shade(const Ray& ray, const Hit& hit, int depth, Rng rng, uint64_t& rays) const {
+  const Scene& scene = world_.scene();
   const Material& m = world_.material(hit.object);
   const bool entering = dot(ray.direction, hit.normal) < 0;
   const Vec3 n = entering ? hit.normal : -hit.normal;  // faces the incoming ray

@@ -10,6 +10,7 @@
 // Reads only immutable data; one Shader may be used by many threads at once.
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "core/rng.h"
@@ -25,6 +26,10 @@ class Shader {
   // Colour seen along `ray` arriving at recursion depth `depth` (0 for primary rays).
   // `rays` counts every ray traced, shadow rays included.
   Color trace(const Ray& ray, int depth, Rng rng, uint64_t& rays) const;
+  // The same for a primary ray that can meet only the planes and the items in `candidates`
+  // (World::intersectAmong): a camera ray through a tile of ViewLists.
+  Color traceAmong(std::span<const uint32_t> candidates, const Ray& ray, Rng rng,
+                   uint64_t& rays) const;
 
   // Local illumination at a hit: ambient plus every light's diffuse and Phong terms with
   // shadows. Exposed for tests of the shading terms.
@@ -43,6 +48,8 @@ class Shader {
 
   Color direct(const Hit& hit, const Vec3& n, const Vec3& toEye, double eps, Rng& rng,
                uint64_t& rays) const;
+  // The colour of `hit`, met by `ray` at recursion depth `depth`.
+  Color shade(const Ray& ray, const Hit& hit, int depth, Rng rng, uint64_t& rays) const;
   Color spawn(const Vec3& origin, const Vec3& direction, const Spread& spread,
               const Vec3& normal, bool above, int depth, Rng rng, uint64_t& rays) const;
 

@@ -91,8 +91,7 @@ World::World(Scene scene) : scene_(std::move(scene)) {
       planes_.push_back({p.point, p.normal, transmissivity, i});
     }
   }
-  std::vector<Bounds> boxes;
-  for (const Item& item : items_) boxes.push_back(item.box);
+  const std::vector<Bounds> boxes = itemBounds();
   bvh_ = QuadBvh(boxes);
   std::vector<Bounds> lights;
   for (const Light& light : scene_.lights) lights.push_back(boundsOf(light.shape));
@@ -108,6 +107,27 @@ World::World(Scene scene) : scene_(std::move(scene)) {
 }
 
 bool World::intersect(const Ray& ray, double tMin, double tMax, Hit& hit) const {
+  return intersect(ray, tMin, tMax, hit, [&](double& nearest, auto&& visit) {
+    bvh_.traverse<true>(ray, tMin, nearest, visit);
+  });
+}
+
+bool World::intersectAmong(std::span<const uint32_t> candidates, const Ray& ray, double tMin,
+                           double tMax, Hit& hit) const {
+  return intersect(ray, tMin, tMax, hit, [&](double&, auto&& visit) {
+    for (const uint32_t index : candidates) visit(index);
+  });
+}
+
+std::vector<Bounds> World::itemBounds() const {
+  std::vector<Bounds> boxes;
+  for (const Item& item : items_) boxes.push_back(item.box);
+  return boxes;
+}
+
+template <typename Candidates>
+bool World::intersect(const Ray& ray, double tMin, double tMax, Hit& hit,
+                      Candidates&& candidates) const {
   // The best so far: its distance `nearest`, and its rank (0 for a plane: planes came first,
   // and no bounded object's rank is below it; also 0 before any hit, when ties must lose).
   double nearest = tMax;
@@ -122,7 +142,7 @@ bool World::intersect(const Ray& ray, double tMin, double tMax, Hit& hit) const 
     }
   }
   const uint32_t* ranks = ranks_.data() + octantOf(ray.direction) * items_.size();
-  bvh_.traverse<true>(ray, tMin, nearest, [&](uint32_t index) {
+  candidates(nearest, [&](uint32_t index) {
     const Item& item = items_[index];
     const double t = item.sphere ? sphereRoots(item.a, item.b.x, ray).firstAfter(tMin)
                                  : boxSlabs(item.a, item.b, ray).firstAfter(tMin);

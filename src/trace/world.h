@@ -12,6 +12,7 @@
 // rendered before the faster QuadBvh replaced it for traversal.
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "trace/quad_bvh.h"
@@ -36,6 +37,13 @@ class World {
 
   // Nearest crossing within (tMin, tMax); false if none.
   bool intersect(const Ray& ray, double tMin, double tMax, Hit& hit) const;
+  // The same when only the planes and the items in `candidates` (indices in itemBounds()'s
+  // order, in any order) can be met, as ViewLists knows for camera rays.
+  bool intersectAmong(std::span<const uint32_t> candidates, const Ray& ray, double tMin,
+                      double tMax, Hit& hit) const;
+
+  // The boxes of the bounded objects, which the BVH holds as its items.
+  std::vector<Bounds> itemBounds() const;
 
   // Fraction of light that survives from ray.origin to distance `distance` along the ray: the
   // product of the transmissivities of every surface crossed (0 as soon as one is opaque).
@@ -61,6 +69,9 @@ class World {
     uint32_t object = 0;
   };
 
+  template <typename Candidates>
+  bool intersect(const Ray& ray, double tMin, double tMax, Hit& hit,
+                 Candidates&& candidates) const;
   template <typename Candidates>
   double transmittance(const Ray& ray, double tMin, double distance,
                        Candidates&& candidates) const;
