@@ -8,9 +8,7 @@
 namespace prt {
 
 PinholeCamera::PinholeCamera(const Camera& camera, int width, int height)
-    : eye_(camera.eye),
-      invWidth_(1.0 / width),
-      invHeight_(1.0 / height) {
+    : eye_(camera.eye), invWidth_(1.0 / width), invHeight_(1.0 / height) {
   forward_ = normalize(camera.lookAt - camera.eye);
   const Vec3 right = normalize(cross(camera.up, forward_));
   const Vec3 up = cross(forward_, right);

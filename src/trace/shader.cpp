@@ -55,7 +55,8 @@ Shader::Shader(const World& world, const RenderSettings& settings)
     return Spread{radians, cosRadians(radians)};
   };
   for (const Object& o : world.scene().objects) {
-    spreads_.push_back({spread(o.material.glossDegrees), spread(o.material.translucencyDegrees)});
+    surfaces_.push_back({spread(o.material.glossDegrees), spread(o.material.translucencyDegrees),
+                         1.0 / o.material.ior});
   }
 }
 
@@ -103,9 +104,8 @@ Color Shader::direct(const Hit& hit, const Vec3& n, const Vec3& toEye, double ep
       // +0^n is +0 for n > 0 (scene files require n >= 1): the power is skipped then, and when
       // the term could not change the sum anyway.
       const bool lit = highlight > 0 || !(m.phongExponent > 0);
-      const bool needed =
-          m.specular > 0 && lit &&
-          !specularIsNegligible(highlight, m.phongExponent, m.specular, diffuse);
+      const bool needed = m.specular > 0 && lit &&
+                          !specularIsNegligible(highlight, m.phongExponent, m.specular, diffuse);
       const Color local =
           diffuse + Color(needed ? m.specular * powNonNegative(highlight, m.phongExponent) : 0.0);
       sum += visible * light.color * local;
@@ -144,8 +144,7 @@ Color Shader::traceAmong(std::span<const uint32_t> candidates, const Ray& ray, R
                          uint64_t& rays) const {
   ++rays;
   Hit hit;
-  if (!world_.intersectAmong(candidates, ray, 0.0, std::numeric_limits<double>::infinity(),
-                             hit)) {
+  if (!world_.intersectAmong(candidates, ray, 0.0, std::numeric_limits<double>::infinity(), hit)) {
     return world_.scene().environment.background;
   }
   return shade(ray, hit, 0, rng, rays);
@@ -161,23 +160,23 @@ Color Shader::shade(const Ray& ray, const Hit& hit, int depth, Rng rng, uint64_t
   const double eps = surfaceEpsilon(hit.point);
   Color color = direct(hit, n, toEye, eps, rng, rays);
   if (depth >= scene.environment.maxDepth) return color;
-  const Spreads& spreads = spreads_[hit.object];
+  const Surface& surface = surfaces_[hit.object];
 
   if (m.reflectivity > 0) {
     const Vec3 r = reflect(ray.direction, n);
-    color += m.reflectivity * spawn(hit.point + eps * n, r, spreads.reflection, n, true,
-                                    depth + 1, rng.child(1000), rays);
+    color += m.reflectivity * spawn(hit.point + eps * n, r, surface.reflection, n, true, depth + 1,
+                                    rng.child(1000), rays);
   }
   if (m.transmissivity > 0) {
-    const double eta = entering ? 1.0 / m.ior : m.ior;
+    const double eta = entering ? surface.inverseIor : m.ior;
     Vec3 t;
     if (refract(ray.direction, n, eta, t)) {
-      color += m.transmissivity * spawn(hit.point - eps * n, t, spreads.transmission,
-                                        n, false, depth + 1, rng.child(2000), rays);
+      color += m.transmissivity * spawn(hit.point - eps * n, t, surface.transmission, n, false,
+                                        depth + 1, rng.child(2000), rays);
     } else {  // total internal reflection: the transmitted light is reflected back inside
-      color += m.transmissivity * spawn(hit.point + eps * n, reflect(ray.direction, n),
-                                        spreads.transmission, n, true, depth + 1,
-                                        rng.child(2000), rays);
+      color +=
+          m.transmissivity * spawn(hit.point + eps * n, reflect(ray.direction, n),
+                                   surface.transmission, n, true, depth + 1, rng.child(2000), rays);
     }
   }
   return color;

@@ -42,27 +42,28 @@ class Shader {
     double radians = 0;
     double cosine = 1;  // of the half-angle
   };
-  struct Spreads {
+  // What shading needs of an object's material beyond the material itself, computed once.
+  struct Surface {
     Spread reflection, transmission;
+    double inverseIor = 1;  // 1 / ior: the relative index entering the object
   };
 
   Color direct(const Hit& hit, const Vec3& n, const Vec3& toEye, double eps, Rng& rng,
                uint64_t& rays) const;
   // The colour of `hit`, met by `ray` at recursion depth `depth`.
   Color shade(const Ray& ray, const Hit& hit, int depth, Rng rng, uint64_t& rays) const;
-  Color spawn(const Vec3& origin, const Vec3& direction, const Spread& spread,
-              const Vec3& normal, bool above, int depth, Rng rng, uint64_t& rays) const;
+  Color spawn(const Vec3& origin, const Vec3& direction, const Spread& spread, const Vec3& normal,
+              bool above, int depth, Rng rng, uint64_t& rays) const;
 
   const World& world_;
   RenderSettings settings_;
-  std::vector<Spreads> spreads_;  // per object
+  std::vector<Surface> surfaces_;  // per object
 };
 
 // Whether the Phong term specular * highlight^exponent is surely below a quarter of the last
 // place of every component of `diffuse`: added to them it would change no bit, so the power
 // need not be computed. Holds often, Phong exponents being large.
-bool specularIsNegligible(double highlight, double exponent, double specular,
-                          const Color& diffuse);
+bool specularIsNegligible(double highlight, double exponent, double specular, const Color& diffuse);
 
 // Refraction of unit direction d through unit normal n (facing against d) with relative index
 // eta = n_incident / n_transmitted. Returns false on total internal reflection.

@@ -48,8 +48,9 @@ Shaft::Shaft(const Bounds& from, const Bounds& to) {
     for (int s = 0; s < 8; ++s) {
       if ((s >> a) & 1) continue;  // the corner's a coordinate does not matter
       const Vec3 d = corner(to, s) - corner(from, s);
-      const Vec3 axis = a == 0 ? Vec3(0, -d.z, d.y) : a == 1 ? Vec3(d.z, 0, -d.x)
-                                                               : Vec3(-d.y, d.x, 0);
+      const Vec3 axis = a == 0   ? Vec3(0, -d.z, d.y)
+                        : a == 1 ? Vec3(d.z, 0, -d.x)
+                                 : Vec3(-d.y, d.x, 0);
       if (axis == Vec3()) continue;
       const Interval f = project(from, axis), t = project(to, axis);
       const Vec3 absAxis(std::abs(axis.x), std::abs(axis.y), std::abs(axis.z));
@@ -108,8 +109,7 @@ ShadowShafts::ShadowShafts(const std::vector<Bounds>& items, const std::vector<B
     if (!changed) break;
   }
   for (int a = 0; a < 3; ++a) {
-    dims_[a] = active[a] ? static_cast<int>(std::clamp(std::ceil(size[a] / edge), 1.0, kCells))
-                         : 1;
+    dims_[a] = active[a] ? static_cast<int>(std::clamp(std::ceil(size[a] / edge), 1.0, kCells)) : 1;
   }
   lo_ = grid.lo;
   cell_ = Vec3(size.x / dims_[0], size.y / dims_[1], size.z / dims_[2]);
@@ -120,8 +120,7 @@ ShadowShafts::ShadowShafts(const std::vector<Bounds>& items, const std::vector<B
   std::vector<uint32_t> all(items.size());
   for (uint32_t i = 0; i < all.size(); ++i) all[i] = i;
   for (size_t l = 0; l < lights_; ++l) {
-    refine(items, widened(lights[l], margin_), l, {{0, 0, 0}, {dims_[0], dims_[1], dims_[2]}},
-           all);
+    refine(items, widened(lights[l], margin_), l, {{0, 0, 0}, {dims_[0], dims_[1], dims_[2]}}, all);
   }
 }
 

@@ -38,7 +38,7 @@ class Shaft {
     Vec3 axis, absAxis;
     double lo, hi;  // the hull's extent along the axis
   };
-  Bounds box_;     // the hull's bounding box
+  Bounds box_;  // the hull's bounding box
   Side sides_[12];
   int count_ = 0;
 };
@@ -58,14 +58,13 @@ class ShadowShafts {
     if (lists_.empty()) return std::nullopt;
     const Vec3 r = (origin - lo_) * scale_;
     // NaN fails these tests too.
-    if (!(r.x >= 0 && r.x < dims_[0] && r.y >= 0 && r.y < dims_[1] && r.z >= 0 &&
-          r.z < dims_[2])) {
+    if (!(r.x >= 0 && r.x < dims_[0] && r.y >= 0 && r.y < dims_[1] && r.z >= 0 && r.z < dims_[2])) {
       return std::nullopt;
     }
-    const List list = lists_[cellIndex(static_cast<int>(r.x), static_cast<int>(r.y),
-                                       static_cast<int>(r.z)) *
-                                 lights_ +
-                             light];
+    const List list =
+        lists_[cellIndex(static_cast<int>(r.x), static_cast<int>(r.y), static_cast<int>(r.z)) *
+                   lights_ +
+               light];
     if (list.count == kLong) return std::nullopt;
     return std::span<const uint32_t>(items_.data() + list.begin, list.count);
   }
@@ -94,8 +93,8 @@ class ShadowShafts {
   }
   // Lists, for light l, every cell of `region` from the items among `candidates` its shaft
   // meets, splitting the region while that pays.
-  void refine(const std::vector<Bounds>& items, const Bounds& light, size_t l,
-              const Region& region, const std::vector<uint32_t>& candidates);
+  void refine(const std::vector<Bounds>& items, const Bounds& light, size_t l, const Region& region,
+              const std::vector<uint32_t>& candidates);
 
   Vec3 lo_;     // the grid's low corner
   Vec3 cell_;   // a cell's size

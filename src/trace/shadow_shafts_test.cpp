@@ -107,9 +107,9 @@ Layout layout() {
   Rng rng(3);
   for (int i = 0; i < 40; ++i) l.items.push_back(randomBox(rng, 8, 1.5));
   l.items.push_back(box({-6, -0.5, -6}, {6, 0, 6}));  // a wide slab under everything
-  l.lights.push_back(box({0, 9, 0}, {0, 9, 0}));        // a point
-  l.lights.push_back(box({-4, 7, -4}, {-3, 8, -3}));    // a sphere's box
-  l.lights.push_back(box({5, 3, -1}, {5, 5, 1}));       // a rectangle beside the items
+  l.lights.push_back(box({0, 9, 0}, {0, 9, 0}));      // a point
+  l.lights.push_back(box({-4, 7, -4}, {-3, 8, -3}));  // a sphere's box
+  l.lights.push_back(box({5, 3, -1}, {5, 5, 1}));     // a rectangle beside the items
   return l;
 }
 

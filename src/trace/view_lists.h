@@ -26,8 +26,8 @@ class ViewLists {
   ViewLists() = default;
   // `items[i]` is the box of item i, seen through `camera` on a width x height image. Lists
   // longer than `longest` are left to the BVH.
-  ViewLists(const PinholeCamera& camera, int width, int height,
-            const std::vector<Bounds>& items, uint32_t longest = 8);
+  ViewLists(const PinholeCamera& camera, int width, int height, const std::vector<Bounds>& items,
+            uint32_t longest = 8);
 
   // The items a camera ray through pixel (x, y) (anywhere inside it) can meet, or nothing when
   // the caller must ask the BVH.

@@ -78,8 +78,8 @@ TEST(ViewListsTest, CrowdedTilesAndPixelsOutsideGoToTheBvh) {
   }
   const PinholeCamera camera(Camera{}, 64, 48);  // at (0, 0, -5) looking towards +z
   const ViewLists view(camera, 64, 48, items);
-  EXPECT_FALSE(view.candidates(32, 24));       // the middle: crowded
-  ASSERT_TRUE(view.candidates(0, 0));          // a corner: open
+  EXPECT_FALSE(view.candidates(32, 24));  // the middle: crowded
+  ASSERT_TRUE(view.candidates(0, 0));     // a corner: open
   EXPECT_TRUE(view.candidates(0, 0)->empty());
   EXPECT_FALSE(view.candidates(-1, 0));
   EXPECT_FALSE(view.candidates(64, 0));

@@ -67,8 +67,8 @@ Bounds boundsOf(const LightShape& shape) {
     b.extend(s->center + Vec3(s->radius));
   } else {
     const auto& r = std::get<RectLight>(shape);
-    for (const Vec3& q : {r.corner, r.corner + r.edge1, r.corner + r.edge2,
-                          r.corner + r.edge1 + r.edge2}) {
+    for (const Vec3& q :
+         {r.corner, r.corner + r.edge1, r.corner + r.edge2, r.corner + r.edge1 + r.edge2}) {
       b.extend(q);
     }
   }
@@ -82,8 +82,8 @@ World::World(Scene scene) : scene_(std::move(scene)) {
     const Object& o = scene_.objects[i];
     const double transmissivity = o.material.transmissivity;
     if (const auto* s = std::get_if<SphereShape>(&o.shape)) {
-      items_.push_back({s->center, Vec3(s->radius, 0, 0), boundsOf(o.shape), transmissivity, i,
-                        true});
+      items_.push_back({s->center, Vec3(s->radius, 1.0 / s->radius, 0), boundsOf(o.shape),
+                        transmissivity, i, true});
     } else if (const auto* b = std::get_if<BoxShape>(&o.shape)) {
       items_.push_back({b->min, b->max, boundsOf(o.shape), transmissivity, i, false});
     } else {
@@ -159,8 +159,7 @@ bool World::intersect(const Ray& ray, double tMin, double tMax, Hit& hit,
     // The normal as intersect(shape) gives it for its first crossing, which is this one.
     hit.object = bestItem->object;
     if (bestItem->sphere) {
-      const double inv = 1.0 / bestItem->b.x;
-      hit.normal = (ray.at(nearest) - bestItem->a) * inv;
+      hit.normal = (ray.at(nearest) - bestItem->a) * bestItem->b.y;  // times 1 / radius
     } else {
       const BoxSlabs s = boxSlabs(bestItem->a, bestItem->b, ray);
       hit.normal = Vec3();
@@ -219,9 +218,8 @@ double World::transmittance(const Ray& ray, double tMin, double distance,
 }
 
 double World::transmittance(const Ray& ray, double tMin, double distance) const {
-  return transmittance(ray, tMin, distance, [&](auto&& visit) {
-    bvh_.traverse<false>(ray, tMin, distance, visit);
-  });
+  return transmittance(ray, tMin, distance,
+                       [&](auto&& visit) { bvh_.traverse<false>(ray, tMin, distance, visit); });
 }
 
 double World::transmittanceToLight(size_t light, const Ray& ray, double distance) const {

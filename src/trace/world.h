@@ -24,7 +24,7 @@ namespace prt {
 struct Hit {
   double t = 0;
   Vec3 point;
-  Vec3 normal;         // outward unit normal of the surface at `point`
+  Vec3 normal;          // outward unit normal of the surface at `point`
   uint32_t object = 0;  // index into Scene::objects
 };
 
@@ -57,8 +57,8 @@ class World {
  private:
   // A bounded object as the BVH's item, flattened for the hot loops.
   struct Item {
-    Vec3 a, b;         // sphere: centre, (radius, 0, 0); box: min, max
-    Bounds box;        // for the paper's per-object box test
+    Vec3 a, b;   // sphere: centre, (radius, 1 / radius, 0); box: min, max
+    Bounds box;  // for the paper's per-object box test
     double transmissivity = 0;
     uint32_t object = 0;
     bool sphere = false;
@@ -70,11 +70,9 @@ class World {
   };
 
   template <typename Candidates>
-  bool intersect(const Ray& ray, double tMin, double tMax, Hit& hit,
-                 Candidates&& candidates) const;
+  bool intersect(const Ray& ray, double tMin, double tMax, Hit& hit, Candidates&& candidates) const;
   template <typename Candidates>
-  double transmittance(const Ray& ray, double tMin, double distance,
-                       Candidates&& candidates) const;
+  double transmittance(const Ray& ray, double tMin, double distance, Candidates&& candidates) const;
 
   Scene scene_;
   QuadBvh bvh_;
