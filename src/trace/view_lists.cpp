@@ -50,31 +50,42 @@ ViewLists::ViewLists(const PinholeCamera& camera, int width, int height,
   if (width <= 0 || height <= 0 || items.empty()) return;
   const int tilesY = (height + kTile - 1) / kTile;
   const size_t tiles = static_cast<size_t>(tilesX_) * tilesY;
-  // Each tile's items, up to longest + 1 (then it goes to the BVH, however many more).
-  std::vector<std::vector<uint32_t>> lists(tiles);
   // The work is the tiles each item covers; a scene of very many objects, large on screen,
   // would spend longer here than the lists could save: it keeps the BVH alone.
   const size_t budget = 64 * tiles + 64 * items.size();
   size_t work = 0;
-  for (uint32_t i = 0; i < items.size(); ++i) {
-    const TileRange r = tilesCovered(camera, items[i], tilesX_, tilesY);
+  std::vector<TileRange> ranges;
+  ranges.reserve(items.size());
+  std::vector<uint32_t> counts(tiles, 0);
+  for (const Bounds& b : items) {
+    const TileRange r = tilesCovered(camera, b, tilesX_, tilesY);
+    ranges.push_back(r);
     if (r.x0 > r.x1 || r.y0 > r.y1) continue;
     work += static_cast<size_t>(r.x1 - r.x0 + 1) * (r.y1 - r.y0 + 1);
     if (work > budget) return;
     for (int ty = r.y0; ty <= r.y1; ++ty) {
-      for (int tx = r.x0; tx <= r.x1; ++tx) {
-        std::vector<uint32_t>& list = lists[static_cast<size_t>(ty) * tilesX_ + tx];
-        if (list.size() <= longest) list.push_back(i);
-      }
+      for (int tx = r.x0; tx <= r.x1; ++tx) ++counts[static_cast<size_t>(ty) * tilesX_ + tx];
     }
   }
-  lists_.reserve(tiles);
-  for (const std::vector<uint32_t>& list : lists) {
-    if (list.size() > longest) {
-      lists_.push_back({0, kLong});
+  // Lay the lists out one after another, then fill them in item order.
+  lists_.resize(tiles);
+  uint32_t total = 0;
+  for (size_t t = 0; t < tiles; ++t) {
+    if (counts[t] > longest) {
+      lists_[t] = {0, kLong};
     } else {
-      lists_.push_back({static_cast<uint32_t>(items_.size()), static_cast<uint32_t>(list.size())});
-      items_.insert(items_.end(), list.begin(), list.end());
+      lists_[t] = {total, 0};
+      total += counts[t];
+    }
+  }
+  items_.resize(total);
+  for (uint32_t i = 0; i < items.size(); ++i) {
+    const TileRange& r = ranges[i];
+    for (int ty = r.y0; ty <= r.y1; ++ty) {
+      for (int tx = r.x0; tx <= r.x1; ++tx) {
+        List& list = lists_[static_cast<size_t>(ty) * tilesX_ + tx];
+        if (list.count != kLong) items_[list.begin + list.count++] = i;
+      }
     }
   }
 }
