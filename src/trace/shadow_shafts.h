@@ -74,8 +74,10 @@ class ShadowShafts {
  private:
   static constexpr double kCells = 4096;  // about this many cells
   // A region whose shaft meets more objects than this is too crowded to be worth splitting:
-  // its cells go to the BVH (the build stays cheap however many objects a scene has).
-  static constexpr size_t kCrowded = 64;
+  // its cells go to the BVH. The whole grid's shaft meets about every object, so scenes of more
+  // objects keep the BVH alone, and the build stays cheap however many a scene has (about 6 ms
+  // for 250 objects and three lights, which a render of them repays many times over).
+  static constexpr size_t kCrowded = 256;
 
   struct Region {
     int lo[3], hi[3];  // cells [lo, hi) per axis

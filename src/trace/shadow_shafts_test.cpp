@@ -168,6 +168,30 @@ TEST(ShadowShaftsTest, LeavesLongListsToTheBvh) {
   EXPECT_EQ(all->size(), 40u);
 }
 
+TEST(ShadowShaftsTest, ScenesOfManyObjectsKeepTheBvh) {
+  // Small boxes scattered over a field: with up to kCrowded of them, most shadow rays get a
+  // list; with more, the whole grid is crowded at its root and every ray goes to the BVH.
+  auto scattered = [](int count) {
+    Rng rng(12);
+    std::vector<Bounds> items;
+    for (int i = 0; i < count; ++i) {
+      const Vec3 lo(rng.uniform() * 20 - 10, rng.uniform() * 4, rng.uniform() * 20 - 10);
+      items.push_back(box(lo, lo + Vec3(0.3)));
+    }
+    return items;
+  };
+  const std::vector<Bounds> light = {box({0, 20, 0}, {1, 20, 1})};
+  const ShadowShafts some(scattered(200), light), many(scattered(300), light);
+  Rng rng(13);
+  int listed = 0;
+  for (int i = 0; i < 1000; ++i) {
+    const Vec3 origin(rng.uniform() * 20 - 10, rng.uniform() * 4, rng.uniform() * 20 - 10);
+    listed += some.candidates(0, origin).has_value();
+    EXPECT_FALSE(many.candidates(0, origin));
+  }
+  EXPECT_GT(listed, 500);
+}
+
 TEST(ShadowShaftsTest, FlatScenesGetAFlatGrid) {
   // Everything in the plane y = 0: the grid is one cell thick and the others share the cells.
   std::vector<Bounds> items;
