@@ -115,9 +115,11 @@ Color Shader::direct(const Hit& hit, const Vec3& n, const Vec3& toEye, double ep
   return result;
 }
 
-Color Shader::spawn(const Vec3& origin, const Vec3& direction, const Spread& spread,
-                    const Vec3& normal, bool above, int depth, Rng rng, uint64_t& rays) const {
-  if (spread.radians <= 0) return trace(Ray{origin, direction}, depth, rng.child(0), rays);
+Color Shader::spawn(uint32_t inside, const Vec3& origin, const Vec3& direction,
+                    const Spread& spread, const Vec3& normal, bool above, int depth, Rng rng,
+                    uint64_t& rays) const {
+  if (spread.radians <= 0)
+    return traceFrom(inside, Ray{origin, direction}, depth, rng.child(0), rays);
   Color sum;
   const int n = settings_.drtRate;
   for (int i = 0; i < n; ++i) {
@@ -126,7 +128,7 @@ Color Shader::spawn(const Vec3& origin, const Vec3& direction, const Spread& spr
     Vec3 d = sampleCone(direction, spread.cosine, u1, branch.uniform());
     // A perturbed ray must stay on the side of the surface it was meant for.
     if ((dot(d, normal) > 0) != above) d = direction;
-    sum += trace(Ray{origin, d}, depth, branch, rays);
+    sum += traceFrom(inside, Ray{origin, d}, depth, branch, rays);
   }
   return meanOf(sum, n);
 }
@@ -137,6 +139,14 @@ Color Shader::trace(const Ray& ray, int depth, Rng rng, uint64_t& rays) const {
   if (!world_.intersect(ray, 0.0, std::numeric_limits<double>::infinity(), hit)) {
     return world_.scene().environment.background;
   }
+  return shade(ray, hit, depth, rng, rays);
+}
+
+Color Shader::traceFrom(uint32_t inside, const Ray& ray, int depth, Rng rng, uint64_t& rays) const {
+  if (inside == kOutside) return trace(ray, depth, rng, rays);
+  ++rays;
+  Hit hit;
+  if (!world_.intersectFromInside(inside, ray, hit)) return world_.scene().environment.background;
   return shade(ray, hit, depth, rng, rays);
 }
 
@@ -164,19 +174,20 @@ Color Shader::shade(const Ray& ray, const Hit& hit, int depth, Rng rng, uint64_t
 
   if (m.reflectivity > 0) {
     const Vec3 r = reflect(ray.direction, n);
-    color += m.reflectivity * spawn(hit.point + eps * n, r, surface.reflection, n, true, depth + 1,
-                                    rng.child(1000), rays);
+    color += m.reflectivity * spawn(entering ? kOutside : hit.object, hit.point + eps * n, r,
+                                    surface.reflection, n, true, depth + 1, rng.child(1000), rays);
   }
   if (m.transmissivity > 0) {
     const double eta = entering ? surface.inverseIor : m.ior;
     Vec3 t;
     if (refract(ray.direction, n, eta, t)) {
-      color += m.transmissivity * spawn(hit.point - eps * n, t, surface.transmission, n, false,
-                                        depth + 1, rng.child(2000), rays);
+      color += m.transmissivity * spawn(entering ? hit.object : kOutside, hit.point - eps * n, t,
+                                        surface.transmission, n, false, depth + 1, rng.child(2000),
+                                        rays);
     } else {  // total internal reflection: the transmitted light is reflected back inside
-      color +=
-          m.transmissivity * spawn(hit.point + eps * n, reflect(ray.direction, n),
-                                   surface.transmission, n, true, depth + 1, rng.child(2000), rays);
+      color += m.transmissivity * spawn(entering ? kOutside : hit.object, hit.point + eps * n,
+                                        reflect(ray.direction, n), surface.transmission, n, true,
+                                        depth + 1, rng.child(2000), rays);
     }
   }
   return color;

@@ -52,8 +52,11 @@ class Shader {
                uint64_t& rays) const;
   // The colour of `hit`, met by `ray` at recursion depth `depth`.
   Color shade(const Ray& ray, const Hit& hit, int depth, Rng rng, uint64_t& rays) const;
-  Color spawn(const Vec3& origin, const Vec3& direction, const Spread& spread, const Vec3& normal,
-              bool above, int depth, Rng rng, uint64_t& rays) const;
+  // `inside`: the scene object the spawned rays start inside, or kOutside.
+  static constexpr uint32_t kOutside = ~0u;
+  Color traceFrom(uint32_t inside, const Ray& ray, int depth, Rng rng, uint64_t& rays) const;
+  Color spawn(uint32_t inside, const Vec3& origin, const Vec3& direction, const Spread& spread,
+              const Vec3& normal, bool above, int depth, Rng rng, uint64_t& rays) const;
 
   const World& world_;
   RenderSettings settings_;

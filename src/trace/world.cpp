@@ -1,5 +1,8 @@
 #include "trace/world.h"
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
 #include <utility>
 
 #if defined(__SSE2__)
@@ -96,6 +99,9 @@ World::World(Scene scene) : scene_(std::move(scene)) {
   std::vector<Bounds> lights;
   for (const Light& light : scene_.lights) lights.push_back(boundsOf(light.shape));
   shafts_ = ShadowShafts(boxes, lights);
+  itemOfObject_.assign(scene_.objects.size(), ~0u);
+  for (uint32_t i = 0; i < items_.size(); ++i) itemOfObject_[items_[i].object] = i;
+  buildNeighbours(boxes);
   const Bvh order(boxes);
   ranks_.resize(8 * items_.size());
   for (int octant = 0; octant < 8; ++octant) {
@@ -117,6 +123,64 @@ bool World::intersectAmong(std::span<const uint32_t> candidates, const Ray& ray,
   return intersect(ray, tMin, tMax, hit, [&](double&, auto&& visit) {
     for (const uint32_t index : candidates) visit(index);
   });
+}
+
+void World::buildNeighbours(const std::vector<Bounds>& boxes) {
+  constexpr size_t kMostItems = 256;  // pairing them all costs n^2 box tests
+  constexpr uint32_t kLongest = 8;
+  if (boxes.empty() || boxes.size() > kMostItems) return;
+  double magnitude = 1;
+  for (const Bounds& b : boxes) {
+    magnitude = std::max(
+        {magnitude, maxComponent(max(Vec3(std::abs(b.lo.x), std::abs(b.lo.y), std::abs(b.lo.z)),
+                                     Vec3(std::abs(b.hi.x), std::abs(b.hi.y), std::abs(b.hi.z))))});
+  }
+  // Far above the shader's surface offset (1e-9 of the magnitude) and any rounding.
+  const double margin = 1e-6 * magnitude;
+  auto widen = [](Bounds b, double m) {
+    b.lo -= Vec3(m);
+    b.hi += Vec3(m);
+    return b;
+  };
+  auto overlap = [](const Bounds& a, const Bounds& b) {
+    return a.lo.x <= b.hi.x && b.lo.x <= a.hi.x && a.lo.y <= b.hi.y && b.lo.y <= a.hi.y &&
+           a.lo.z <= b.hi.z && b.lo.z <= a.hi.z;
+  };
+  for (const Bounds& b : boxes) {
+    const Bounds reach = widen(b, 2 * margin);
+    Neighbours n{widen(b, margin), static_cast<uint32_t>(neighbourItems_.size()), 0};
+    for (uint32_t j = 0; j < boxes.size(); ++j) {
+      if (overlap(reach, boxes[j])) ++n.count;
+    }
+    if (n.count > kLongest) {
+      n.count = 0;
+      n.box = Bounds();  // empty: never contains a ray's origin
+    } else {
+      for (uint32_t j = 0; j < boxes.size(); ++j) {
+        if (overlap(reach, boxes[j])) neighbourItems_.push_back(j);
+      }
+    }
+    neighbours_.push_back(n);
+  }
+}
+
+bool World::intersectFromInside(uint32_t object, const Ray& ray, Hit& hit) const {
+  const uint32_t item = object < itemOfObject_.size() ? itemOfObject_[object] : ~0u;
+  if (item < neighbours_.size()) {
+    const Neighbours& n = neighbours_[item];
+    auto contains = [&](const Vec3& p) {
+      return p.x >= n.box.lo.x && p.x <= n.box.hi.x && p.y >= n.box.lo.y && p.y <= n.box.hi.y &&
+             p.z >= n.box.lo.z && p.z <= n.box.hi.z;
+    };
+    // From inside the box to a hit inside it, the ray never left it: nothing else came nearer.
+    if (contains(ray.origin) &&
+        intersectAmong({neighbourItems_.data() + n.begin, n.count}, ray, 0.0,
+                       std::numeric_limits<double>::infinity(), hit) &&
+        contains(hit.point)) {
+      return true;
+    }
+  }
+  return intersect(ray, 0.0, std::numeric_limits<double>::infinity(), hit);
 }
 
 std::vector<Bounds> World::itemBounds() const {

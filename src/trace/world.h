@@ -42,6 +42,12 @@ class World {
   bool intersectAmong(std::span<const uint32_t> candidates, const Ray& ray, double tMin,
                       double tMax, Hit& hit) const;
 
+  // The nearest crossing from 0 of a ray that starts inside scene object `object` (a sphere or
+  // a box, into which the ray was refracted or inside which it was reflected), as intersect
+  // gives it: only the object and those whose boxes overlap its box can be met before the ray
+  // leaves that box, and the BVH is asked only when the ray gets that far.
+  bool intersectFromInside(uint32_t object, const Ray& ray, Hit& hit) const;
+
   // The boxes of the bounded objects, which the BVH holds as its items.
   std::vector<Bounds> itemBounds() const;
 
@@ -69,6 +75,7 @@ class World {
     uint32_t object = 0;
   };
 
+  void buildNeighbours(const std::vector<Bounds>& boxes);
   template <typename Candidates>
   bool intersect(const Ray& ray, double tMin, double tMax, Hit& hit, Candidates&& candidates) const;
   template <typename Candidates>
@@ -79,6 +86,15 @@ class World {
   ShadowShafts shafts_;
   std::vector<Item> items_;
   std::vector<Plane> planes_;
+  // Per item: its box widened by a margin, and the items whose boxes come within twice that
+  // margin of it (itself included); empty when there are too many objects to pair.
+  struct Neighbours {
+    Bounds box;
+    uint32_t begin = 0, count = 0;
+  };
+  std::vector<Neighbours> neighbours_;
+  std::vector<uint32_t> neighbourItems_;
+  std::vector<uint32_t> itemOfObject_;  // per scene object; ~0u for planes
   // ranks_[octant * items + item]: the item's place in the tie-breaking order, from 1.
   std::vector<uint32_t> ranks_;
 };

@@ -183,6 +183,40 @@ TEST(WorldTest, EqualDistancesFollowTheReferenceOrder) {
   EXPECT_GT(second, 100);
 }
 
+TEST(WorldTest, RaysFromInsideAnObjectMatchTheBvh) {
+  // Rays that enter an object where a random ray hits it, as the shader spawns them: just
+  // inside the surface, refracted inwards or reflected back inside. The objects overlap and
+  // duplicate one another, so other surfaces lie inside some of them.
+  const Scene scene = testScene(7, 80);
+  const World world(scene);
+  Rng rng(31);
+  int inside = 0;
+  for (int i = 0; i < 30000; ++i) {
+    const Ray probe = randomRay(rng);
+    Hit entry;
+    if (!world.intersect(probe, 0, std::numeric_limits<double>::infinity(), entry)) continue;
+    if (std::holds_alternative<PlaneShape>(scene.objects[entry.object].shape)) continue;
+    const bool entering = dot(probe.direction, entry.normal) < 0;
+    const Vec3 n = entering ? entry.normal : -entry.normal;  // faces the probe
+    // Into the object across the surface, a direction perturbed about the inward normal.
+    const Vec3 origin = entry.point - 1e-9 * n * (entering ? 1.0 : -1.0);
+    Vec3 d = (entering ? -n : n) + 0.9 * Vec3(rng.uniform() - 0.5, rng.uniform() - 0.5,
+                                              rng.uniform() - 0.5);
+    if (dot(d, entering ? -n : n) <= 0) d = entering ? -n : n;
+    const Ray ray{origin, normalize(d)};
+    Hit a, b;
+    const bool found = world.intersect(ray, 0, std::numeric_limits<double>::infinity(), a);
+    ASSERT_EQ(world.intersectFromInside(entry.object, ray, b), found) << "ray " << i;
+    if (!found) continue;
+    ++inside;
+    EXPECT_EQ(a.object, b.object) << "ray " << i;
+    EXPECT_EQ(a.t, b.t);
+    EXPECT_EQ(a.normal, b.normal);
+    EXPECT_EQ(a.point, b.point);
+  }
+  EXPECT_GT(inside, 5000);
+}
+
 TEST(WorldTest, ShadowRaysTowardsALightMatchTheReference) {
   Scene scene = testScene(5, 60);
   scene.lights.push_back({PointLight{{1, 9, -2}}});
