@@ -115,26 +115,29 @@ void BM_ComplexSceneNearest(benchmark::State& state) {
 }
 BENCHMARK(BM_ComplexSceneNearest);
 
-void BM_ComplexSceneShadow(benchmark::State& state) {
+// Replays the recorded shadow queries through `query(world, shadow)`.
+template <typename Query>
+void replayShadows(benchmark::State& state, Query&& query) {
   const RecordedQueries& q = complexSceneQueries();
   size_t i = 0;
   for (auto _ : state) {
-    benchmark::DoNotOptimize(q.world.transmittance(q.shadow[i].ray, 0, q.shadow[i].distance));
+    benchmark::DoNotOptimize(query(q.world, q.shadow[i]));
     if (++i == q.shadow.size()) i = 0;
   }
   state.SetItemsProcessed(state.iterations());
 }
+
+void BM_ComplexSceneShadow(benchmark::State& state) {
+  replayShadows(state, [](const World& world, const RecordedQueries::Shadow& s) {
+    return world.transmittance(s.ray, 0, s.distance);
+  });
+}
 BENCHMARK(BM_ComplexSceneShadow);
 
 void BM_ComplexSceneShadowToLight(benchmark::State& state) {
-  const RecordedQueries& q = complexSceneQueries();
-  size_t i = 0;
-  for (auto _ : state) {
-    const RecordedQueries::Shadow& s = q.shadow[i];
-    benchmark::DoNotOptimize(q.world.transmittanceToLight(s.light, s.ray, s.distance));
-    if (++i == q.shadow.size()) i = 0;
-  }
-  state.SetItemsProcessed(state.iterations());
+  replayShadows(state, [](const World& world, const RecordedQueries::Shadow& s) {
+    return world.transmittanceToLight(s.light, s.ray, s.distance);
+  });
 }
 BENCHMARK(BM_ComplexSceneShadowToLight);
 

@@ -161,11 +161,7 @@ QuadBvh::QuadBvh(const std::vector<Bounds>& bounds) {
   if (bounds.empty()) return;
   PRT_CHECK(bounds.size() < kItem);
   double maxCoordinate = 0;
-  for (const Bounds& b : bounds) {
-    for (int a = 0; a < 3; ++a) {
-      maxCoordinate = std::max({maxCoordinate, std::abs(b.lo[a]), std::abs(b.hi[a])});
-    }
-  }
+  for (const Bounds& b : bounds) maxCoordinate = std::max(maxCoordinate, b.largestMagnitude());
   maxCoordinate_ = floatAbove(maxCoordinate);
   if (bounds.size() == 1) {  // a root node with the item in one lane, the others empty
     nodes_.emplace_back();

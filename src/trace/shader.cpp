@@ -118,8 +118,9 @@ Color Shader::direct(const Hit& hit, const Vec3& n, const Vec3& toEye, double ep
 Color Shader::spawn(uint32_t inside, const Vec3& origin, const Vec3& direction,
                     const Spread& spread, const Vec3& normal, bool above, int depth, Rng rng,
                     uint64_t& rays) const {
-  if (spread.radians <= 0)
+  if (spread.radians <= 0) {
     return traceFrom(inside, Ray{origin, direction}, depth, rng.child(0), rays);
+  }
   Color sum;
   const int n = settings_.drtRate;
   for (int i = 0; i < n; ++i) {
@@ -133,31 +134,38 @@ Color Shader::spawn(uint32_t inside, const Vec3& origin, const Vec3& direction,
   return meanOf(sum, n);
 }
 
-Color Shader::trace(const Ray& ray, int depth, Rng rng, uint64_t& rays) const {
+// One ray: counted, met by `intersect` (the way the ray's origin allows), shaded.
+template <typename Intersect>
+Color Shader::traceWith(Intersect&& intersect, const Ray& ray, int depth, Rng rng,
+                        uint64_t& rays) const {
   ++rays;
   Hit hit;
-  if (!world_.intersect(ray, 0.0, std::numeric_limits<double>::infinity(), hit)) {
-    return world_.scene().environment.background;
-  }
+  if (!intersect(hit)) return world_.scene().environment.background;
   return shade(ray, hit, depth, rng, rays);
+}
+
+Color Shader::trace(const Ray& ray, int depth, Rng rng, uint64_t& rays) const {
+  return traceWith(
+      [&](Hit& hit) {
+        return world_.intersect(ray, 0.0, std::numeric_limits<double>::infinity(), hit);
+      },
+      ray, depth, rng, rays);
 }
 
 Color Shader::traceFrom(uint32_t inside, const Ray& ray, int depth, Rng rng, uint64_t& rays) const {
   if (inside == kOutside) return trace(ray, depth, rng, rays);
-  ++rays;
-  Hit hit;
-  if (!world_.intersectFromInside(inside, ray, hit)) return world_.scene().environment.background;
-  return shade(ray, hit, depth, rng, rays);
+  return traceWith([&](Hit& hit) { return world_.intersectFromInside(inside, ray, hit); }, ray,
+                   depth, rng, rays);
 }
 
 Color Shader::traceAmong(std::span<const uint32_t> candidates, const Ray& ray, Rng rng,
                          uint64_t& rays) const {
-  ++rays;
-  Hit hit;
-  if (!world_.intersectAmong(candidates, ray, 0.0, std::numeric_limits<double>::infinity(), hit)) {
-    return world_.scene().environment.background;
-  }
-  return shade(ray, hit, 0, rng, rays);
+  return traceWith(
+      [&](Hit& hit) {
+        return world_.intersectAmong(candidates, ray, 0.0, std::numeric_limits<double>::infinity(),
+                                     hit);
+      },
+      ray, 0, rng, rays);
 }
 
 Color Shader::shade(const Ray& ray, const Hit& hit, int depth, Rng rng, uint64_t& rays) const {
@@ -171,23 +179,26 @@ Color Shader::shade(const Ray& ray, const Hit& hit, int depth, Rng rng, uint64_t
   Color color = direct(hit, n, toEye, eps, rng, rays);
   if (depth >= scene.environment.maxDepth) return color;
   const Surface& surface = surfaces_[hit.object];
+  // Rays spawned back to the side the ray came from, and through to the other side: one of the
+  // two is inside the object (a convex one: a sphere or a box; World knows which it is).
+  const uint32_t sameSide = entering ? kOutside : hit.object;
+  const uint32_t otherSide = entering ? hit.object : kOutside;
 
   if (m.reflectivity > 0) {
     const Vec3 r = reflect(ray.direction, n);
-    color += m.reflectivity * spawn(entering ? kOutside : hit.object, hit.point + eps * n, r,
-                                    surface.reflection, n, true, depth + 1, rng.child(1000), rays);
+    color += m.reflectivity * spawn(sameSide, hit.point + eps * n, r, surface.reflection, n, true,
+                                    depth + 1, rng.child(1000), rays);
   }
   if (m.transmissivity > 0) {
     const double eta = entering ? surface.inverseIor : m.ior;
     Vec3 t;
     if (refract(ray.direction, n, eta, t)) {
-      color += m.transmissivity * spawn(entering ? hit.object : kOutside, hit.point - eps * n, t,
-                                        surface.transmission, n, false, depth + 1, rng.child(2000),
-                                        rays);
+      color += m.transmissivity * spawn(otherSide, hit.point - eps * n, t, surface.transmission, n,
+                                        false, depth + 1, rng.child(2000), rays);
     } else {  // total internal reflection: the transmitted light is reflected back inside
-      color += m.transmissivity * spawn(entering ? kOutside : hit.object, hit.point + eps * n,
-                                        reflect(ray.direction, n), surface.transmission, n, true,
-                                        depth + 1, rng.child(2000), rays);
+      color +=
+          m.transmissivity * spawn(sameSide, hit.point + eps * n, reflect(ray.direction, n),
+                                   surface.transmission, n, true, depth + 1, rng.child(2000), rays);
     }
   }
   return color;

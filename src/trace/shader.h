@@ -55,6 +55,8 @@ class Shader {
   // `inside`: the scene object the spawned rays start inside, or kOutside.
   static constexpr uint32_t kOutside = ~0u;
   Color traceFrom(uint32_t inside, const Ray& ray, int depth, Rng rng, uint64_t& rays) const;
+  template <typename Intersect>
+  Color traceWith(Intersect&& intersect, const Ray& ray, int depth, Rng rng, uint64_t& rays) const;
   Color spawn(uint32_t inside, const Vec3& origin, const Vec3& direction, const Spread& spread,
               const Vec3& normal, bool above, int depth, Rng rng, uint64_t& rays) const;
 

@@ -6,11 +6,6 @@
 namespace prt {
 namespace {
 
-// The corner of `b` picked by the bits of `s` (1: x, 2: y, 4: z; set: the high side).
-Vec3 corner(const Bounds& b, int s) {
-  return {(s & 1) ? b.hi.x : b.lo.x, (s & 2) ? b.hi.y : b.lo.y, (s & 4) ? b.hi.z : b.lo.z};
-}
-
 struct Interval {
   double lo, hi;
 };
@@ -21,18 +16,6 @@ Interval project(const Bounds& b, const Vec3& axis) {
   const double radius =
       half.x * std::abs(axis.x) + half.y * std::abs(axis.y) + half.z * std::abs(axis.z);
   return {centre - radius, centre + radius};
-}
-
-Bounds widened(Bounds b, double margin) {
-  b.lo -= Vec3(margin);
-  b.hi += Vec3(margin);
-  return b;
-}
-
-double largestMagnitude(const Bounds& b) {
-  return std::max(maxComponent(max(Vec3(std::abs(b.lo.x), std::abs(b.lo.y), std::abs(b.lo.z)),
-                                   Vec3(std::abs(b.hi.x), std::abs(b.hi.y), std::abs(b.hi.z)))),
-                  0.0);
 }
 
 }  // namespace
@@ -47,7 +30,7 @@ Shaft::Shaft(const Bounds& from, const Bounds& to) {
   for (int a = 0; a < 3; ++a) {
     for (int s = 0; s < 8; ++s) {
       if ((s >> a) & 1) continue;  // the corner's a coordinate does not matter
-      const Vec3 d = corner(to, s) - corner(from, s);
+      const Vec3 d = to.corner(s) - from.corner(s);
       const Vec3 axis = a == 0   ? Vec3(0, -d.z, d.y)
                         : a == 1 ? Vec3(d.z, 0, -d.x)
                                  : Vec3(-d.y, d.x, 0);
@@ -60,9 +43,7 @@ Shaft::Shaft(const Bounds& from, const Bounds& to) {
 }
 
 bool Shaft::meets(const Bounds& b) const {
-  for (int i = 0; i < 3; ++i) {
-    if (b.hi[i] < box_.lo[i] || b.lo[i] > box_.hi[i]) return false;
-  }
+  if (!box_.overlaps(b)) return false;
   const Vec3 centre = b.centroid(), half = 0.5 * b.diagonal();
   for (int i = 0; i < count_; ++i) {
     const Side& side = sides_[i];
@@ -78,16 +59,16 @@ ShadowShafts::ShadowShafts(const std::vector<Bounds>& items, const std::vector<B
   Bounds grid;
   for (const Bounds& b : items) grid.extend(b);
   if (items.empty() || lights.empty() || !isFinite(grid.lo) || !isFinite(grid.hi)) return;
-  double magnitude = largestMagnitude(grid);
+  double magnitude = grid.largestMagnitude();
   for (const Bounds& l : lights) {
     if (!isFinite(l.lo) || !isFinite(l.hi)) return;
-    magnitude = std::max(magnitude, largestMagnitude(l));
+    magnitude = std::max(magnitude, l.largestMagnitude());
   }
   // Far above the rounding of any coordinate, of a cell lookup or of a shadow ray's end.
   margin_ = 1e-7 * std::max(1.0, magnitude);
   // From the objects up to the lights: the floor around the objects, under the lights, is in.
   for (const Bounds& l : lights) grid.extend(l);
-  grid = widened(grid, margin_);
+  grid = grid.widened(margin_);
 
   // About kCells cells, as near cubes as the grid's shape allows; an axis shorter than a cell
   // (a flat scene) gets one, and the others share the cells.
@@ -120,7 +101,7 @@ ShadowShafts::ShadowShafts(const std::vector<Bounds>& items, const std::vector<B
   std::vector<uint32_t> all(items.size());
   for (uint32_t i = 0; i < all.size(); ++i) all[i] = i;
   for (size_t l = 0; l < lights_; ++l) {
-    refine(items, widened(lights[l], margin_), l, {{0, 0, 0}, {dims_[0], dims_[1], dims_[2]}}, all);
+    refine(items, lights[l].widened(margin_), l, {{0, 0, 0}, {dims_[0], dims_[1], dims_[2]}}, all);
   }
 }
 
@@ -129,7 +110,7 @@ void ShadowShafts::refine(const std::vector<Bounds>& items, const Bounds& light,
   Bounds from;
   from.lo = lo_ + Vec3(region.lo[0], region.lo[1], region.lo[2]) * cell_;
   from.hi = lo_ + Vec3(region.hi[0], region.hi[1], region.hi[2]) * cell_;
-  const Shaft shaft(widened(from, margin_), light);
+  const Shaft shaft(from.widened(margin_), light);
   std::vector<uint32_t> kept;
   for (const uint32_t i : candidates) {
     if (shaft.meets(items[i])) kept.push_back(i);

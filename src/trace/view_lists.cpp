@@ -17,10 +17,8 @@ TileRange tilesCovered(const PinholeCamera& camera, const Bounds& b, int tilesX,
   const TileRange all{0, 0, tilesX - 1, tilesY - 1};
   double lo[2] = {HUGE_VAL, HUGE_VAL}, hi[2] = {-HUGE_VAL, -HUGE_VAL};
   for (int c = 0; c < 8; ++c) {
-    const Vec3 corner((c & 1) ? b.hi.x : b.lo.x, (c & 2) ? b.hi.y : b.lo.y,
-                      (c & 4) ? b.hi.z : b.lo.z);
     double p[2];
-    if (!camera.project(corner, p[0], p[1]) || !std::isfinite(p[0]) || !std::isfinite(p[1])) {
+    if (!camera.project(b.corner(c), p[0], p[1]) || !std::isfinite(p[0]) || !std::isfinite(p[1])) {
       return all;
     }
     for (int a = 0; a < 2; ++a) {

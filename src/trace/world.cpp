@@ -130,35 +130,19 @@ void World::buildNeighbours(const std::vector<Bounds>& boxes) {
   constexpr uint32_t kLongest = 8;
   if (boxes.empty() || boxes.size() > kMostItems) return;
   double magnitude = 1;
-  for (const Bounds& b : boxes) {
-    magnitude = std::max(
-        {magnitude, maxComponent(max(Vec3(std::abs(b.lo.x), std::abs(b.lo.y), std::abs(b.lo.z)),
-                                     Vec3(std::abs(b.hi.x), std::abs(b.hi.y), std::abs(b.hi.z))))});
-  }
+  for (const Bounds& b : boxes) magnitude = std::max(magnitude, b.largestMagnitude());
   // Far above the shader's surface offset (1e-9 of the magnitude) and any rounding.
   const double margin = 1e-6 * magnitude;
-  auto widen = [](Bounds b, double m) {
-    b.lo -= Vec3(m);
-    b.hi += Vec3(m);
-    return b;
-  };
-  auto overlap = [](const Bounds& a, const Bounds& b) {
-    return a.lo.x <= b.hi.x && b.lo.x <= a.hi.x && a.lo.y <= b.hi.y && b.lo.y <= a.hi.y &&
-           a.lo.z <= b.hi.z && b.lo.z <= a.hi.z;
-  };
   for (const Bounds& b : boxes) {
-    const Bounds reach = widen(b, 2 * margin);
-    Neighbours n{widen(b, margin), static_cast<uint32_t>(neighbourItems_.size()), 0};
+    const Bounds reach = b.widened(2 * margin);
+    Neighbours n{b.widened(margin), static_cast<uint32_t>(neighbourItems_.size()), 0};
     for (uint32_t j = 0; j < boxes.size(); ++j) {
-      if (overlap(reach, boxes[j])) ++n.count;
+      if (reach.overlaps(boxes[j])) neighbourItems_.push_back(j);
     }
-    if (n.count > kLongest) {
-      n.count = 0;
-      n.box = Bounds();  // empty: never contains a ray's origin
-    } else {
-      for (uint32_t j = 0; j < boxes.size(); ++j) {
-        if (overlap(reach, boxes[j])) neighbourItems_.push_back(j);
-      }
+    n.count = static_cast<uint32_t>(neighbourItems_.size()) - n.begin;
+    if (n.count > kLongest) {  // too crowded: left to the BVH
+      neighbourItems_.resize(n.begin);
+      n = Neighbours{};  // an empty box never contains a ray's origin
     }
     neighbours_.push_back(n);
   }
@@ -168,15 +152,11 @@ bool World::intersectFromInside(uint32_t object, const Ray& ray, Hit& hit) const
   const uint32_t item = object < itemOfObject_.size() ? itemOfObject_[object] : ~0u;
   if (item < neighbours_.size()) {
     const Neighbours& n = neighbours_[item];
-    auto contains = [&](const Vec3& p) {
-      return p.x >= n.box.lo.x && p.x <= n.box.hi.x && p.y >= n.box.lo.y && p.y <= n.box.hi.y &&
-             p.z >= n.box.lo.z && p.z <= n.box.hi.z;
-    };
     // From inside the box to a hit inside it, the ray never left it: nothing else came nearer.
-    if (contains(ray.origin) &&
+    if (n.box.contains(ray.origin) &&
         intersectAmong({neighbourItems_.data() + n.begin, n.count}, ray, 0.0,
                        std::numeric_limits<double>::infinity(), hit) &&
-        contains(hit.point)) {
+        n.box.contains(hit.point)) {
       return true;
     }
   }
