@@ -115,7 +115,7 @@ Layout layout() {
 
 TEST(ShadowShaftsTest, ListsEveryItemASegmentToTheLightCrosses) {
   const Layout l = layout();
-  const ShadowShafts shafts(l.items, l.lights);
+  const ShadowShafts shafts(l.items, l.lights, 6);
   EXPECT_GT(shafts.cellCount(), 1000u);
   Rng rng(8);
   int listed = 0, empty = 0;
