@@ -95,6 +95,7 @@ World::World(Scene scene) : scene_(std::move(scene)) {
     }
   }
   const std::vector<Bounds> boxes = itemBounds();
+  for (const Bounds& b : boxes) itemsBox_.extend(b);
   bvh_ = QuadBvh(boxes);
   std::vector<Bounds> lights;
   for (const Light& light : scene_.lights) lights.push_back(boundsOf(light.shape));
@@ -268,7 +269,15 @@ double World::transmittance(const Ray& ray, double tMin, double distance) const 
 
 double World::transmittanceToLight(size_t light, const Ray& ray, double distance) const {
   const auto listed = shafts_.candidates(light, ray.origin);
-  if (!listed) return transmittance(ray, 0.0, distance);
+  if (!listed) {
+    // A ray that misses the box around all the bounded objects fails each object's own box
+    // test too (the same arithmetic on wider bounds): only the planes can be in its way. Most
+    // rays from outside the grid (the far parts of a floor) are answered so.
+    if (!hitsBounds(itemsBox_, RayQuery(ray), 0.0, distance)) {
+      return transmittance(ray, 0.0, distance, [](auto&&) {});
+    }
+    return transmittance(ray, 0.0, distance);
+  }
   return transmittance(ray, 0.0, distance, [&](auto&& visit) {
     for (const uint32_t index : *listed) {
       if (visit(index) < 0) return;

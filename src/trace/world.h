@@ -85,6 +85,7 @@ class World {
   QuadBvh bvh_;
   ShadowShafts shafts_;
   std::vector<Item> items_;
+  Bounds itemsBox_;  // around all of them
   std::vector<Plane> planes_;
   // Per item: its box widened by a margin, and the items whose boxes come within twice that
   // margin of it (itself included); empty when there are too many objects to pair.

@@ -217,11 +217,27 @@ TEST(WorldTest, RaysFromInsideAnObjectMatchTheBvh) {
   EXPECT_GT(inside, 5000);
 }
 
-TEST(WorldTest, ShadowRaysTowardsALightMatchTheReference) {
+// A point of `light` a shadow ray from `origin` may aim at, as the shader samples it.
+Vec3 lightTarget(const Light& light, const Vec3& origin, Rng& rng) {
+  if (const auto* p = std::get_if<PointLight>(&light.shape)) return p->position;
+  if (const auto* s = std::get_if<SphereLight>(&light.shape)) {
+    return sampleDisc(s->center, normalize(s->center - origin), s->radius, rng.uniform(),
+                      rng.uniform());
+  }
+  const auto& r = std::get<RectLight>(light.shape);
+  return r.corner + rng.uniform() * r.edge1 + rng.uniform() * r.edge2;
+}
+
+Scene litTestScene() {
   Scene scene = testScene(5, 60);
   scene.lights.push_back({PointLight{{1, 9, -2}}});
   scene.lights.push_back({SphereLight{{-3, 6, 3}, 0.8}});
   scene.lights.push_back({RectLight{{4, 3, -1}, {0, 0, 2}, {0, 1.5, 0}}});
+  return scene;
+}
+
+TEST(WorldTest, ShadowRaysTowardsALightMatchTheReference) {
+  const Scene scene = litTestScene();
   const World world(scene);
   const ReferenceWorld reference(scene);
   Rng rng(21);
@@ -236,17 +252,7 @@ TEST(WorldTest, ShadowRaysTowardsALightMatchTheReference) {
       origin = hit.point + 1e-9 * n;
     }
     const size_t l = i % scene.lights.size();
-    Vec3 target;
-    if (const auto* p = std::get_if<PointLight>(&scene.lights[l].shape)) {
-      target = p->position;
-    } else if (const auto* s = std::get_if<SphereLight>(&scene.lights[l].shape)) {
-      target = sampleDisc(s->center, normalize(s->center - origin), s->radius, rng.uniform(),
-                          rng.uniform());
-    } else {
-      const auto& r = std::get<RectLight>(scene.lights[l].shape);
-      target = r.corner + rng.uniform() * r.edge1 + rng.uniform() * r.edge2;
-    }
-    Vec3 toLight = target - origin;
+    Vec3 toLight = lightTarget(scene.lights[l], origin, rng) - origin;
     const double distance = length(toLight);
     toLight /= distance;
     const Ray ray{origin, toLight};
@@ -258,6 +264,34 @@ TEST(WorldTest, ShadowRaysTowardsALightMatchTheReference) {
   }
   EXPECT_GT(partial, 1000);
   EXPECT_GT(blocked, 1000);
+}
+
+TEST(WorldTest, ShadowRaysFromFarAwayMatchTheReference) {
+  // From the floor far from the objects, outside the shadow shafts' grid: rays that pass over
+  // or beside every object's box, and rays that cross the objects' region.
+  const Scene scene = litTestScene();
+  const World world(scene);
+  const ReferenceWorld reference(scene);
+  Bounds objects;
+  for (const Bounds& b : world.itemBounds()) objects.extend(b);
+  Rng rng(22);
+  int clear = 0, across = 0;
+  for (int i = 0; i < 20000; ++i) {
+    const double angle = rng.uniform() * 6.283, reach = 8 + rng.uniform() * 40;
+    const Vec3 origin(reach * std::cos(angle), 1e-9, reach * std::sin(angle));
+    const size_t l = i % scene.lights.size();
+    Vec3 toLight = lightTarget(scene.lights[l], origin, rng) - origin;
+    const double distance = length(toLight);
+    toLight /= distance;
+    const Ray ray{origin, toLight};
+    const double passed = world.transmittanceToLight(l, ray, distance);
+    ASSERT_EQ(passed, reference.transmittance(ray, 0, distance)) << "ray " << i;
+    const bool crosses = hitsBounds(objects, RayQuery(ray), 0, distance);
+    clear += !crosses;
+    across += crosses && passed < 1;
+  }
+  EXPECT_GT(clear, 5000);
+  EXPECT_GT(across, 1000);
 }
 
 }  // namespace
