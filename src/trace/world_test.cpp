@@ -217,15 +217,26 @@ TEST(WorldTest, RaysFromInsideAnObjectMatchTheBvh) {
   EXPECT_GT(inside, 5000);
 }
 
-// A point of `light` a shadow ray from `origin` may aim at, as the shader samples it.
-Vec3 lightTarget(const Light& light, const Vec3& origin, Rng& rng) {
-  if (const auto* p = std::get_if<PointLight>(&light.shape)) return p->position;
-  if (const auto* s = std::get_if<SphereLight>(&light.shape)) {
-    return sampleDisc(s->center, normalize(s->center - origin), s->radius, rng.uniform(),
-                      rng.uniform());
+// A shadow ray from `origin` to a point of `light` sampled as the shader samples it, and the
+// distance to that point.
+struct ShadowRay {
+  Ray ray;
+  double distance;
+};
+ShadowRay towardsLight(const Light& light, const Vec3& origin, Rng& rng) {
+  Vec3 target;
+  if (const auto* p = std::get_if<PointLight>(&light.shape)) {
+    target = p->position;
+  } else if (const auto* s = std::get_if<SphereLight>(&light.shape)) {
+    target = sampleDisc(s->center, normalize(s->center - origin), s->radius, rng.uniform(),
+                        rng.uniform());
+  } else {
+    const auto& r = std::get<RectLight>(light.shape);
+    target = r.corner + rng.uniform() * r.edge1 + rng.uniform() * r.edge2;
   }
-  const auto& r = std::get<RectLight>(light.shape);
-  return r.corner + rng.uniform() * r.edge1 + rng.uniform() * r.edge2;
+  const Vec3 toLight = target - origin;
+  const double distance = length(toLight);
+  return {Ray{origin, toLight / distance}, distance};
 }
 
 Scene litTestScene() {
@@ -252,10 +263,7 @@ TEST(WorldTest, ShadowRaysTowardsALightMatchTheReference) {
       origin = hit.point + 1e-9 * n;
     }
     const size_t l = i % scene.lights.size();
-    Vec3 toLight = lightTarget(scene.lights[l], origin, rng) - origin;
-    const double distance = length(toLight);
-    toLight /= distance;
-    const Ray ray{origin, toLight};
+    const auto [ray, distance] = towardsLight(scene.lights[l], origin, rng);
     const double passed = world.transmittanceToLight(l, ray, distance);
     ASSERT_EQ(passed, reference.transmittance(ray, 0, distance)) << "ray " << i;
     ASSERT_EQ(passed, world.transmittance(ray, 0, distance)) << "ray " << i;
@@ -280,10 +288,7 @@ TEST(WorldTest, ShadowRaysFromFarAwayMatchTheReference) {
     const double angle = rng.uniform() * 6.283, reach = 8 + rng.uniform() * 40;
     const Vec3 origin(reach * std::cos(angle), 1e-9, reach * std::sin(angle));
     const size_t l = i % scene.lights.size();
-    Vec3 toLight = lightTarget(scene.lights[l], origin, rng) - origin;
-    const double distance = length(toLight);
-    toLight /= distance;
-    const Ray ray{origin, toLight};
+    const auto [ray, distance] = towardsLight(scene.lights[l], origin, rng);
     const double passed = world.transmittanceToLight(l, ray, distance);
     ASSERT_EQ(passed, reference.transmittance(ray, 0, distance)) << "ray " << i;
     const bool crosses = hitsBounds(objects, RayQuery(ray), 0, distance);
