@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 
 #include "prt_command.h"
@@ -112,6 +113,49 @@ TEST_F(CliTest, SpeedIndexPrintsSeconds) {
   const Result r = run("speed-index --discs 16 --repeats 1");
   EXPECT_EQ(r.exitCode, 0);
   EXPECT_GT(std::atof(r.output.c_str()), 0.0) << r.output;
+}
+
+// The trace library's level as `prt --version` reports it ("... (trace kernels: LEVEL)").
+std::string traceLevel(const std::string& environment) {
+  const Result r = run("--version", environment);
+  const std::string key = "trace kernels: ";
+  const size_t at = r.output.find(key);
+  if (r.exitCode != 0 || at == std::string::npos) return "?";
+  return r.output.substr(at + key.size(), r.output.find(')', at) - at - key.size());
+}
+
+// The loader takes the best build of the trace library the processor supports; hiding AVX2
+// from it (a glibc tunable) makes it fall back to the baseline build. Both must render every
+// pixel alike: a mixed cluster's nodes run different builds on parts of one image. Every
+// example scene, small: float pixels hide most last-bit differences of the doubles behind
+// them, so one scene alone can miss a difference (a build with fused multiply-adds renders
+// the benchmark scene alike at these sizes, but not the transmissions scene).
+TEST_F(CliTest, EveryBuildOfTheKernelsRendersTheSameImages) {
+  const std::string baselineOnly = "GLIBC_TUNABLES=glibc.cpu.hwcaps=-AVX2 ";
+  const std::string best = traceLevel(""), baseline = traceLevel(baselineOnly);
+  EXPECT_EQ(baseline, "baseline");
+  if (best == baseline) GTEST_SKIP() << "one build of the kernels runs here: " << best;
+  auto bytes = [](const std::string& file) {
+    std::ifstream in(file, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  int scenes = 0;
+  for (const auto& entry : fs::directory_iterator(fs::path(PRT_SOURCE_DIR) / "scenes")) {
+    if (entry.path().extension() != ".scene") continue;
+    ++scenes;
+    // Case D: supersampling and every distributed effect (gloss, blur, soft shadows).
+    const std::string args =
+        "render " + entry.path().string() + " --width 64 --height 48 --case D -q -o ";
+    const Result a = run(args + path("best.pfm"));
+    const Result b = run(args + path("baseline.pfm"), baselineOnly);
+    ASSERT_EQ(a.exitCode, 0) << a.output;
+    ASSERT_EQ(b.exitCode, 0) << b.output;
+    const std::string imageA = bytes(path("best.pfm")), imageB = bytes(path("baseline.pfm"));
+    EXPECT_GT(imageA.size(), 64u * 48u * 12u);
+    EXPECT_TRUE(imageA == imageB) << entry.path().filename() << ": the " << best
+                                  << " and baseline builds rendered different images";
+  }
+  EXPECT_GE(scenes, 8);
 }
 
 }  // namespace

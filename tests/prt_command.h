@@ -25,9 +25,10 @@ inline std::string prtBinary() {
   return env ? env : "prt";
 }
 
-// Runs `prt ARGS` through the shell, capturing stdout and stderr.
-inline Result run(const std::string& args) {
-  const std::string command = prtBinary() + " " + args + " 2>&1";
+// Runs `prt ARGS` through the shell, capturing stdout and stderr; `environment` (such as
+// "NAME=value ") prefixes the command.
+inline Result run(const std::string& args, const std::string& environment = "") {
+  const std::string command = environment + prtBinary() + " " + args + " 2>&1";
   Result r;
   FILE* pipe = popen(command.c_str(), "r");
   if (!pipe) return r;

@@ -69,7 +69,7 @@ time_command() {
 timer=date
 command -v hyperfine >/dev/null 2>&1 && timer="hyperfine $(hyperfine --version | awk '{print $2}')"
 echo "scene $(basename "$scene"), ${width}x${height}, one thread each, median of $runs runs ($timer)"
-echo "$(povray --version 2>&1 | grep -m1 '^POV-Ray'); prt at $prt"
+echo "$(povray --version 2>&1 | grep -m1 '^POV-Ray'); $("$prt" --version) at $prt"
 printf '%-5s %-10s %-10s %-10s %-12s %-12s %-10s\n' spp "PRT s" "POV s" "PRT/POV" \
   "PRT trace s" "POV trace s" "PRT/POV"
 

@@ -7,11 +7,14 @@
 
 #include "cli/commands.h"
 #include "core/input_error.h"
+#include "trace/isa_level.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"PRT: a ray tracer for networks of computers of different speeds"};
   app.require_subcommand(1);
-  app.set_version_flag("--version", "prt 0.1.0");
+  // The trace library's build in use, as the loader picked it for this processor.
+  app.set_version_flag("--version",
+                       std::string("prt 0.1.0 (trace kernels: ") + prt::traceIsaLevel() + ")");
   const prt::cli::Action render = prt::cli::addRenderCommand(app);
   const prt::cli::Action speedIndex = prt::cli::addSpeedIndexCommand(app);
   const prt::cli::Action simulate = prt::cli::addSimulateCommand(app);
