@@ -2,6 +2,8 @@
 
 namespace prt {
 
-const char* traceIsaLevel() { return PRT_ISA_LEVEL; }
+const char* traceIsaLevel() {
+  return PRT_ISA_LEVEL;
+}
 
 }  // namespace prt
