@@ -40,6 +40,9 @@ def main():
         size += ["--height", str(args.height)]
     out = os.path.join(tempfile.mkdtemp(prefix="prt-bench-"), "img.pfm")
     threads_all = os.cpu_count() or 1
+    # Which build of the trace kernels ran (baseline or an x86-64 level): figures depend on it.
+    version = subprocess.run([args.prt, "--version"], capture_output=True, text=True).stdout
+    print(version.strip())
     print(f"{'case':<5} {'threads':>7} {'median_s':>9} {'rays':>12} {'Mrays/s':>8}")
     for case in args.cases.split(","):
         for threads in (1, threads_all):

@@ -6,6 +6,7 @@
 
 #include "core/rng.h"
 #include "scene/scene_file.h"
+#include "trace/isa_level.h"
 #include "trace/renderer.h"
 
 namespace prt {
@@ -155,4 +156,13 @@ BENCHMARK(BM_ComplexSceneWorld)->Unit(benchmark::kMillisecond);
 }  // namespace
 }  // namespace prt
 
-BENCHMARK_MAIN();
+// As BENCHMARK_MAIN, with the build of the trace kernels that ran (baseline or an x86-64
+// level) in the report's context: the figures depend on it.
+int main(int argc, char** argv) {
+  benchmark::AddCustomContext("trace kernels", prt::traceIsaLevel());
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}
