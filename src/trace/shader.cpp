@@ -99,13 +99,17 @@ Color Shader::direct(const Hit& hit, const Vec3& n, const Vec3& toEye, double ep
       ++rays;
       const double visible = world_.transmittanceToLight(l, Ray{origin, toLight}, distance);
       if (visible <= 0) continue;
-      const double highlight = std::max(0.0, dot(reflect(-toLight, n), toEye));
       const Color diffuse = (m.diffuse * cosine) * m.color;
       // +0^n is +0 for n > 0 (scene files require n >= 1): the power is skipped then, and when
-      // the term could not change the sum anyway.
-      const bool lit = highlight > 0 || !(m.phongExponent > 0);
-      const bool needed = m.specular > 0 && lit &&
-                          !specularIsNegligible(highlight, m.phongExponent, m.specular, diffuse);
+      // the term could not change the sum anyway; a surface with no specular term skips the
+      // highlight too.
+      bool needed = false;
+      double highlight = 0;
+      if (m.specular > 0) {
+        highlight = std::max(0.0, dot(reflect(-toLight, n), toEye));
+        const bool lit = highlight > 0 || !(m.phongExponent > 0);
+        needed = lit && !specularIsNegligible(highlight, m.phongExponent, m.specular, diffuse);
+      }
       const Color local =
           diffuse + Color(needed ? m.specular * powNonNegative(highlight, m.phongExponent) : 0.0);
       sum += visible * light.color * local;
