@@ -34,6 +34,9 @@ class Rng {
     return static_cast<double>(bits >> 11) * 0x1.0p-53;
   }
 
+  // Moves past the next `draws` values, as that many calls of uniform() would.
+  constexpr void skip(uint64_t draws) { counter_ += draws; }
+
   constexpr uint64_t key() const { return key_; }
 
  private:

@@ -47,5 +47,15 @@ TEST(RngTest, ChildDoesNotDependOnDrawsFromParent) {
   EXPECT_EQ(a.child(3).uniform(), b.child(3).uniform());
 }
 
+TEST(RngTest, SkipMovesPastAsManyDraws) {
+  Rng drawn(21);
+  Rng skipped(21);
+  for (int i = 0; i < 5; ++i) drawn.uniform();
+  skipped.skip(5);
+  EXPECT_EQ(drawn.uniform(), skipped.uniform());
+  skipped.skip(0);
+  EXPECT_EQ(drawn.uniform(), skipped.uniform());
+}
+
 }  // namespace
 }  // namespace prt

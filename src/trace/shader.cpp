@@ -48,6 +48,39 @@ bool refract(const Vec3& d, const Vec3& n, double eta, Vec3& transmitted) {
   return true;
 }
 
+LightReach reachOf(const LightShape& shape) {
+  LightReach r;
+  if (const auto* p = std::get_if<PointLight>(&shape)) {
+    r.center = p->position;
+  } else if (const auto* sph = std::get_if<SphereLight>(&shape)) {
+    r.center = sph->center;
+    r.radius = sph->radius;
+  } else {
+    // The rectangle's centre; its farthest points are corners, half a diagonal away.
+    const auto& rect = std::get<RectLight>(shape);
+    r.center = rect.corner + 0.5 * (rect.edge1 + rect.edge2);
+    r.radius = 0.5 * std::max(length(rect.edge1 + rect.edge2), length(rect.edge1 - rect.edge2));
+  }
+  r.magnitude = std::abs(r.center.x) + std::abs(r.center.y) + std::abs(r.center.z);
+  return r;
+}
+
+bool surelyBehind(const LightReach& reach, const Vec3& origin, const Vec3& n, double nn) {
+  // With c the centre, R the radius and d = dot(n, c - origin) as computed: a point t aimed at
+  // is within R (1 + 1e-14) of c, plus the rounding of c + offset (below 1e-15 (|c| + R) in
+  // each coordinate), so dot(n, t - origin) <= d + |n| (R + ...) + 1e-15 |c - origin|_1.
+  // Asking d < -(R (1 + 1e-6) max(1, n.n) + 1e-9 (|c - origin|_1 + |c|_1)) leaves the exact
+  // cosine below -1e-10 (|t - origin| is at most 2.8 |c - origin|_1 there, |c - origin|_1
+  // being at least about R), far beyond the 1e-14 or so that rounding the direction and the
+  // cosine can move it: the computed cosine is negative too.
+  const Vec3 v = reach.center - origin;
+  const double d = dot(n, v);
+  const double spread = std::abs(v.x) + std::abs(v.y) + std::abs(v.z);
+  const double margin =
+      reach.radius * (1 + 1e-6) * std::max(1.0, nn) + 1e-9 * (spread + reach.magnitude);
+  return d < -margin;
+}
+
 Shader::Shader(const World& world, const RenderSettings& settings)
     : world_(world), settings_(settings) {
   auto spread = [](double degrees) {
@@ -58,6 +91,7 @@ Shader::Shader(const World& world, const RenderSettings& settings)
     surfaces_.push_back({spread(o.material.glossDegrees), spread(o.material.translucencyDegrees),
                          1.0 / o.material.ior});
   }
+  for (const Light& light : world.scene().lights) reaches_.push_back(reachOf(light.shape));
 }
 
 Color Shader::direct(const Hit& hit, const Vec3& n, const Vec3& toEye, Rng& rng,
@@ -71,11 +105,18 @@ Color Shader::direct(const Hit& hit, const Vec3& n, const Vec3& toEye, double ep
   const Material& m = world_.material(hit.object);
   Color result = m.ambient * scene.environment.ambient * m.color;
   const Vec3 origin = hit.point + eps * n;
+  const double nn = dot(n, n);
 
   for (size_t l = 0; l < scene.lights.size(); ++l) {
     const Light& light = scene.lights[l];
     const bool point = std::holds_alternative<PointLight>(light.shape);
     const int samples = point ? 1 : settings_.drtRate;
+    // A light wholly behind the surface: every sample would be skipped below for its cosine.
+    // Only the random numbers they would draw (two each, for a light with extent) are taken.
+    if (surelyBehind(reaches_[l], origin, n, nn)) {
+      rng.skip(point ? 0 : 2 * static_cast<uint64_t>(samples));
+      continue;
+    }
     Color sum;
     for (int s = 0; s < samples; ++s) {
       Vec3 target;

@@ -19,6 +19,22 @@
 
 namespace prt {
 
+// A ball holding every point a light's shadow rays may aim at: its centre and radius, and
+// the sum of the centre's coordinates' magnitudes (for rounding margins).
+struct LightReach {
+  Vec3 center;
+  double radius = 0;
+  double magnitude = 0;
+};
+LightReach reachOf(const LightShape& shape);
+
+// Whether every point of `reach` lies so far behind the plane through `origin` with normal `n`
+// that each shadow ray aimed at one would have a computed cosine dot(n, direction) below 0,
+// and be skipped: the margins cover the rounding of sampling the point, of normalising the
+// direction and of the dot product, and a normal up to a millionth away from unit length.
+// `nn` is dot(n, n).
+bool surelyBehind(const LightReach& reach, const Vec3& origin, const Vec3& n, double nn);
+
 class Shader {
  public:
   Shader(const World& world, const RenderSettings& settings);
@@ -62,7 +78,8 @@ class Shader {
 
   const World& world_;
   RenderSettings settings_;
-  std::vector<Surface> surfaces_;  // per object
+  std::vector<Surface> surfaces_;    // per object
+  std::vector<LightReach> reaches_;  // per light
 };
 
 // Whether the Phong term specular * highlight^exponent is surely below a quarter of the last

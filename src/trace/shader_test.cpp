@@ -5,6 +5,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "trace/sampling.h"
+
 namespace prt {
 namespace {
 
@@ -227,6 +229,93 @@ TEST(ShaderTest, NegligibleSpecularTermChangesNoBit) {
   EXPECT_FALSE(specularIsNegligible(1, 400, 1, Color(0.5)));
   EXPECT_FALSE(specularIsNegligible(0.1, 0, 1, Color(0.5)));
   EXPECT_FALSE(specularIsNegligible(0.1, -2, 1, Color(0.5)));
+}
+
+// The point a shadow ray aims at, drawn as Shader::direct draws it (sample s of n).
+Vec3 aimAt(const LightShape& shape, const Vec3& from, int s, int n, Rng& rng) {
+  if (const auto* p = std::get_if<PointLight>(&shape)) return p->position;
+  if (const auto* sph = std::get_if<SphereLight>(&shape)) {
+    const Vec3 axis = normalize(sph->center - from);
+    const double u1 = stratum(s, n, rng.uniform());
+    return sampleDisc(sph->center, axis, sph->radius, u1, rng.uniform());
+  }
+  const auto& rect = std::get<RectLight>(shape);
+  const double u1 = stratum(s, n, rng.uniform());
+  return rect.corner + u1 * rect.edge1 + rng.uniform() * rect.edge2;
+}
+
+// A light said to be surely behind a surface has no sample that direct() would trace: each has
+// a computed cosine of at most 0 (or no length). Lights are placed across the tangent plane,
+// many of them a hair behind it, at scales from a thousandth to a thousand.
+TEST(ShaderTest, LightsSurelyBehindHaveNoSampleInFront) {
+  Rng rng(41);
+  auto between = [&](double lo, double hi) { return lo + (hi - lo) * rng.uniform(); };
+  auto unit = [&] {
+    return normalize(Vec3(between(-1, 1), between(-1, 1), between(-1, 1)) + Vec3(1e-3));
+  };
+  int behind = 0, nearMiss = 0;
+  for (int config = 0; config < 20000; ++config) {
+    const double scale = std::pow(10.0, between(-3, 3));
+    const Vec3 origin = scale * Vec3(between(-5, 5), between(-5, 5), between(-5, 5));
+    const Vec3 n = unit();
+    const double radius = scale * between(0, 1) * (config % 3 == 0 ? 0 : 1);
+    // The light's centre: `depth` behind the plane (negative: in front), somewhere along it.
+    const double depth =
+        radius + scale * (config % 2 == 0 ? std::pow(10.0, between(-14, 0)) : between(-2, 2));
+    const Vec3 along = cross(n, unit());
+    const Vec3 center = origin - depth * n + scale * between(0, 5) * along;
+    LightShape shape;
+    if (config % 3 == 0) {
+      shape = PointLight{center};
+    } else if (config % 3 == 1) {
+      shape = SphereLight{center, radius};
+    } else {  // a square of half-diagonal `radius` around the centre, in a random plane
+      const Vec3 e1 = unit(), e2 = normalize(cross(e1, unit()));
+      const double half = radius / std::sqrt(2.0);
+      shape = RectLight{center - half * (e1 + e2), 2 * half * e1, 2 * half * e2};
+    }
+    if (!surelyBehind(reachOf(shape), origin, n, dot(n, n))) {
+      if (depth > radius) ++nearMiss;
+      continue;
+    }
+    ++behind;
+    for (int s = 0; s < 16; ++s) {
+      Vec3 toLight = aimAt(shape, origin, s, 16, rng) - origin;
+      const double distance = length(toLight);
+      if (distance <= 0) continue;
+      toLight /= distance;
+      ASSERT_LE(dot(n, toLight), 0.0) << "configuration " << config;
+    }
+  }
+  EXPECT_GT(behind, 5000);    // the common case, a light well behind, is recognised
+  EXPECT_GT(nearMiss, 1000);  // a light a hair behind is left to the samples
+  // In front of the plane, across it, on it: never.
+  const Vec3 up(0, 1, 0);
+  EXPECT_FALSE(surelyBehind(reachOf(PointLight{{0, 1, 0}}), {}, up, 1));
+  EXPECT_FALSE(surelyBehind(reachOf(PointLight{{5, 0, 0}}), {}, up, 1));
+  EXPECT_FALSE(surelyBehind(reachOf(SphereLight{{0, -1, 0}, 1.5}), {}, up, 1));
+  EXPECT_FALSE(surelyBehind(reachOf(RectLight{{-1, -1, 0}, {0, 2, 0}, {1, 0, 0}}), {}, up, 1));
+  EXPECT_TRUE(surelyBehind(reachOf(SphereLight{{0, -2, 0}, 1.5}), {}, up, 1));
+  EXPECT_TRUE(surelyBehind(reachOf(RectLight{{-1, -3, 0}, {0, 2, 0}, {1, 0, 0}}), {}, up, 1));
+}
+
+// direct() passes over a light behind the surface, but takes the random numbers its samples
+// would have drawn: the next light's samples, and everything after, see the same numbers.
+TEST(ShaderTest, SkippedLightDrawsItsSamplesRandomNumbers) {
+  Material m;
+  Scene scene = floorScene(m);
+  scene.lights.push_back({SphereLight{{0, -10, 0}, 1}, Color(1)});                   // behind
+  scene.lights.push_back({RectLight{{-1, 5, -1}, {2, 0, 0}, {0, 0, 2}}, Color(1)});  // above
+  const World world(scene);
+  RenderSettings settings;
+  settings.drtRate = 3;
+  Rng rng(8);
+  uint64_t rays = 0;
+  Shader(world, settings).direct(floorHit(), {0, 1, 0}, {0, 1, 0}, rng, rays);
+  EXPECT_EQ(rays, 3u);  // the rectangle's three samples only
+  Rng expected(8);
+  expected.skip(2 * 3 + 2 * 3);
+  EXPECT_EQ(rng.uniform(), expected.uniform());
 }
 
 }  // namespace
