@@ -31,8 +31,8 @@ LightReach reachOf(const LightShape& shape);
 // Whether every point of `reach` lies so far behind the plane through `origin` with normal `n`
 // that each shadow ray aimed at one would have a computed cosine dot(n, direction) below 0,
 // and be skipped: the margins cover the rounding of sampling the point, of normalising the
-// direction and of the dot product, and a normal up to a millionth away from unit length.
-// `nn` is dot(n, n).
+// direction and of the dot product. `n` is a unit normal up to rounding; `nn` is dot(n, n),
+// which covers one a little longer than unit.
 bool surelyBehind(const LightReach& reach, const Vec3& origin, const Vec3& n, double nn);
 
 class Shader {
