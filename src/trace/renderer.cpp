@@ -25,6 +25,7 @@ Color Renderer::renderPixel(uint64_t pixelIndex, uint64_t& rays) const {
   const int y = static_cast<int>(pixelIndex / static_cast<uint64_t>(width_));
   const int n = settings_.samplesPerPixel;
   const auto candidates = view_.candidates(x, y);
+  const SampleGrid grid(n);
   Color sum;
   for (int s = 0; s < n; ++s) {
     Rng rng = Rng::forSample(pixelIndex, static_cast<uint32_t>(s));
@@ -32,7 +33,7 @@ Color Renderer::renderPixel(uint64_t pixelIndex, uint64_t& rays) const {
     if (n > 1) {
       const double jx = rng.uniform();
       const double jy = rng.uniform();
-      stratifiedSample(s, n, jx, jy, dx, dy);
+      stratifiedSample(s, grid, jx, jy, dx, dy);
     }
     const Ray ray = camera_.generateRay(x + dx, y + dy);
     sum += candidates ? shader_.traceAmong(*candidates, ray, rng.child(1), rays)

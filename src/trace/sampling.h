@@ -48,13 +48,21 @@ inline Vec3 sampleDisc(const Vec3& center, const Vec3& normal, double r, double 
   return center + r * radius * (cosPhi * u + sinPhi * v);
 }
 
-// Sample i of n, stratified over a near-square grid of cells with one jittered point in each
-// of the first n cells: returns the offset inside the pixel, in [0, 1)^2.
-inline void stratifiedSample(int i, int n, double jx, double jy, double& x, double& y) {
-  const int columns = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(n))));
-  const int rows = (n + columns - 1) / columns;
-  x = ((i % columns) + jx) / columns;
-  y = ((i / columns) + jy) / rows;
+// A near-square grid of cells for n samples per pixel: ceil(sqrt(n)) columns and as many rows
+// as the samples need. Computed once per pixel.
+struct SampleGrid {
+  int columns, rows;
+  explicit SampleGrid(int n)
+      : columns(static_cast<int>(std::ceil(std::sqrt(static_cast<double>(n))))),
+        rows((n + columns - 1) / columns) {}
+};
+
+// Sample i, with one jittered point in each of the grid's first cells: returns the offset
+// inside the pixel, in [0, 1)^2.
+inline void stratifiedSample(int i, const SampleGrid& grid, double jx, double jy, double& x,
+                             double& y) {
+  x = ((i % grid.columns) + jx) / grid.columns;
+  y = ((i / grid.columns) + jy) / grid.rows;
 }
 
 }  // namespace prt
