@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "core/portable_math.h"
+#include "trace/light_sampling.h"
 #include "trace/sampling.h"
 
 namespace prt {
@@ -119,19 +120,7 @@ Color Shader::direct(const Hit& hit, const Vec3& n, const Vec3& toEye, double ep
     }
     Color sum;
     for (int s = 0; s < samples; ++s) {
-      Vec3 target;
-      if (const auto* p = std::get_if<PointLight>(&light.shape)) {
-        target = p->position;
-      } else if (const auto* sph = std::get_if<SphereLight>(&light.shape)) {
-        const Vec3 axis = normalize(sph->center - hit.point);
-        const double u1 = stratum(s, samples, rng.uniform());  // stratified over the samples
-        target = sampleDisc(sph->center, axis, sph->radius, u1, rng.uniform());
-      } else {
-        const auto& rect = std::get<RectLight>(light.shape);
-        const double u1 = stratum(s, samples, rng.uniform());
-        target = rect.corner + u1 * rect.edge1 + rng.uniform() * rect.edge2;
-      }
-      Vec3 toLight = target - origin;
+      Vec3 toLight = aimAt(light.shape, hit.point, s, samples, rng) - origin;
       const double distance = length(toLight);
       if (distance <= 0) continue;
       toLight /= distance;

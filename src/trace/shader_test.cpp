@@ -5,7 +5,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "trace/sampling.h"
+#include "trace/light_sampling.h"
 
 namespace prt {
 namespace {
@@ -231,19 +231,6 @@ TEST(ShaderTest, NegligibleSpecularTermChangesNoBit) {
   EXPECT_FALSE(specularIsNegligible(0.1, -2, 1, Color(0.5)));
 }
 
-// The point a shadow ray aims at, drawn as Shader::direct draws it (sample s of n).
-Vec3 aimAt(const LightShape& shape, const Vec3& from, int s, int n, Rng& rng) {
-  if (const auto* p = std::get_if<PointLight>(&shape)) return p->position;
-  if (const auto* sph = std::get_if<SphereLight>(&shape)) {
-    const Vec3 axis = normalize(sph->center - from);
-    const double u1 = stratum(s, n, rng.uniform());
-    return sampleDisc(sph->center, axis, sph->radius, u1, rng.uniform());
-  }
-  const auto& rect = std::get<RectLight>(shape);
-  const double u1 = stratum(s, n, rng.uniform());
-  return rect.corner + u1 * rect.edge1 + rng.uniform() * rect.edge2;
-}
-
 // A light said to be surely behind a surface has no sample that direct() would trace: each has
 // a computed cosine of at most 0 (or no length). Lights are placed across the tangent plane,
 // many of them a hair behind it, at scales from a thousandth to a thousand.
@@ -309,6 +296,7 @@ TEST(ShaderTest, SkippedLightDrawsItsSamplesRandomNumbers) {
   const World world(scene);
   RenderSettings settings;
   settings.drtRate = 3;
+  ASSERT_TRUE(surelyBehind(reachOf(scene.lights[0].shape), floorHit().point, {0, 1, 0}, 1));
   Rng rng(8);
   uint64_t rays = 0;
   Shader(world, settings).direct(floorHit(), {0, 1, 0}, {0, 1, 0}, rng, rays);
