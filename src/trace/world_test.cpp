@@ -4,7 +4,7 @@
 
 #include "core/rng.h"
 #include "trace/bvh.h"
-#include "trace/sampling.h"
+#include "trace/light_sampling.h"
 #include "trace/shapes.h"
 
 namespace prt {
@@ -224,17 +224,7 @@ struct ShadowRay {
   double distance;
 };
 ShadowRay towardsLight(const Light& light, const Vec3& origin, Rng& rng) {
-  Vec3 target;
-  if (const auto* p = std::get_if<PointLight>(&light.shape)) {
-    target = p->position;
-  } else if (const auto* s = std::get_if<SphereLight>(&light.shape)) {
-    target = sampleDisc(s->center, normalize(s->center - origin), s->radius, rng.uniform(),
-                        rng.uniform());
-  } else {
-    const auto& r = std::get<RectLight>(light.shape);
-    target = r.corner + rng.uniform() * r.edge1 + rng.uniform() * r.edge2;
-  }
-  const Vec3 toLight = target - origin;
+  const Vec3 toLight = aimAt(light.shape, origin, 0, 1, rng) - origin;
   const double distance = length(toLight);
   return {Ray{origin, toLight / distance}, distance};
 }
