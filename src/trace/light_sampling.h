@@ -1,7 +1,11 @@
 #pragma once
 // Where a shadow ray towards a light aims: the one place that draws the points, for the shader
-// and for the tests that check what it may skip. Inline: it sits in the shading loop.
+// and for the tests that check what it may skip, with how many random numbers a point takes
+// and the ball every point lies in. Inline: it sits in the shading loop.
 
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
 #include <variant>
 
 #include "core/rng.h"
@@ -25,6 +29,36 @@ inline Vec3 aimAt(const LightShape& shape, const Vec3& from, int s, int samples,
   const auto& rect = std::get<RectLight>(shape);
   const double u1 = stratum(s, samples, rng.uniform());
   return rect.corner + u1 * rect.edge1 + rng.uniform() * rect.edge2;
+}
+
+// How many random numbers aimAt draws for one point of the light.
+inline uint64_t aimDraws(const LightShape& shape) {
+  return std::holds_alternative<PointLight>(shape) ? 0 : 2;
+}
+
+// A ball holding every point aimAt may return for a light: its centre and radius, and the sum
+// of the centre's coordinates' magnitudes (for rounding margins).
+struct LightReach {
+  Vec3 center;
+  double radius = 0;
+  double magnitude = 0;
+};
+
+inline LightReach reachOf(const LightShape& shape) {
+  LightReach r;
+  if (const auto* p = std::get_if<PointLight>(&shape)) {
+    r.center = p->position;
+  } else if (const auto* sph = std::get_if<SphereLight>(&shape)) {
+    r.center = sph->center;
+    r.radius = sph->radius;
+  } else {
+    // The rectangle's centre; its farthest points are corners, half a diagonal away.
+    const auto& rect = std::get<RectLight>(shape);
+    r.center = rect.corner + 0.5 * (rect.edge1 + rect.edge2);
+    r.radius = 0.5 * std::max(length(rect.edge1 + rect.edge2), length(rect.edge1 - rect.edge2));
+  }
+  r.magnitude = std::abs(r.center.x) + std::abs(r.center.y) + std::abs(r.center.z);
+  return r;
 }
 
 }  // namespace prt

@@ -49,23 +49,6 @@ bool refract(const Vec3& d, const Vec3& n, double eta, Vec3& transmitted) {
   return true;
 }
 
-LightReach reachOf(const LightShape& shape) {
-  LightReach r;
-  if (const auto* p = std::get_if<PointLight>(&shape)) {
-    r.center = p->position;
-  } else if (const auto* sph = std::get_if<SphereLight>(&shape)) {
-    r.center = sph->center;
-    r.radius = sph->radius;
-  } else {
-    // The rectangle's centre; its farthest points are corners, half a diagonal away.
-    const auto& rect = std::get<RectLight>(shape);
-    r.center = rect.corner + 0.5 * (rect.edge1 + rect.edge2);
-    r.radius = 0.5 * std::max(length(rect.edge1 + rect.edge2), length(rect.edge1 - rect.edge2));
-  }
-  r.magnitude = std::abs(r.center.x) + std::abs(r.center.y) + std::abs(r.center.z);
-  return r;
-}
-
 bool surelyBehind(const LightReach& reach, const Vec3& origin, const Vec3& n, double nn) {
   // With c the centre, R the radius and d = dot(n, c - origin) as computed: a point t aimed at
   // is within R (1 + 1e-14) of c, plus the rounding of c + offset (below 1e-15 (|c| + R) in
@@ -113,9 +96,9 @@ Color Shader::direct(const Hit& hit, const Vec3& n, const Vec3& toEye, double ep
     const bool point = std::holds_alternative<PointLight>(light.shape);
     const int samples = point ? 1 : settings_.drtRate;
     // A light wholly behind the surface: every sample would be skipped below for its cosine.
-    // Only the random numbers they would draw (two each, for a light with extent) are taken.
+    // Only the random numbers they would draw are taken.
     if (surelyBehind(reaches_[l], origin, n, nn)) {
-      rng.skip(point ? 0 : 2 * static_cast<uint64_t>(samples));
+      rng.skip(aimDraws(light.shape) * static_cast<uint64_t>(samples));
       continue;
     }
     Color sum;

@@ -14,19 +14,11 @@
 #include <vector>
 
 #include "core/rng.h"
+#include "trace/light_sampling.h"
 #include "trace/render_settings.h"
 #include "trace/world.h"
 
 namespace prt {
-
-// A ball holding every point a light's shadow rays may aim at: its centre and radius, and
-// the sum of the centre's coordinates' magnitudes (for rounding margins).
-struct LightReach {
-  Vec3 center;
-  double radius = 0;
-  double magnitude = 0;
-};
-LightReach reachOf(const LightShape& shape);
 
 // Whether every point of `reach` lies so far behind the plane through `origin` with normal `n`
 // that each shadow ray aimed at one would have a computed cosine dot(n, direction) below 0,
