@@ -90,14 +90,19 @@ Color Shader::direct(const Hit& hit, const Vec3& n, const Vec3& toEye, double ep
   Color result = m.ambient * scene.environment.ambient * m.color;
   const Vec3 origin = hit.point + eps * n;
   const double nn = dot(n, n);
+  const World::ShadowOrigin from = world_.shadowOrigin(origin);
 
-  for (size_t l = 0; l < scene.lights.size(); ++l) {
-    const Light& light = scene.lights[l];
+  // Plain pointers: the shadow ray's call would make the vectors' be loaded again each time.
+  const Light* const lights = scene.lights.data();
+  const LightReach* const reaches = reaches_.data();
+  const size_t lightCount = scene.lights.size();
+  for (size_t l = 0; l < lightCount; ++l) {
+    const Light& light = lights[l];
     const bool point = std::holds_alternative<PointLight>(light.shape);
     const int samples = point ? 1 : settings_.drtRate;
     // A light wholly behind the surface: every sample would be skipped below for its cosine.
     // Only the random numbers they would draw are taken.
-    if (surelyBehind(reaches_[l], origin, n, nn)) {
+    if (surelyBehind(reaches[l], origin, n, nn)) {
       rng.skip(aimDraws(light.shape) * static_cast<uint64_t>(samples));
       continue;
     }
@@ -110,7 +115,7 @@ Color Shader::direct(const Hit& hit, const Vec3& n, const Vec3& toEye, double ep
       const double cosine = dot(n, toLight);
       if (cosine <= 0) continue;
       ++rays;
-      const double visible = world_.transmittanceToLight(l, Ray{origin, toLight}, distance);
+      const double visible = world_.transmittanceToLight(from, l, Ray{origin, toLight}, distance);
       if (visible <= 0) continue;
       const Color diffuse = (m.diffuse * cosine) * m.color;
       // +0^n is +0 for n > 0 (scene files require n >= 1): the power is skipped then, and when

@@ -53,21 +53,31 @@ class ShadowShafts {
   ShadowShafts(const std::vector<Bounds>& items, const std::vector<Bounds>& lights,
                uint32_t longest = 12);
 
-  // The items a segment from `origin` to a point of light `light`'s box can cross, or
-  // nothing when the caller must ask the BVH (origin outside the grid, long list, no grid).
-  std::optional<std::span<const uint32_t>> candidates(size_t light, const Vec3& origin) const {
-    if (lists_.empty()) return std::nullopt;
+  // The grid cell holding `origin`, or kNoCell outside the grid (or with no grid). A point's
+  // cell serves every light's query from it: the shader finds it once per shading point.
+  static constexpr size_t kNoCell = ~size_t{0};
+  size_t cellOf(const Vec3& origin) const {
+    if (lists_.empty()) return kNoCell;
     const Vec3 r = (origin - lo_) * scale_;
     // NaN fails these tests too.
     if (!(r.x >= 0 && r.x < dims_[0] && r.y >= 0 && r.y < dims_[1] && r.z >= 0 && r.z < dims_[2])) {
-      return std::nullopt;
+      return kNoCell;
     }
-    const List list =
-        lists_[cellIndex(static_cast<int>(r.x), static_cast<int>(r.y), static_cast<int>(r.z)) *
-                   lights_ +
-               light];
+    return cellIndex(static_cast<int>(r.x), static_cast<int>(r.y), static_cast<int>(r.z));
+  }
+
+  // The items a segment from a point of cell `cell` (cellOf) to a point of light `light`'s box
+  // can cross, or nothing when the caller must ask the BVH (no cell, long list).
+  std::optional<std::span<const uint32_t>> candidatesIn(size_t cell, size_t light) const {
+    if (cell == kNoCell) return std::nullopt;
+    const List list = lists_[cell * lights_ + light];
     if (list.count == kLong) return std::nullopt;
     return std::span<const uint32_t>(items_.data() + list.begin, list.count);
+  }
+
+  // The same for a segment from `origin`.
+  std::optional<std::span<const uint32_t>> candidates(size_t light, const Vec3& origin) const {
+    return candidatesIn(cellOf(origin), light);
   }
 
   size_t cellCount() const { return static_cast<size_t>(dims_[0]) * dims_[1] * dims_[2]; }

@@ -236,11 +236,15 @@ double World::transmittance(const Ray& ray, double tMin, double distance,
       if (passed == 0) return 0;
     }
   }
-  const uint32_t* ranks = ranks_.data() + octantOf(ray.direction) * items_.size();
+  // Plain pointers, loaded once (the visits below would load the vectors' again each time);
+  // the ranks are needed only for an object that lets light through.
+  const Item* const items = items_.data();
+  const uint32_t* const ranks = ranks_.data();
+  const size_t itemCount = items_.size();
   Attenuators attenuators;
   bool opaque = false;
   candidates([&](uint32_t index) {
-    const Item& item = items_[index];
+    const Item& item = items[index];
     int crossings = 0;
     if (item.sphere) {
       const SphereRoots r = sphereRoots(item.a, item.b.x, ray);
@@ -256,7 +260,8 @@ double World::transmittance(const Ray& ray, double tMin, double distance,
       opaque = true;
       return -1.0;
     }
-    attenuators.add(ranks[index], crossings, item.transmissivity);
+    attenuators.add(ranks[octantOf(ray.direction) * itemCount + index], crossings,
+                    item.transmissivity);
     return distance;
   });
   return opaque ? 0.0 : attenuators.apply(passed);
@@ -268,7 +273,12 @@ double World::transmittance(const Ray& ray, double tMin, double distance) const 
 }
 
 double World::transmittanceToLight(size_t light, const Ray& ray, double distance) const {
-  const auto listed = shafts_.candidates(light, ray.origin);
+  return transmittanceToLight(shadowOrigin(ray.origin), light, ray, distance);
+}
+
+double World::transmittanceToLight(const ShadowOrigin& from, size_t light, const Ray& ray,
+                                   double distance) const {
+  const auto listed = shafts_.candidatesIn(from.cell, light);
   if (!listed) {
     // A ray that misses the box around all the bounded objects fails each object's own box
     // test too (the same arithmetic on wider bounds): only the planes can be in its way. Four

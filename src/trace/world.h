@@ -59,6 +59,14 @@ class World {
   // `distance`: answered from the light's shadow shafts where they know the few objects that
   // can be in the way, bit for bit as from the BVH.
   double transmittanceToLight(size_t light, const Ray& ray, double distance) const;
+  // Where shadow rays leave from, found once for all the lights' rays from one point.
+  struct ShadowOrigin {
+    size_t cell;  // in the shadow shafts' grid
+  };
+  ShadowOrigin shadowOrigin(const Vec3& origin) const { return {shafts_.cellOf(origin)}; }
+  // transmittanceToLight for a ray leaving from `from` (shadowOrigin(ray.origin)).
+  double transmittanceToLight(const ShadowOrigin& from, size_t light, const Ray& ray,
+                              double distance) const;
 
  private:
   // A bounded object as the BVH's item, flattened for the hot loops.
