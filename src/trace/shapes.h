@@ -4,12 +4,13 @@
 // the outward normal at it: the nearest answers camera and bounce rays, all of them let shadow
 // rays be attenuated by each transmissive surface they cross.
 //
-// The arithmetic lives in the inline kernels below (sphereRoots, boxSlabs), shared by
+// The arithmetic lives in the inline kernels below (sphereRoots, boxSlabs, boxSpan), shared by
 // `intersect` and by World's hot paths, which need only the distances: both paths then compute
 // every crossing bit for bit alike, and the normal only for the hit that is kept.
 
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include "core/ray.h"
 #include "trace/bounds.h"
@@ -107,6 +108,50 @@ inline BoxSlabs boxSlabs(const Vec3& lo, const Vec3& hi, const Ray& ray) {
     if (s.tNear > s.tFar) return s;
   }
   s.hit = true;
+  return s;
+}
+
+// The same entry and exit without the faces, for the loops that need only the distances (the
+// nearest hit's face is found again by boxSlabs). Bit for bit as boxSlabs: the same `hit`, and
+// where hit the same tNear and tFar, the same operations in the same order. A face boxSlabs
+// leaves unset (axis -1) is exactly an infinite tNear or tFar here, its initial value (a face
+// is set only by a finite distance beyond it), so the tests below are boxSlabs's.
+struct BoxSpan {
+  bool hit = false;
+  double tNear = -std::numeric_limits<double>::infinity();
+  double tFar = std::numeric_limits<double>::infinity();
+
+  bool nearCrosses(double tMin, double tMax) const { return tNear > tMin && tNear < tMax; }
+  bool farCrosses(double tMin, double tMax) const {
+    return tFar > tMin && tFar < tMax && tFar > tNear;
+  }
+  double firstAfter(double tMin) const {
+    if (!hit) return std::numeric_limits<double>::quiet_NaN();
+    if (tNear > tMin) return tNear;
+    if (tFar < std::numeric_limits<double>::infinity() && tFar > tMin && tFar > tNear) return tFar;
+    return std::numeric_limits<double>::quiet_NaN();
+  }
+};
+
+inline BoxSpan boxSpan(const Vec3& lo, const Vec3& hi, const Ray& ray) {
+  BoxSpan s;
+  for (int axis = 0; axis < 3; ++axis) {
+    const double o = ray.origin[axis];
+    const double d = ray.direction[axis];
+    if (d == 0.0) {
+      if (o < lo[axis] || o > hi[axis]) return s;  // parallel to and outside the slab
+      continue;
+    }
+    const double inv = 1.0 / d;
+    double t0 = (lo[axis] - o) * inv;
+    double t1 = (hi[axis] - o) * inv;
+    if (t0 > t1) std::swap(t0, t1);
+    if (t0 > s.tNear) s.tNear = t0;
+    if (t1 < s.tFar) s.tFar = t1;
+  }
+  // tNear only grows and tFar only shrinks: crossed once, they stay crossed (boxSlabs stops
+  // there, with hit false).
+  s.hit = !(s.tNear > s.tFar);
   return s;
 }
 

@@ -2,7 +2,12 @@
 
 #include <gtest/gtest.h>
 
+#include <bit>
+#include <cmath>
+#include <cstdint>
 #include <limits>
+
+#include "core/rng.h"
 
 namespace prt {
 namespace {
@@ -67,6 +72,48 @@ TEST(ShapesTest, BoxParallelOutsideSlabMisses) {
   const BoxShape b{{-1, -1, 2}, {1, 1, 4}};
   EXPECT_EQ(intersect(b, Ray{{0, 2, 0}, {0, 0, 1}}, 0, kInf).count, 0);
   EXPECT_EQ(intersect(b, Ray{{0, 0, 0}, {0, 0, -1}}, 0, kInf).count, 0);  // behind
+}
+
+// boxSpan, the hot loops' box test, must answer as boxSlabs does: the same hit, entry and exit,
+// and the same crossings and first crossing for any interval. Rays from random points (many on
+// a face or an edge, so distances of exactly 0 and equal entries occur) in random directions,
+// many with components of exactly zero, subnormal or huge, some exactly along a face.
+TEST(ShapesTest, BoxSpanAnswersAsBoxSlabs) {
+  Rng rng(42);
+  const Vec3 lo(-1, -0.5, 2), hi(1, 0.25, 3);
+  const double special[] = {0.0, -0.0, 4.9e-324, -1e-310, 1e300, -1e-20, 1.0, -1.0};
+  auto coordinate = [&](double a, double b) {
+    const double u = rng.uniform();
+    if (u < 0.2) return a;  // on a face's plane
+    if (u < 0.4) return b;
+    return a - 2 + (b - a + 4) * rng.uniform();
+  };
+  auto component = [&]() {
+    const double u = rng.uniform();
+    if (u < 0.3) return special[static_cast<int>(rng.uniform() * 8)];
+    return 2 * rng.uniform() - 1;
+  };
+  const double intervals[][2] = {{0, kInf}, {0, 2.5}, {-kInf, kInf}, {1e-9, 1}, {2, 2}};
+  int hits = 0;
+  for (int i = 0; i < 200000; ++i) {
+    const Ray ray{{coordinate(lo.x, hi.x), coordinate(lo.y, hi.y), coordinate(lo.z, hi.z)},
+                  {component(), component(), component()}};
+    const BoxSlabs slabs = boxSlabs(lo, hi, ray);
+    const BoxSpan span = boxSpan(lo, hi, ray);
+    ASSERT_EQ(span.hit, slabs.hit) << i;
+    if (!slabs.hit) continue;
+    ++hits;
+    ASSERT_EQ(std::bit_cast<uint64_t>(span.tNear), std::bit_cast<uint64_t>(slabs.tNear)) << i;
+    ASSERT_EQ(std::bit_cast<uint64_t>(span.tFar), std::bit_cast<uint64_t>(slabs.tFar)) << i;
+    for (const auto& interval : intervals) {
+      const double tMin = interval[0], tMax = interval[1];
+      ASSERT_EQ(span.nearCrosses(tMin, tMax), slabs.nearCrosses(tMin, tMax)) << i;
+      ASSERT_EQ(span.farCrosses(tMin, tMax), slabs.farCrosses(tMin, tMax)) << i;
+      const double a = span.firstAfter(tMin), b = slabs.firstAfter(tMin);
+      ASSERT_TRUE(a == b || (std::isnan(a) && std::isnan(b))) << i;
+    }
+  }
+  EXPECT_GT(hits, 20000);  // the comparison above ran on many hits, not only on misses
 }
 
 TEST(ShapesTest, PlaneIsOneSided) {

@@ -190,7 +190,7 @@ bool World::intersect(const Ray& ray, double tMin, double tMax, Hit& hit,
   candidates(nearest, [&](uint32_t index) {
     const Item& item = items_[index];
     const double t = item.sphere ? sphereRoots(item.a, item.b.x, ray).firstAfter(tMin)
-                                 : boxSlabs(item.a, item.b, ray).firstAfter(tMin);
+                                 : boxSpan(item.a, item.b, ray).firstAfter(tMin);
     // Farther, or as far but later in the order (NaN, no crossing, fails both tests).
     if (!(t < nearest || (t == nearest && ranks[index] < bestRank))) return nearest;
     // The paper's per-object box test, which the object had to pass before.
@@ -251,7 +251,7 @@ double World::transmittance(const Ray& ray, double tMin, double distance,
       if (!r.hit) return distance;
       crossings = (r.t0 > tMin && r.t0 < distance) + (r.t1 > tMin && r.t1 < distance);
     } else {
-      const BoxSlabs s = boxSlabs(item.a, item.b, ray);
+      const BoxSpan s = boxSpan(item.a, item.b, ray);
       if (!s.hit) return distance;
       crossings = s.nearCrosses(tMin, distance) + s.farCrosses(tMin, distance);
     }
