@@ -87,7 +87,8 @@ class World {
   template <typename Candidates>
   bool intersect(const Ray& ray, double tMin, double tMax, Hit& hit, Candidates&& candidates) const;
   template <typename Candidates>
-  double transmittance(const Ray& ray, double tMin, double distance, Candidates&& candidates) const;
+  [[gnu::always_inline]] inline double transmittance(const Ray& ray, double tMin, double distance,
+                                                     Candidates&& candidates) const;
 
   Scene scene_;
   QuadBvh bvh_;
