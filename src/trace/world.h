@@ -85,7 +85,8 @@ class World {
 
   void buildNeighbours(const std::vector<Bounds>& boxes);
   template <typename Candidates>
-  bool intersect(const Ray& ray, double tMin, double tMax, Hit& hit, Candidates&& candidates) const;
+  [[gnu::always_inline]] inline bool intersect(const Ray& ray, double tMin, double tMax, Hit& hit,
+                                              Candidates&& candidates) const;
   template <typename Candidates>
   [[gnu::always_inline]] inline double transmittance(const Ray& ray, double tMin, double distance,
                                                      Candidates&& candidates) const;
