@@ -9,7 +9,7 @@
 #
 # Prints the total and the functions with the most instructions of their own. The render
 # runs on one thread with the baseline build of the trace kernels (valgrind 3.19 does not
-# decode every AVX2 instruction of the x86-64-v3 build): the counts are that build's.
+# decode every AVX instruction of the x86-64-v3 build): the counts are that build's.
 # Needs valgrind (apt-get install valgrind). About 20 s at the default size.
 set -eu
 
@@ -24,7 +24,9 @@ top=${TOP:-12}
 command -v valgrind >/dev/null 2>&1 || { echo "error: valgrind is not installed" >&2; exit 1; }
 
 work=$(mktemp -d "${TMPDIR:-/tmp}/prt-instructions-XXXXXX")
-trap 'rm -rf "$work"' EXIT INT TERM
+trap 'rm -rf "$work"' EXIT
+trap 'exit 130' INT
+trap 'exit 143' TERM
 
 GLIBC_TUNABLES=glibc.cpu.hwcaps=-AVX2 valgrind --tool=callgrind \
   --callgrind-out-file="$work/callgrind.out" "$prt" render "$scene" --threads 1 "$@" \
@@ -32,9 +34,16 @@ GLIBC_TUNABLES=glibc.cpu.hwcaps=-AVX2 valgrind --tool=callgrind \
   cat "$work/valgrind.txt" >&2
   exit 1
 }
+callgrind_annotate --show-percs=yes "$work/callgrind.out" >"$work/annotated.txt" 2>&1 || {
+  cat "$work/annotated.txt" >&2
+  exit 1
+}
+grep -q 'PROGRAM TOTALS' "$work/annotated.txt" || {
+  echo "error: callgrind_annotate printed no totals (a format this script does not know)" >&2
+  exit 1
+}
 echo "$(basename "$scene") $*, one thread, baseline kernels"
-callgrind_annotate --show-percs=yes "$work/callgrind.out" 2>/dev/null |
-  awk -v top="$top" '
+awk -v top="$top" '
     /PROGRAM TOTALS/ { printf "instructions: %s\n", $1; next }
     /^-+$/ { rule++; next }
     rule >= 5 && /^ *[0-9,]+ *\(/ && shown < top {
@@ -49,4 +58,4 @@ callgrind_annotate --show-percs=yes "$work/callgrind.out" 2>/dev/null |
       if (length(rest) > 100) rest = substr(rest, 1, 97) "..."
       printf "  %14s %9s  %s\n", count, share, rest
       shown++
-    }'
+    }' "$work/annotated.txt"

@@ -70,8 +70,9 @@ ShadowShafts::ShadowShafts(const std::vector<Bounds>& items, const std::vector<B
   for (const Bounds& l : lights) grid.extend(l);
   grid = grid.widened(margin_);
 
-  // About kCells cells, as near cubes as the grid's shape allows; an axis shorter than a cell
-  // (a flat scene) gets one, and the others share the cells.
+  // About cellsFor(lights) cells, as near cubes as the grid's shape allows; an axis shorter
+  // than a cell (a flat scene) gets one, and the others share the cells.
+  const double cells = cellsFor(lights.size());
   const Vec3 size = grid.diagonal();
   bool active[3] = {true, true, true};
   double edge = 0;
@@ -82,7 +83,7 @@ ShadowShafts::ShadowShafts(const std::vector<Bounds>& items, const std::vector<B
       if (active[a]) product *= size[a], ++count;
     }
     if (count == 0) break;
-    edge = std::pow(product / kCells, 1.0 / count);
+    edge = std::pow(product / cells, 1.0 / count);
     bool changed = false;
     for (int a = 0; a < 3; ++a) {
       if (active[a] && size[a] < edge) active[a] = false, changed = true;
@@ -90,7 +91,7 @@ ShadowShafts::ShadowShafts(const std::vector<Bounds>& items, const std::vector<B
     if (!changed) break;
   }
   for (int a = 0; a < 3; ++a) {
-    dims_[a] = active[a] ? static_cast<int>(std::clamp(std::ceil(size[a] / edge), 1.0, kCells)) : 1;
+    dims_[a] = active[a] ? static_cast<int>(std::clamp(std::ceil(size[a] / edge), 1.0, cells)) : 1;
   }
   lo_ = grid.lo;
   cell_ = Vec3(size.x / dims_[0], size.y / dims_[1], size.z / dims_[2]);

@@ -15,6 +15,7 @@
 // (the far parts of an infinite plane).
 // Built once, then read-only: safe to query from many threads.
 
+#include <algorithm>
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -48,7 +49,7 @@ class ShadowShafts {
   // `items[i]` is the box of item i, `lights[l]` the box holding every point light l's
   // shadow rays aim at. Lists longer than `longest` are left to the BVH (up to a dozen
   // objects, a list is scanned faster than the BVH is traversed). The grid spans the
-  // items' and the lights' boxes in about kCells cells.
+  // items' and the lights' boxes in about cellsFor(lights.size()) cells.
   ShadowShafts(const std::vector<Bounds>& items, const std::vector<Bounds>& lights,
                uint32_t longest = 12);
 
@@ -81,17 +82,25 @@ class ShadowShafts {
 
   size_t cellCount() const { return static_cast<size_t>(dims_[0]) * dims_[1] * dims_[2]; }
 
-  // About this many cells. Small cells make narrow shafts near the shading point, where the
-  // objects that shadow it crowd: in the benchmark scene 32768 cells (against 4096) take 2 %
-  // off the instructions of a render, a shadow ray costing 17 ns instead of 26, for a build of
-  // 2.6 ms instead of 0.5 (bench/trace_bench.cpp); more cells gain nothing there.
-  static constexpr double kCells = 32768;
+  // About how many cells the grid has. Small cells make narrow shafts near the shading point,
+  // where the objects that shadow it crowd: in the benchmark scene 32768 cells (against 4096)
+  // take 2 % off the instructions of a render, a shadow ray costing 17 ns instead of 26, for a
+  // build of 2.6 ms instead of 0.5 (bench/trace_bench.cpp); more cells gain nothing there.
+  // Every cell holds a list per light: past four lights the grid has fewer cells, so that the
+  // lists stay within about kListEntries (1 MB) up to 32 lights; more lights keep
+  // kFewestCells, the grid's size before it was refined (3.5 MB of lists for 100 lights).
+  static constexpr double kCells = 32768, kFewestCells = 4096, kListEntries = 131072;
+  static double cellsFor(size_t lights) {
+    return std::clamp(kListEntries / static_cast<double>(std::max<size_t>(lights, 1)),
+                      kFewestCells, kCells);
+  }
 
  private:
   // A region whose shaft meets more objects than this is too crowded to be worth splitting:
   // its cells go to the BVH. The whole grid's shaft meets about every object, so scenes of more
   // objects keep the BVH alone, and the build stays cheap however many a scene has (about 20 ms
-  // for 250 objects and three lights, which a render of them repays many times over).
+  // for 250 objects and three lights, which a render of them repays many times over). It
+  // grows with the lights, each having its lists: 80 ms for 250 objects and 100 lights.
   static constexpr size_t kCrowded = 256;
 
   struct Region {

@@ -202,5 +202,23 @@ TEST(ShadowShaftsTest, FlatScenesGetAFlatGrid) {
   EXPECT_TRUE(shafts.candidates(0, {2.2, 0, 1}));
 }
 
+TEST(ShadowShaftsTest, ManyLightsGetFewerCells) {
+  // Every cell keeps a list per light: with 64 lights the grid is coarser, its lists as many
+  // as with four lights (or fewer), and still answers for each light.
+  std::vector<Bounds> items;
+  for (int i = 0; i < 10; ++i) items.push_back(box({1.0 * i, 0, 0}, {1.0 * i + 0.5, 1, 3}));
+  std::vector<Bounds> four, many;
+  for (int l = 0; l < 64; ++l) {
+    const Bounds light = box({0.15 * l, 8, -2}, {0.15 * l + 0.1, 8.1, -1.9});
+    many.push_back(light);
+    if (l < 4) four.push_back(light);
+  }
+  const ShadowShafts fine(items, four), coarse(items, many);
+  EXPECT_GT(fine.cellCount(), ShadowShafts::kCells / 2);
+  EXPECT_LE(coarse.cellCount() * many.size(), 2 * fine.cellCount() * four.size());
+  EXPECT_GT(coarse.cellCount(), ShadowShafts::kFewestCells / 2);
+  for (size_t l = 0; l < many.size(); l += 21) EXPECT_TRUE(coarse.candidates(l, {2.2, 0.5, 1}));
+}
+
 }  // namespace
 }  // namespace prt

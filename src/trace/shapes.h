@@ -114,8 +114,9 @@ inline BoxSlabs boxSlabs(const Vec3& lo, const Vec3& hi, const Ray& ray) {
 // The same entry and exit without the faces, for the loops that need only the distances (the
 // nearest hit's face is found again by boxSlabs). Bit for bit as boxSlabs: the same `hit`, and
 // where hit the same tNear and tFar, the same operations in the same order. A face boxSlabs
-// leaves unset (axis -1) is exactly an infinite tNear or tFar here, its initial value (a face
-// is set only by a finite distance beyond it), so the tests below are boxSlabs's.
+// leaves unset (axis -1) is exactly a tNear of -infinity or a tFar of +infinity here, their
+// initial values (a face is set only by a distance beyond them: tNear may become +infinity,
+// never -infinity), so the tests below are boxSlabs's.
 struct BoxSpan {
   bool hit = false;
   double tNear = -std::numeric_limits<double>::infinity();
