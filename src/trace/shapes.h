@@ -85,35 +85,57 @@ struct BoxSlabs {
   }
 };
 
-inline BoxSlabs boxSlabs(const Vec3& lo, const Vec3& hi, const Ray& ray) {
-  BoxSlabs s;
+namespace detail {
+// The slab arithmetic of boxSlabs and boxSpan, written once: per axis, the distances to the
+// slab's two planes, the entry raised and the exit lowered. `entered(axis, sign)` and
+// `left(axis, sign)` hear of each change (sign: of the face's outward normal). Whether the line
+// meets the box: tNear only grows and tFar only shrinks, so once crossed they stay crossed.
+template <typename Entered, typename Left>
+inline bool crossSlabs(const Vec3& lo, const Vec3& hi, const Ray& ray, double& tNear,
+                       double& tFar, Entered&& entered, Left&& left) {
   for (int axis = 0; axis < 3; ++axis) {
     const double o = ray.origin[axis];
     const double d = ray.direction[axis];
     if (d == 0.0) {
-      if (o < lo[axis] || o > hi[axis]) return s;  // parallel to and outside the slab
+      if (o < lo[axis] || o > hi[axis]) return false;  // parallel to and outside the slab
       continue;
     }
     const double inv = 1.0 / d;
     double t0 = (lo[axis] - o) * inv;
     double t1 = (hi[axis] - o) * inv;
     // Entering through the min face when travelling +, through the max face when travelling -.
-    double s0 = -1, s1 = 1;
-    if (t0 > t1) {
-      std::swap(t0, t1);
-      std::swap(s0, s1);
+    const bool backwards = t0 > t1;
+    if (backwards) std::swap(t0, t1);
+    if (t0 > tNear) {
+      tNear = t0;
+      entered(axis, backwards ? 1.0 : -1.0);
     }
-    if (t0 > s.tNear) { s.tNear = t0; s.nearAxis = axis; s.nearSign = s0; }
-    if (t1 < s.tFar) { s.tFar = t1; s.farAxis = axis; s.farSign = s1; }
-    if (s.tNear > s.tFar) return s;
+    if (t1 < tFar) {
+      tFar = t1;
+      left(axis, backwards ? -1.0 : 1.0);
+    }
   }
-  s.hit = true;
+  return !(tNear > tFar);
+}
+}  // namespace detail
+
+inline BoxSlabs boxSlabs(const Vec3& lo, const Vec3& hi, const Ray& ray) {
+  BoxSlabs s;
+  auto entered = [&](int axis, double sign) {
+    s.nearAxis = axis;
+    s.nearSign = sign;
+  };
+  auto left = [&](int axis, double sign) {
+    s.farAxis = axis;
+    s.farSign = sign;
+  };
+  s.hit = detail::crossSlabs(lo, hi, ray, s.tNear, s.tFar, entered, left);
   return s;
 }
 
 // The same entry and exit without the faces, for the loops that need only the distances (the
 // nearest hit's face is found again by boxSlabs). Bit for bit as boxSlabs: the same `hit`, and
-// where hit the same tNear and tFar, the same operations in the same order. A face boxSlabs
+// where hit the same tNear and tFar, computed by the same crossSlabs. A face boxSlabs
 // leaves unset (axis -1) is exactly a tNear of -infinity or a tFar of +infinity here, their
 // initial values (a face is set only by a distance beyond them: tNear may become +infinity,
 // never -infinity), so the tests below are boxSlabs's.
@@ -136,23 +158,8 @@ struct BoxSpan {
 
 inline BoxSpan boxSpan(const Vec3& lo, const Vec3& hi, const Ray& ray) {
   BoxSpan s;
-  for (int axis = 0; axis < 3; ++axis) {
-    const double o = ray.origin[axis];
-    const double d = ray.direction[axis];
-    if (d == 0.0) {
-      if (o < lo[axis] || o > hi[axis]) return s;  // parallel to and outside the slab
-      continue;
-    }
-    const double inv = 1.0 / d;
-    double t0 = (lo[axis] - o) * inv;
-    double t1 = (hi[axis] - o) * inv;
-    if (t0 > t1) std::swap(t0, t1);
-    if (t0 > s.tNear) s.tNear = t0;
-    if (t1 < s.tFar) s.tFar = t1;
-  }
-  // tNear only grows and tFar only shrinks: crossed once, they stay crossed (boxSlabs stops
-  // there, with hit false).
-  s.hit = !(s.tNear > s.tFar);
+  s.hit = detail::crossSlabs(lo, hi, ray, s.tNear, s.tFar, [](int, double) {},
+                             [](int, double) {});
   return s;
 }
 
