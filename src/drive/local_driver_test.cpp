@@ -34,16 +34,21 @@ LocalRunRequest request(const std::string& strategy, int workers) {
   r.options.workers = workers;
   r.options.strategy = strategy;
   r.options.batchPixels = 16;
-  r.options.speedIndexDiscs = 10;
+  // Long enough (about half a millisecond) that a worker preempted during it does not measure
+  // a hundred times slower than the others, which would leave it no initial block of the
+  // reservoir and so no work for a fault to strike.
+  r.options.speedIndexDiscs = 18;
   r.options.strategyOptions.chunk = 9;
   return r;
 }
 
+Image serialImage(const RenderSettings& settings) {
+  const World world(smallScene());
+  return renderImage(Renderer(world, settings), 1);
+}
+
 const Image& serialReference() {
-  static const Image image = [] {
-    const World world(smallScene());
-    return renderImage(Renderer(world, RenderSettings{2, 2}), 1);
-  }();
+  static const Image image = serialImage(RenderSettings{2, 2});
   return image;
 }
 
@@ -73,7 +78,10 @@ TEST_P(LocalDriverTest, CrashedWorkerIsReplacedAndImageUnchanged) {
 INSTANTIATE_TEST_SUITE_P(AllStrategies, LocalDriverTest, ::testing::ValuesIn(strategyNames()));
 
 TEST(LocalDriverFaultTest, HungWorkerIsDetectedByTimeout) {
-  LocalRunRequest r = request("reservoir", 3);
+  // Scatter gives every worker its share up front. Under the reservoir a worker preempted
+  // during its speed index (microseconds here) measures a thousand times slower, gets no
+  // initial block, and the others finish the image before it ever has work to hang on.
+  LocalRunRequest r = request("scatter", 3);
   r.options.workerTimeoutSeconds = 2.0;  // generous: CI may run other tests alongside
   r.options.faults.push_back({2, 0, FaultInjection::Kind::Hang});
   const ParallelRun run = renderLocal(r);
@@ -127,10 +135,13 @@ namespace {
 
 TEST(LocalDriverSpeedIndexTest, ProbeSpeedIndexRanksSlowWorkersAndKeepsTheImage) {
   LocalRunRequest r = request("reservoir", 2);
+  // Six samples a pixel: a probe of a few milliseconds, which a cold cache or a clock's
+  // granularity cannot reorder.
+  r.settings = RenderSettings{6, 2};
   r.options.speedIndexKind = SpeedIndexKind::RenderProbe;
   r.options.slowdowns = {2, 8};
   const ParallelRun run = renderLocal(r);
-  EXPECT_TRUE(run.image == serialReference());
+  EXPECT_TRUE(run.image == serialImage(r.settings));
   EXPECT_GT(run.report.workers[1].speedIndexSeconds, run.report.workers[0].speedIndexSeconds);
 }
 
