@@ -4,6 +4,7 @@
 #include <cstdlib>
 #include <tuple>
 
+#include "cli/checkpointing.h"
 #include "core/input_error.h"
 #include "drive/local_driver.h"
 #include "drive/speed_probe.h"
@@ -82,7 +83,14 @@ void addParallelOptions(CLI::App& cmd, RenderOptions& o) {
       ->capture_default_str()
       ->group(parallel);
   cmd.add_option("--worker-timeout", o.workerTimeoutSeconds,
-                 "Seconds of silence after which a worker that owes an answer is declared lost")
+                 "Seconds of silence (no message, not even a heartbeat) after which a worker is "
+                 "declared lost and its tasks go to the others")
+      ->capture_default_str()
+      ->group(parallel);
+  cmd.add_option("--endgame", o.endgame,
+                 "on: when nothing is left to hand out, an idle worker renders a copy of the "
+                 "tasks expected to finish last (the first result wins)")
+      ->check(CLI::IsMember({"on", "off"}))
       ->capture_default_str()
       ->group(parallel);
   cmd.add_option("--serial-seconds", o.serialSeconds,
@@ -92,6 +100,20 @@ void addParallelOptions(CLI::App& cmd, RenderOptions& o) {
   cmd.add_flag("--measure-serial", o.measureSerial,
                "Render serially on one thread first to measure the serial time")
       ->group(parallel);
+  const std::string checkpoints = "Checkpoints";
+  cmd.add_option("--checkpoint", o.checkpointPath,
+                 "Keep the finished pixels in FILE (written atomically every --checkpoint-every "
+                 "seconds, when a worker is lost and when the run stops), so that a killed render "
+                 "resumes with --resume; removed once the image is written")
+      ->group(checkpoints);
+  cmd.add_option("--checkpoint-every", o.checkpointEverySeconds,
+                 "Seconds between checkpoints")
+      ->capture_default_str()
+      ->group(checkpoints);
+  cmd.add_flag("--resume", o.resume,
+               "Start from the --checkpoint FILE: render only the pixels it lacks (the image "
+               "is the same as an uninterrupted render's)")
+      ->group(checkpoints);
   cmd.add_option("--report", o.reportPath, "Write the load-balancing report as JSON")
       ->group(parallel);
   cmd.add_option("--trace", o.tracePath,
@@ -123,6 +145,9 @@ ParallelOptions toParallelOptions(const RenderOptions& o, int workers) {
   p.speedIndexKind = parseSpeedIndexKind(o.speedIndex);
   p.batchPixels = o.batchPixels;
   p.workerTimeoutSeconds = o.workerTimeoutSeconds;
+  p.endgame = o.endgame == "on";
+  p.checkpointPath = o.checkpointPath;
+  p.checkpointEverySeconds = o.checkpointEverySeconds;
   p.faults = parseFaults(o.faults);
   return p;
 }
@@ -136,6 +161,8 @@ int finishParallelRun(const RenderOptions& o, const Scene& scene, const Parallel
                                         run.report.elapsedSeconds));
   }
   if (!o.ownershipPath.empty()) writeImage(ownershipImage(run.image, run.owner), o.ownershipPath);
+  // The image holds every pixel now: the checkpoint has nothing more to give.
+  if (!o.checkpointPath.empty()) removeCheckpoint(o.checkpointPath);
   if (!o.quiet) {
     std::printf("%s: %dx%d, %d spp, DRT %d\n%s", scene.image.output.c_str(), scene.image.width,
                 scene.image.height, run.report.info.samplesPerPixel, run.report.info.drtRate,
@@ -144,17 +171,30 @@ int finishParallelRun(const RenderOptions& o, const Scene& scene, const Parallel
   return 0;
 }
 
-int renderParallelLocal(const RenderOptions& o, const Scene& scene, const RenderSettings& s) {
-  LocalRunRequest request;
+RunRequest makeRunRequest(const RenderOptions& o, const Scene& scene, const RenderSettings& s,
+                          int workers) {
+  RunRequest request;
   request.scene = scene;
   request.settings = s;
-  request.options = toParallelOptions(o, o.workers.value_or(4));
+  request.options = toParallelOptions(o, workers);
   validateParallelOptions(request.options,
                           static_cast<uint64_t>(scene.image.width) * scene.image.height);
+  request.resumeFrom = resumeCheckpoint(o, scene, s);
+  request.interrupted = stopSignalsFor(o);
+  return request;
+}
+
+int renderParallelLocal(const RenderOptions& o, const Scene& scene, const RenderSettings& s) {
+  RunRequest request = makeRunRequest(o, scene, s, o.workers.value_or(4));
   request.serialSeconds = serialSeconds(o, scene, s);
   request.masterSpeedIndexSeconds =
       serialSpeedIndexSeconds(request.options.speedIndexKind, scene, s);
-  return finishParallelRun(o, scene, renderLocal(request));
+  try {
+    return finishParallelRun(o, scene, renderLocal(request));
+  } catch (const RunFailed& e) {
+    std::fprintf(stderr, "prt: error: %s\n", e.what());
+    return e.signal() > 0 ? 128 + e.signal() : 1;
+  }
 }
 
 // --- MPI hook (the driver is in src/mpi; this is only the command-line glue) ---------------
@@ -170,7 +210,7 @@ int renderParallelMpi(const RenderOptions& o, const SceneLoader& loadScene) {
       options = toParallelOptions(o, session.workerCount());
     } catch (const InputError&) {
     }
-    return runMpiWorker(session, options);
+    return session.exitCode(runMpiWorker(session, options));
   }
   try {
     if (session.size() < 2) {
@@ -178,23 +218,24 @@ int renderParallelMpi(const RenderOptions& o, const SceneLoader& loadScene) {
           "prt render under MPI needs at least 2 ranks: mpirun -np N+1 prt render "
           "... (rank 0 is the master, ranks 1..N the workers)");
     }
-    MpiRunRequest request;
-    std::tie(request.scene, request.settings) = loadScene();
-    request.options = toParallelOptions(o, session.workerCount());
+    auto [scene, settings] = loadScene();
     if (!o.slowdowns.empty() && o.slowdowns.size() != static_cast<size_t>(session.workerCount())) {
       throw InputError("--slowdown lists " + std::to_string(o.slowdowns.size()) +
                        " values but mpirun started " + std::to_string(session.workerCount()) +
                        " workers (ranks 1.." + std::to_string(session.workerCount()) +
                        "; rank 0 is the master); give one per worker");
     }
-    validateParallelOptions(request.options, static_cast<uint64_t>(request.scene.image.width) *
-                                                 request.scene.image.height);
+    RunRequest request = makeRunRequest(o, scene, settings, session.workerCount());
     request.serialSeconds = serialSeconds(o, request.scene, request.settings);
     request.masterSpeedIndexSeconds = serialSpeedIndexSeconds(
         request.options.speedIndexKind, request.scene, request.settings);
-    // From here a lost worker or an MPI failure ends the whole job with a message.
+    // From here the driver kit survives lost workers; only losing them all fails the run.
     const ParallelRun run = renderMpiMaster(session, request);
-    return finishParallelRun(o, request.scene, run);
+    const int code = finishParallelRun(o, request.scene, run);
+    finishMpiMaster(session, run);
+    return session.exitCode(code);
+  } catch (const RunFailed& e) {
+    session.abort(e.what(), e.signal() > 0 ? 128 + e.signal() : 1);
   } catch (const InputError& e) {
     // Report before releasing: a released worker's exit can make mpirun end rank 0 at once.
     std::fprintf(stderr, "%s\n", e.format().c_str());

@@ -6,6 +6,7 @@
 #include <utility>
 #include <vector>
 
+#include "cli/checkpointing.h"
 #include "cli/commands.h"
 #include "cli/parallel_render.h"
 #include "cli/progress_bar.h"
@@ -97,6 +98,8 @@ int runRender(const RenderOptions& o) {
                        "add --workers N (and optionally --strategy NAME)");
     }
   }
+  if (!o.checkpointPath.empty()) return renderSerialWithCheckpoint(o, scene, settings);
+  if (o.resume) throw InputError("--resume needs --checkpoint FILE: the checkpoint to resume");
   return renderSerial(o, scene, settings);
 }
 

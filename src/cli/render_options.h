@@ -27,7 +27,11 @@ struct RenderOptions {
   std::vector<double> slowdowns;           // per worker, >= 1
   std::string speedIndex = "hanoi";        // what workers measure: hanoi | probe
   unsigned long long batchPixels = 128;    // pixels per returned batch
-  double workerTimeoutSeconds = 30;        // silence before a worker is declared lost
+  double workerTimeoutSeconds = 5;         // the lease: silence before a worker is lost
+  std::string endgame = "off";             // on | off: copies of the last tasks
+  std::string checkpointPath;              // --checkpoint FILE
+  double checkpointEverySeconds = 10;      // --checkpoint-every SECONDS
+  bool resume = false;                     // --resume: start from the checkpoint
   std::optional<double> serialSeconds;     // serial time for speed-up
   bool measureSerial = false;              // render serially first to measure it
   std::string reportPath;                  // --report FILE.json

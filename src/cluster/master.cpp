@@ -1,53 +1,50 @@
 #include "cluster/master.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 
 #include "core/check.h"
 
 namespace prt {
 
-Master::Master(std::unique_ptr<Strategy> strategy, int workerCount, uint64_t taskCount,
-               SceneMsg scene, ResultSink sink)
+Master::Master(std::unique_ptr<Strategy> strategy, int workerCount, uint64_t pixelCount,
+               SceneMsg scene, ResultSink sink, MasterOptions options)
     : strategy_(std::move(strategy)),
-      taskCount_(taskCount),
       scene_(std::move(scene)),
       sink_(std::move(sink)),
-      live_(static_cast<size_t>(workerCount), true),
-      liveCount_(workerCount),
+      options_(std::move(options)),
+      ledger_(workerCount, pixelCount),
+      map_(options_.resumedDone.empty() ? TaskMap(pixelCount)
+                                        : TaskMap(pixelCount, options_.resumedDone)),
       speedIndices_(static_cast<size_t>(workerCount), 0.0),
       speedIndicesMissing_(workerCount),
-      done_(taskCount, false),
-      given_(static_cast<size_t>(workerCount)),
-      movedOut_(static_cast<size_t>(workerCount)),
-      returned_(static_cast<size_t>(workerCount), 0),
       answered_(static_cast<size_t>(workerCount), false),
-      queueLengths_(static_cast<size_t>(workerCount), 0) {
-  PRT_CHECK(workerCount >= 1);
+      queueLengths_(static_cast<size_t>(workerCount), 0),
+      endgameServed_(static_cast<size_t>(workerCount), false) {
   PRT_CHECK(strategy_ != nullptr);
+  ledger_.seedDone(options_.resumedDone);
+  resumed_ = ledger_.doneCount();
+  options_.resumedDone = TaskSet{};
 }
 
-Outbox Master::start() {
+Outbox Master::start(double now) {
+  ledger_.startLeases(now);
   Outbox out;
-  sendToLive(scene_, out);
+  sendToAll(scene_, out);
   return out;
 }
 
-void Master::sendToLive(const Message& m, Outbox& out) {
-  for (int w = 0; w < workerCount(); ++w) {
-    if (isLive(w)) out.push_back({w, m});
-  }
+// Every worker, lost or not: a worker wrongly presumed lost still needs its StopMsg to end,
+// and a message to one that is really gone is harmless.
+void Master::sendToAll(const Message& m, Outbox& out) {
+  for (int w = 0; w < workerCount(); ++w) out.push_back({w, m});
 }
 
-bool Master::holdsWork(int worker) const {
-  const auto w = static_cast<size_t>(worker);
-  return live_[w] && given_[w].size() > movedOut_[w].size() + returned_[w];
-}
-
-bool Master::owesAnswer(int worker) const {
-  const auto w = static_cast<size_t>(worker);
-  if (!live_[w] || stopped_) return false;
-  return (!started_ && speedIndices_[w] == 0.0) || holdsWork(worker) ||
-         (queryOpen_ && !answered_[w]);
+void Master::assign(int worker, const TaskSet& pixels, Outbox& out) {
+  if (pixels.empty()) return;
+  ledger_.gave(worker, pixels);
+  out.push_back({worker, TasksMsg{pixels}});
 }
 
 void Master::apply(const Decisions& decisions, Outbox& out) {
@@ -57,28 +54,67 @@ void Master::apply(const Decisions& decisions, Outbox& out) {
       if (!isLive(a->worker)) {
         // Tasks for a worker lost before the strategy learnt of it (at the start): they are
         // that worker's leftovers, and go back to the strategy for the live ones.
+        ledger_.reissuedLate(a->tasks);
         apply(strategy_->onWorkerLost(a->worker, a->tasks), out);
         continue;
       }
-      given_[static_cast<size_t>(a->worker)].append(a->tasks);
-      out.push_back({a->worker, TasksMsg{a->tasks}});
+      assign(a->worker, map_.toPixels(a->tasks), out);
     } else if (std::holds_alternative<QueryQueues>(d)) {
       if (queryOpen_) continue;
       queryOpen_ = true;
       for (int w = 0; w < workerCount(); ++w) {
         answered_[static_cast<size_t>(w)] = !isLive(w);
         queueLengths_[static_cast<size_t>(w)] = 0;
+        if (isLive(w)) out.push_back({w, QueryQueueMsg{}});
       }
-      sendToLive(QueryQueueMsg{}, out);
     } else if (const auto* t = std::get_if<Transfer>(&d)) {
       // A transfer from or to a lost worker is moot: its tasks come back through
       // onWorkerLost, and a sender simply keeps what it would have sent.
       if (isLive(t->from) && isLive(t->to)) {
         out.push_back({t->from, TransferOrderMsg{t->to, t->count}});
       }
+    } else if (const auto* n = std::get_if<NoMoreWork>(&d)) {
+      // Nothing left to hand out: in the endgame, a copy of what will finish last.
+      if (options_.endgame && started_ && !stopped_ && isLive(n->worker) &&
+          !ledger_.holdsWork(n->worker)) {
+        endgameCopy(n->worker, out);
+      }
     }
-    // NoMoreWork: the worker simply waits; nothing to send.
   }
+}
+
+// The live worker expected to finish last is the one whose unfinished tasks take longest at
+// its speed index; the asking worker gets a copy of the back of that worker's queue (which
+// that worker renders last), sized so that both would finish together at their speed indices.
+// Each task is copied at most once, so the waste is bounded by one copy of the endgame.
+bool Master::endgameCopy(int worker, Outbox& out) {
+  int slowest = -1;
+  double latest = 0;
+  TaskSet candidates;
+  for (int v = 0; v < workerCount(); ++v) {
+    if (v == worker || !isLive(v) || endgameServed_[static_cast<size_t>(v)]) continue;
+    const TaskSet left = ledger_.unfinished(v);
+    const double speed = speedIndices_[static_cast<size_t>(v)];
+    const double finish = static_cast<double>(left.size()) * (speed > 0 ? speed : 1.0);
+    if (!left.empty() && finish > latest) {
+      latest = finish;
+      slowest = v;
+      candidates = left;
+    }
+  }
+  if (slowest < 0 || candidates.size() < 2) return false;
+  const double mine = std::max(speedIndices_[static_cast<size_t>(worker)], 1e-12);
+  const double theirs = std::max(speedIndices_[static_cast<size_t>(slowest)], 1e-12);
+  // Rates are 1 / speed index: my share of what is left is theirs / (mine + theirs).
+  const double share = theirs / (mine + theirs);
+  const auto count = std::clamp<uint64_t>(
+      static_cast<uint64_t>(std::ceil(share * static_cast<double>(candidates.size()))), 1,
+      candidates.size() - 1);
+  TaskSet copy = candidates.takeBack(count);
+  endgameServed_[static_cast<size_t>(slowest)] = true;  // its tail is covered now
+  endgameCopies_ += copy.size();
+  assign(worker, copy, out);
+  return true;
 }
 
 void Master::startStrategy(Outbox& out) {
@@ -91,17 +127,23 @@ void Master::startStrategy(Outbox& out) {
   for (int w = 0; w < workerCount(); ++w) {
     if (!isLive(w)) speeds[static_cast<size_t>(w)] = slowest;
   }
-  apply(strategy_->start(StartInfo{taskCount_, speeds}), out);
+  apply(strategy_->start(StartInfo{map_.taskCount(), speeds}), out);
   for (int w = 0; w < workerCount(); ++w) {
     if (!isLive(w)) apply(strategy_->onWorkerLost(w, TaskSet{}), out);
   }
-  finishIfComplete(out);  // an image with no tasks
+  // A worker given nothing at the start has, in the paper's words, finished its assigned
+  // tasks: it asks for more. Entering that request here means every idle worker is known to
+  // the strategy, so tasks that come back from a lost worker always find a taker.
+  for (int w = 0; w < workerCount() && !complete(); ++w) {
+    if (isLive(w) && !ledger_.holdsWork(w)) apply(strategy_->onRequest(w), out);
+  }
+  finishIfComplete(out);  // an image with no tasks left
 }
 
 void Master::finishIfComplete(Outbox& out) {
   if (complete() && !stopped_) {
     stopped_ = true;
-    sendToLive(StopMsg{}, out);
+    sendToAll(StopMsg{}, out);
   }
 }
 
@@ -115,29 +157,45 @@ void Master::answerQueryIfComplete(Outbox& out) {
   apply(strategy_->onQueueLengths(queueLengths_), out);
 }
 
-Outbox Master::onMessage(int from, const Message& message) {
+Outbox Master::onMessage(int from, const Message& message, double now) {
   Outbox out;
   PRT_CHECK(from >= 0 && from < workerCount());
   const auto w = static_cast<size_t>(from);
-  if (!live_[w]) return out;  // a worker presumed lost: ignore it
+  ledger_.heard(from, now);
+  if (const auto* r = std::get_if<ResultsMsg>(&message)) {
+    // Results count from anyone, lost or not: the first copy of a pixel wins.
+    PRT_CHECK(r->rgb.size() == 3 * r->tasks.size() || r->rgb.empty());  // empty: simulated
+    const TaskSet fresh = ledger_.accept(from, r->tasks);
+    if (fresh.empty()) {
+      // Every pixel a duplicate: dropped.
+    } else if (fresh.size() == r->tasks.size()) {
+      if (sink_) sink_(from, r->tasks, r->rgb);
+    } else if (sink_) {
+      std::vector<float> rgb;
+      if (!r->rgb.empty()) {
+        rgb.reserve(3 * fresh.size());
+        // Walk both in order: `fresh` is a subsequence of `r->tasks`.
+        std::vector<uint64_t> all = r->tasks.toVector();
+        std::vector<uint64_t> kept = fresh.toVector();
+        size_t k = 0;
+        for (size_t j = 0; j < all.size() && k < kept.size(); ++j) {
+          if (all[j] != kept[k]) continue;
+          rgb.insert(rgb.end(), r->rgb.begin() + static_cast<std::ptrdiff_t>(3 * j),
+                     r->rgb.begin() + static_cast<std::ptrdiff_t>(3 * j + 3));
+          ++k;
+        }
+      }
+      sink_(from, fresh, rgb);
+    }
+    if (endgameServed_[w] && !ledger_.holdsWork(from)) endgameServed_[w] = false;
+    finishIfComplete(out);
+    return out;
+  }
+  if (!isLive(from)) return out;  // a worker presumed lost: nothing else from it counts
   if (const auto* s = std::get_if<SpeedIndexMsg>(&message)) {
     if (speedIndices_[w] == 0.0) --speedIndicesMissing_;
     speedIndices_[w] = s->seconds;
     if (speedIndicesMissing_ == 0 && !started_) startStrategy(out);
-  } else if (const auto* r = std::get_if<ResultsMsg>(&message)) {
-    PRT_CHECK(r->rgb.size() == 3 * r->tasks.size() || r->rgb.empty());  // empty: simulated
-    returned_[w] += r->tasks.size();
-    r->tasks.forEach([&](uint64_t task) {
-      PRT_CHECK(task < taskCount_);
-      if (!done_[task]) {
-        done_[task] = true;
-        ++doneCount_;
-      }
-    });
-    // A batch may repeat pixels already delivered by a worker declared lost too early; passing
-    // them on is harmless, as a pixel renders to the same bits wherever it is rendered.
-    if (sink_) sink_(from, r->tasks, r->rgb);
-    finishIfComplete(out);
   } else if (std::holds_alternative<RequestMsg>(message)) {
     if (started_ && !stopped_) apply(strategy_->onRequest(from), out);
   } else if (const auto* q = std::get_if<QueueLengthMsg>(&message)) {
@@ -147,43 +205,58 @@ Outbox Master::onMessage(int from, const Message& message) {
       answerQueryIfComplete(out);
     }
   } else if (const auto* n = std::get_if<TransferNoticeMsg>(&message)) {
-    movedOut_[w].append(n->tasks);
+    ledger_.movedOut(from, n->tasks);
     if (isLive(n->to)) {
-      given_[static_cast<size_t>(n->to)].append(n->tasks);
+      ledger_.gave(n->to, n->tasks);
     } else {
       // Sent to a worker already lost: the tasks come back to the strategy as its leftovers.
-      apply(strategy_->onWorkerLost(n->to, n->tasks), out);
+      TaskSet left;
+      n->tasks.forEach([&](uint64_t t) {
+        if (!ledger_.isDone(t)) left.append(TaskRun{t, 1, 1});
+      });
+      ledger_.reissuedLate(left);
+      if (!stopped_) apply(strategy_->onWorkerLost(n->to, map_.toTasks(left)), out);
     }
   }
+  // HeartbeatMsg: the lease is renewed above; nothing else to do.
   return out;
 }
 
-Outbox Master::onWorkerLost(int worker) {
-  Outbox out;
+void Master::lose(int worker, double now, const std::string& reason, Outbox& out) {
   const auto w = static_cast<size_t>(worker);
-  if (!live_[w]) return out;
-  live_[w] = false;
-  --liveCount_;
+  const TaskSet unfinished = ledger_.markLost(worker, now, reason);
+  endgameServed_[w] = false;
   if (!started_) {
     if (speedIndices_[w] == 0.0) --speedIndicesMissing_;
     speedIndices_[w] = 0.0;
     // Start without it once everyone else has reported.
-    if (speedIndicesMissing_ == 0 && liveCount_ > 0) startStrategy(out);
-    return out;
+    if (speedIndicesMissing_ == 0 && ledger_.liveCount() > 0) startStrategy(out);
+    return;
   }
-  // Unfinished: everything it was given, less what it moved to peers and what came back.
-  std::vector<bool> excluded(taskCount_, false);
-  movedOut_[w].forEach([&](uint64_t t) { excluded[t] = true; });
-  TaskSet unfinished;
-  given_[w].forEach([&](uint64_t t) {
-    if (!excluded[t] && !done_[t]) unfinished.append(TaskRun{t, 1, 1});
-  });
   if (queryOpen_ && !answered_[w]) {
     answered_[w] = true;
     queueLengths_[w] = 0;
   }
-  if (!stopped_ && liveCount_ > 0) apply(strategy_->onWorkerLost(worker, unfinished), out);
+  if (!stopped_ && ledger_.liveCount() > 0) {
+    apply(strategy_->onWorkerLost(worker, map_.toTasks(unfinished)), out);
+  }
   answerQueryIfComplete(out);
+}
+
+Outbox Master::onWorkerLost(int worker, double now, const std::string& reason) {
+  Outbox out;
+  if (isLive(worker)) lose(worker, now, reason, out);
+  return out;
+}
+
+Outbox Master::expireLeases(double now, double leaseSeconds) {
+  Outbox out;
+  if (stopped_) return out;
+  for (int w : ledger_.expired(now, leaseSeconds)) {
+    char reason[64];
+    std::snprintf(reason, sizeof reason, "silent for %.1f s", ledger_.silentSeconds(w, now));
+    lose(w, now, reason, out);
+  }
   return out;
 }
 

@@ -1,83 +1,99 @@
 #pragma once
-// Master: the master's side of the protocol as an I/O-free state machine. A driver (threads,
-// MPI, the simulator) delivers messages and lost-worker notices and sends whatever comes back;
-// the master never touches a transport, a thread or the clock. It owns the strategy and
-// carries out its decisions, tracks which worker holds which tasks (so a lost worker's tasks
-// can be recovered), and hands each batch of results to the driver's sink.
+// Master: the master's side of the protocol as an I/O-free state machine. A driver (the driver
+// kit's MasterLoop over threads or MPI, or the simulator) delivers messages, lost-worker
+// verdicts and the time, and sends whatever comes back; the master never touches a transport,
+// a thread or the clock (times are passed in, in seconds on the driver's clock). It owns the
+// strategy and carries out its decisions, keeps the Ledger of who holds what, and hands each
+// batch of new results to the driver's sink.
+//
+// Faults: a worker is lost when the driver says so (its connection dropped, its thread
+// ended) or when its lease runs out (expireLeases: no message, not even a heartbeat, for the
+// lease). Its unfinished tasks go back through the strategy to the live workers — also when
+// no live worker holds anything, since every worker the strategy gave nothing at the start is
+// entered as having asked. A result is accepted once: a late or duplicate copy is dropped.
 // Not thread-safe: one driver thread calls it.
 
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "balance/strategy.h"
+#include "cluster/ledger.h"
 #include "cluster/messages.h"
+#include "cluster/task_map.h"
 
 namespace prt {
 
-// Receives each batch of results once (duplicates from a worker wrongly presumed lost are
-// dropped before): `rgb` holds 3 floats per task of `tasks`, in order, or nothing when the
-// results come from the simulator, which renders no colours (Worker::batchDone(batch)).
+// Receives each pixel's result once: `rgb` holds 3 floats per task of `tasks`, in order, or
+// nothing when the results come from the simulator, which renders no colours.
 using ResultSink =
     std::function<void(int worker, const TaskSet& tasks, const std::vector<float>& rgb)>;
 
+struct MasterOptions {
+  TaskSet resumedDone;  // pixels finished by an earlier run (a checkpoint): never handed out
+  bool endgame = false;  // when nothing is left, a worker that asks gets a copy of the tasks
+                         // expected to finish last (see Master::endgameCopy)
+};
+
 class Master {
  public:
-  Master(std::unique_ptr<Strategy> strategy, int workerCount, uint64_t taskCount,
-         SceneMsg scene, ResultSink sink);
+  Master(std::unique_ptr<Strategy> strategy, int workerCount, uint64_t pixelCount,
+         SceneMsg scene, ResultSink sink, MasterOptions options = {});
 
-  Outbox start();  // the scene, to every worker
-  Outbox onMessage(int from, const Message& message);
-  // The driver's verdict that `worker` crashed or stopped answering. Its unfinished tasks go
-  // back to the strategy; anything it sends later is ignored.
-  Outbox onWorkerLost(int worker);
+  Outbox start(double now);  // the scene, to every worker; every lease starts now
+  Outbox onMessage(int from, const Message& message, double now);
+  // The driver's verdict that `worker` is gone. Its unfinished tasks go back to the strategy;
+  // a later result from it is still accepted where it is the first.
+  Outbox onWorkerLost(int worker, double now, const std::string& reason);
+  // Declares lost every live worker silent for more than `leaseSeconds`.
+  Outbox expireLeases(double now, double leaseSeconds);
 
-  bool complete() const { return doneCount_ == taskCount_; }
+  bool complete() const { return ledger_.complete(); }
   // Every worker is lost and tasks remain: the run cannot finish.
-  bool failed() const { return liveCount_ == 0 && !complete(); }
-  bool isLive(int worker) const { return live_[static_cast<size_t>(worker)]; }
-  // True while `worker` holds tasks it has not returned: a driver watching for silent workers
-  // only needs to watch these.
-  bool holdsWork(int worker) const;
-  // True while the master is waiting for `worker`: its speed index, results for tasks it
-  // holds, or its queue length. A driver declares a worker lost only if it stays silent then.
-  bool owesAnswer(int worker) const;
+  bool failed() const { return ledger_.liveCount() == 0 && !complete(); }
+  bool stopped() const { return stopped_; }
+  bool isLive(int worker) const { return ledger_.isLive(worker); }
+  bool holdsWork(int worker) const { return ledger_.isLive(worker) && ledger_.holdsWork(worker); }
 
-  int workerCount() const { return static_cast<int>(live_.size()); }
-  uint64_t taskCount() const { return taskCount_; }
-  uint64_t doneCount() const { return doneCount_; }
+  int workerCount() const { return ledger_.workerCount(); }
+  uint64_t taskCount() const { return ledger_.taskCount(); }
+  uint64_t doneCount() const { return ledger_.doneCount(); }
+  uint64_t resumedCount() const { return resumed_; }
+  const Ledger& ledger() const { return ledger_; }
   const std::vector<double>& speedIndices() const { return speedIndices_; }
   const Strategy& strategy() const { return *strategy_; }
+  uint64_t endgameCopies() const { return endgameCopies_; }  // tasks sent as duplicates
 
  private:
   void startStrategy(Outbox& out);
   void apply(const Decisions& decisions, Outbox& out);
-  void sendToLive(const Message& m, Outbox& out);
+  void assign(int worker, const TaskSet& pixels, Outbox& out);
+  void lose(int worker, double now, const std::string& reason, Outbox& out);
+  void sendToAll(const Message& m, Outbox& out);
   void finishIfComplete(Outbox& out);
   void answerQueryIfComplete(Outbox& out);
+  bool endgameCopy(int worker, Outbox& out);
 
   std::unique_ptr<Strategy> strategy_;
-  uint64_t taskCount_;
   SceneMsg scene_;
   ResultSink sink_;
+  MasterOptions options_;
+  Ledger ledger_;
+  TaskMap map_;  // the strategy's tasks as pixels
+  uint64_t resumed_ = 0;
 
-  std::vector<bool> live_;
-  int liveCount_;
   std::vector<double> speedIndices_;
   int speedIndicesMissing_;
   bool started_ = false;  // strategy started (all speed indices in)
   bool stopped_ = false;  // StopMsg sent
 
-  std::vector<bool> done_;  // per task
-  uint64_t doneCount_ = 0;
-  std::vector<TaskSet> given_;   // per worker: every task it received (assignments, transfers in)
-  std::vector<TaskSet> movedOut_;  // per worker: tasks it sent to peers
-  std::vector<uint64_t> returned_;  // per worker: tasks it returned (for holdsWork)
-
   bool queryOpen_ = false;
   std::vector<bool> answered_;
   std::vector<uint64_t> queueLengths_;
+  std::vector<bool> endgameServed_;  // per worker: holds an endgame copy it has not finished
+  uint64_t endgameCopies_ = 0;
 };
 
 }  // namespace prt

@@ -1,5 +1,6 @@
 #include "cluster/messages.h"
 
+#include <iterator>
 #include <stdexcept>
 
 #include "cluster/byte_codec.h"
@@ -127,6 +128,9 @@ Message decode(const uint8_t* data, size_t size) {
     case 9:
       m = StopMsg{};
       break;
+    case 10:
+      m = HeartbeatMsg{};
+      break;
     default:
       throw std::runtime_error("malformed message: unknown type " + std::to_string(tag));
   }
@@ -137,7 +141,9 @@ Message decode(const uint8_t* data, size_t size) {
 const char* messageName(const Message& message) {
   static constexpr const char* kNames[] = {
       "Scene",      "SpeedIndex",  "Tasks",         "Results",        "Request",
-      "QueryQueue", "QueueLength", "TransferOrder", "TransferNotice", "Stop"};
+      "QueryQueue", "QueueLength", "TransferOrder", "TransferNotice", "Stop",
+      "Heartbeat"};
+  static_assert(std::size(kNames) == std::variant_size_v<Message>);
   return kNames[message.index()];
 }
 

@@ -11,6 +11,8 @@
 //   master -> worker  TransferOrderMsg    diffusion: send up to `count` tasks to worker `to`
 //   worker -> master  TransferNoticeMsg   which tasks it sent, so the master can recover them
 //   master -> worker  StopMsg             the image is complete
+//   either way        HeartbeatMsg        "still here": renews the sender's lease while it
+//                                         renders or waits (see drive/worker_loop.h)
 // Endpoints are worker indices 0..c-1 and kMaster.
 
 #include <cstdint>
@@ -67,10 +69,13 @@ struct TransferNoticeMsg {
 struct StopMsg {
   bool operator==(const StopMsg&) const = default;
 };
+struct HeartbeatMsg {
+  bool operator==(const HeartbeatMsg&) const = default;
+};
 
 using Message = std::variant<SceneMsg, SpeedIndexMsg, TasksMsg, ResultsMsg, RequestMsg,
                              QueryQueueMsg, QueueLengthMsg, TransferOrderMsg, TransferNoticeMsg,
-                             StopMsg>;
+                             StopMsg, HeartbeatMsg>;
 
 // A message and where it goes.
 struct Envelope {

@@ -1,31 +1,25 @@
 #pragma once
 // The local driver: the master and N workers as threads of one process that share nothing but
-// messages (encoded bytes through mailboxes). The default way to run PRT, and the reference
-// the MPI driver and the simulator are checked against.
+// messages (encoded bytes through mailboxes, drive/local_transport.h). The default way to run
+// PRT, and the reference the MPI driver and the simulator are checked against. Everything but
+// the threads and mailboxes is the driver kit's (drive/master_loop.h, drive/worker_loop.h),
+// shared with the MPI driver.
 //
-// Faults: a worker that crashes (its thread ends, as a dropped connection) is reported to the
-// master at once; one that hangs is declared lost after `workerTimeoutSeconds` of silence
-// while it owes the master an answer. Either way its unfinished tasks are reassigned and the
-// image is the same.
+// Faults: a worker thread that ends before its StopMsg (an injected crash, an exception such
+// as running out of memory) drops its connection and is lost at once; one that hangs is lost
+// when its lease runs out (`workerTimeoutSeconds` without a message, heartbeats included).
+// Either way its unfinished tasks go to the live workers and the image is the same.
 // Workers measure their speed indices concurrently, as separate machines would; like the
 // rendering, the measurement is faithful while the workers' combined demand (sum of 1/k_i)
 // fits the free cores.
-
-#include <optional>
 
 #include "drive/parallel_run.h"
 
 namespace prt {
 
-struct LocalRunRequest {
-  Scene scene;
-  RenderSettings settings;
-  ParallelOptions options;
-  double masterSpeedIndexSeconds = 0;   // the serial machine's speed index, for MASU
-  std::optional<double> serialSeconds;  // for speed-up and ASU
-};
+using LocalRunRequest = RunRequest;
 
-// Throws InputError for invalid options, std::runtime_error if every worker is lost.
-ParallelRun renderLocal(const LocalRunRequest& request);
+// Throws InputError for invalid options, RunFailed if the run cannot finish.
+ParallelRun renderLocal(const RunRequest& request);
 
 }  // namespace prt

@@ -8,10 +8,10 @@
 namespace prt {
 namespace {
 
-Scene smallScene() {
+Scene smallScene(int width = 20, int height = 14) {
   Scene scene;
-  scene.image.width = 20;
-  scene.image.height = 14;
+  scene.image.width = width;
+  scene.image.height = height;
   scene.camera.eye = Vec3(0, 1.5, -5);
   scene.camera.lookAt = Vec3(0, 0.8, 0);
   scene.lights.push_back({SphereLight{{3, 5, -3}, 0.6}, Color(1)});
@@ -42,8 +42,8 @@ LocalRunRequest request(const std::string& strategy, int workers) {
   return r;
 }
 
-Image serialImage(const RenderSettings& settings) {
-  const World world(smallScene());
+Image serialImage(const RenderSettings& settings, int width = 20, int height = 14) {
+  const World world(smallScene(width, height));
   return renderImage(Renderer(world, settings), 1);
 }
 
@@ -75,6 +75,78 @@ TEST_P(LocalDriverTest, CrashedWorkerIsReplacedAndImageUnchanged) {
   EXPECT_TRUE(run.report.workers[1].lost);
 }
 
+// The lost worker held every task and the live ones had been given nothing (a 16x1 image,
+// chunks of 64, reservoir shares rounding up): the run used to wait for ever.
+TEST_P(LocalDriverTest, WorkerLostHoldingEverythingIsReplaced) {
+  LocalRunRequest r = request(GetParam(), 2);
+  r.scene = smallScene(16, 1);
+  r.options.strategyOptions.chunk = 64;
+  r.options.faults.push_back({0, 0, FaultInjection::Kind::Crash});
+  const ParallelRun run = renderLocal(r);
+  EXPECT_TRUE(run.image == serialImage(r.settings, 16, 1));
+  EXPECT_TRUE(run.report.workers[0].lost);
+  EXPECT_EQ(run.report.info.faults.lostWorkers.size(), 1u);
+}
+
+TEST_P(LocalDriverTest, LostFastWorkerWithSlowOthersIsReplaced) {
+  LocalRunRequest r = request(GetParam(), 3);
+  r.scene = smallScene(3, 1);
+  r.options.slowdowns = {1, 20, 20};
+  r.options.faults.push_back({0, 0, FaultInjection::Kind::Crash});
+  const ParallelRun run = renderLocal(r);
+  EXPECT_TRUE(run.image == serialImage(r.settings, 3, 1));
+}
+
+TEST_P(LocalDriverTest, HungWorkerWithATinyInitialShareIsReplaced) {
+  LocalRunRequest r = request(GetParam(), 2);
+  r.scene = smallScene(16, 12);
+  r.options.strategyOptions.initialPercent = 0.01;
+  r.options.workerTimeoutSeconds = 1;
+  r.options.faults.push_back({0, 0, FaultInjection::Kind::Hang});
+  const ParallelRun run = renderLocal(r);
+  EXPECT_TRUE(run.image == serialImage(r.settings, 16, 12));
+}
+
+// An initial share that rounds to no task at all, and no fault: every worker still asks.
+TEST_P(LocalDriverTest, InitialShareOfNothingStillFinishes) {
+  LocalRunRequest r = request(GetParam(), 3);
+  r.options.strategyOptions.initialPercent = 1e-14;
+  const ParallelRun run = renderLocal(r);
+  EXPECT_TRUE(run.image == serialReference());
+}
+
+TEST_P(LocalDriverTest, EndgameCopiesKeepTheImageAndEveryPixelOnce) {
+  LocalRunRequest r = request(GetParam(), 3);
+  r.options.endgame = true;
+  r.options.slowdowns = {1, 1, 6};
+  const ParallelRun run = renderLocal(r);
+  EXPECT_TRUE(run.image == serialReference());
+  for (int16_t owner : run.owner) ASSERT_GE(owner, 0);
+}
+
+// A resumed run renders only what the checkpoint lacks, and the image is the same.
+TEST_P(LocalDriverTest, ResumedRunRendersOnlyTheMissingPixels) {
+  Checkpoint c;
+  c.image = serialReference();
+  c.owner.assign(c.image.pixelCount(), 7);
+  c.done = TaskSet::range(0, 100);
+  c.done.append(TaskSet::strided(150, 20, 3));
+  std::vector<bool> isDone(c.image.pixelCount(), false);
+  c.done.forEach([&](uint64_t p) { isDone[p] = true; });
+  for (uint64_t p = 0; p < c.image.pixelCount(); ++p) {
+    if (!isDone[p]) c.image.set(p, Color(0));
+  }
+  LocalRunRequest r = request(GetParam(), 3);
+  r.resumeFrom = c;
+  const ParallelRun run = renderLocal(r);
+  EXPECT_TRUE(run.image == serialReference());
+  uint64_t rendered = 0;
+  for (const WorkerReport& w : run.report.workers) rendered += w.pixels;
+  EXPECT_EQ(rendered, serialReference().pixelCount() - c.done.size());
+  EXPECT_EQ(run.report.info.faults.resumedPixels, c.done.size());
+  c.done.forEach([&](uint64_t p) { ASSERT_EQ(run.owner[p], 7); });
+}
+
 INSTANTIATE_TEST_SUITE_P(AllStrategies, LocalDriverTest, ::testing::ValuesIn(strategyNames()));
 
 TEST(LocalDriverFaultTest, HungWorkerIsDetectedByTimeout) {
@@ -88,13 +160,16 @@ TEST(LocalDriverFaultTest, HungWorkerIsDetectedByTimeout) {
   EXPECT_TRUE(run.image == serialReference());
   EXPECT_TRUE(run.report.workers[2].lost);
   EXPECT_FALSE(run.report.workers[0].lost);
+  ASSERT_EQ(run.report.info.faults.lostWorkers.size(), 1u);
+  EXPECT_NE(run.report.info.faults.lostWorkers[0].reason.find("silent"), std::string::npos);
+  EXPECT_GT(run.report.info.faults.reissuedTasks, 0u);
 }
 
 TEST(LocalDriverFaultTest, EveryWorkerCrashingFailsInsteadOfHanging) {
   LocalRunRequest r = request("self", 2);
   r.options.faults.push_back({0, 0, FaultInjection::Kind::Crash});
   r.options.faults.push_back({1, 0, FaultInjection::Kind::Crash});
-  EXPECT_THROW(renderLocal(r), std::runtime_error);
+  EXPECT_THROW(renderLocal(r), RunFailed);
 }
 
 TEST(LocalDriverOptionsTest, BadOptionsAreInputErrors) {

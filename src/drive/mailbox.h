@@ -9,11 +9,13 @@
 #include <optional>
 
 #include "cluster/messages.h"
+#include "drive/transport.h"
 
 namespace prt {
 
 struct Mail {
   int from = kMaster;
+  Channel channel = Channel::Protocol;
   Bytes bytes;
   bool lost = false;  // not a message: the connection to `from` dropped
 };
@@ -27,24 +29,17 @@ class Mailbox {
     }
     ready_.notify_one();
   }
-  std::optional<Mail> tryPop() {
-    std::lock_guard lock(mutex_);
-    return popLocked();
-  }
-  // Waits up to `timeout` for mail.
-  std::optional<Mail> pop(std::chrono::duration<double> timeout) {
+  // Waits until `deadline` at most for mail.
+  std::optional<Mail> popUntil(std::chrono::steady_clock::time_point deadline) {
     std::unique_lock lock(mutex_);
-    ready_.wait_for(lock, timeout, [&] { return !queue_.empty(); });
-    return popLocked();
-  }
-
- private:
-  std::optional<Mail> popLocked() {
+    ready_.wait_until(lock, deadline, [&] { return !queue_.empty(); });
     if (queue_.empty()) return std::nullopt;
     Mail m = std::move(queue_.front());
     queue_.pop_front();
     return m;
   }
+
+ private:
   std::mutex mutex_;
   std::condition_variable ready_;
   std::deque<Mail> queue_;

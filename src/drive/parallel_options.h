@@ -25,10 +25,14 @@ struct ParallelOptions {
   StrategyOptions strategyOptions;
   std::vector<double> slowdowns;       // per worker, each >= 1; empty: all 1
   uint64_t batchPixels = 128;          // pixels per returned batch of results
-  double workerTimeoutSeconds = 30;    // silence after which a worker owing an answer is lost
+  double workerTimeoutSeconds = 5;     // the lease: silence (not even a heartbeat) after which
+                                       // a worker is lost; also the master's, for the workers
   SpeedIndexKind speedIndexKind = SpeedIndexKind::Hanoi;  // what each worker measures
   int speedIndexDiscs = kSpeedIndexDiscs;  // size of each worker's Towers of Hanoi run
   std::vector<FaultInjection> faults;  // worker W is rank W+1 under MPI
+  bool endgame = false;                // copies of the last tasks for workers left idle
+  std::string checkpointPath;          // empty: no checkpoints
+  double checkpointEverySeconds = 10;  // between periodic checkpoints
 
   double slowdownOf(int worker) const {
     return slowdowns.empty() ? 1.0 : slowdowns[static_cast<size_t>(worker)];

@@ -29,7 +29,12 @@ void validateParallelOptions(const ParallelOptions& o, uint64_t pixelCount) {
     }
   }
   if (o.batchPixels < 1) throw InputError("--batch must be at least 1");
-  if (!(o.workerTimeoutSeconds > 0)) throw InputError("--worker-timeout must be positive");
+  if (!(o.workerTimeoutSeconds >= 0.1) || !(o.workerTimeoutSeconds <= 86400)) {
+    throw InputError("--worker-timeout must be between 0.1 and 86400 seconds");
+  }
+  if (!(o.checkpointEverySeconds >= 0.01) || !(o.checkpointEverySeconds <= 86400)) {
+    throw InputError("--checkpoint-every must be between 0.01 and 86400 seconds");
+  }
   makeStrategy(o.strategy, o.strategyOptions);  // throws for unknown names and bad options
 }
 
@@ -44,6 +49,14 @@ void ImageAssembler::add(int worker, const TaskSet& tasks, const std::vector<flo
     owner_[pixel] = static_cast<int16_t>(worker);
     i += 3;
   });
+}
+
+void ImageAssembler::restore(const Checkpoint& checkpoint) {
+  PRT_CHECK(checkpoint.image.width() == image_.width() &&
+            checkpoint.image.height() == image_.height());
+  image_ = checkpoint.image;
+  owner_ = checkpoint.owner;
+  owner_.resize(image_.pixelCount(), -1);
 }
 
 SceneMsg makeSceneMessage(const Scene& scene, const RenderSettings& settings) {

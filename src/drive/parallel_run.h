@@ -4,12 +4,17 @@
 // batches, and building the report from the event stream.
 
 #include <cstdint>
+#include <functional>
+#include <stdexcept>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "cluster/messages.h"
+#include "drive/checkpoint.h"
 #include "drive/parallel_options.h"
+#include "drive/transport.h"
+#include "drive/worker_loop.h"
 #include "image/image.h"
 #include "metrics/events.h"
 #include "metrics/run_report.h"
@@ -25,11 +30,46 @@ struct ParallelRun {
   RunReport report;
 };
 
+// What a parallel render needs, whatever drives it.
+struct RunRequest {
+  Scene scene;
+  RenderSettings settings;
+  ParallelOptions options;
+  double masterSpeedIndexSeconds = 0;   // the serial machine's speed index, for MASU
+  std::optional<double> serialSeconds;  // for speed-up and ASU
+  std::optional<Checkpoint> resumeFrom;  // pixels an earlier run finished (--resume)
+  std::function<int()> interrupted;      // a pending stop signal (0: none); may be null
+};
+
+// The run could not finish (every worker lost, interrupted). The message says what survived
+// and how to resume when there is a checkpoint.
+class RunFailed : public std::runtime_error {
+ public:
+  RunFailed(const std::string& message, int signal)
+      : std::runtime_error(message), signal_(signal) {}
+  int signal() const { return signal_; }  // the stop signal, or 0
+
+ private:
+  int signal_;
+};
+
+// The master's side of a parallel render over `net`, the same for every transport: the
+// Master and its strategy, the MasterLoop (leases, heartbeats, reissue), checkpoints, the
+// image and the report (`driver` names the transport in it). Throws RunFailed.
+ParallelRun runMasterSide(Transport& net, const RunRequest& request, const std::string& driver);
+
+// A worker's side over `net`: its engine (slowdown, speed index) and the WorkerLoop, with
+// this transport's way of failing for an injected fault.
+WorkerExit runWorkerSide(Transport& net, int id, const ParallelOptions& options,
+                         const WorkerFaultActions& faults);
+
 // Assembles result batches into the image and the ownership map.
 class ImageAssembler {
  public:
   ImageAssembler(int width, int height);
   void add(int worker, const TaskSet& tasks, const std::vector<float>& rgb);
+  // Starts from a checkpoint's pixels.
+  void restore(const Checkpoint& checkpoint);
   Image& image() { return image_; }
   std::vector<int16_t>& owner() { return owner_; }
 

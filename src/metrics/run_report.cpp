@@ -108,6 +108,22 @@ std::string RunReport::toJson() const {
                   {"lost", w.lost}});
   }
   j["workers"] = ws;
+  const FaultInfo& f = info.faults;
+  json lost = json::array();
+  for (const LostWorkerInfo& l : f.lostWorkers) {
+    lost.push_back({{"worker", l.worker},
+                    {"at_s", l.atSeconds},
+                    {"reason", l.reason},
+                    {"unfinished_tasks", l.unfinished}});
+  }
+  j["lost_workers"] = lost;
+  j["reissued_tasks"] = f.reissuedTasks;
+  j["duplicate_pixels"] = f.duplicatePixels;
+  j["endgame_copies"] = f.endgameCopies;
+  j["resumed_pixels"] = f.resumedPixels;
+  j["worker_timeout_s"] = f.workerTimeoutSeconds;
+  j["heartbeat_s"] = f.heartbeatSeconds;
+  j["missing_summaries"] = f.missingSummaries;
   return j.dump(2) + "\n";
 }
 
@@ -141,10 +157,18 @@ std::string RunReport::toTable() const {
                 static_cast<unsigned long long>(messages), static_cast<unsigned long long>(bytes));
   out += line;
   if (!speedup) out += "(speed-up and ASU need --serial-seconds T or --measure-serial)\n";
-  for (const WorkerReport& w : workers) {
-    if (w.lost) {
-      out += "worker " + std::to_string(w.worker) + " was lost; its tasks were reassigned\n";
-    }
+  for (const LostWorkerInfo& l : info.faults.lostWorkers) {
+    std::snprintf(line, sizeof line,
+                  "worker %d was lost at %.2f s (%s); its %llu unfinished tasks were reissued\n",
+                  l.worker, l.atSeconds, l.reason.c_str(),
+                  static_cast<unsigned long long>(l.unfinished));
+    out += line;
+  }
+  for (int w : info.faults.missingSummaries) {
+    out += "worker " + std::to_string(w) + " sent no summary: its times are missing\n";
+  }
+  if (info.faults.resumedPixels > 0) {
+    out += std::to_string(info.faults.resumedPixels) + " pixels came from the checkpoint\n";
   }
   return out;
 }

@@ -30,6 +30,26 @@ struct WorkerReport {
   bool lost = false;
 };
 
+// A worker the master declared lost, and what it left behind.
+struct LostWorkerInfo {
+  int worker = 0;
+  double atSeconds = 0;     // on the master's clock
+  std::string reason;       // "connection dropped", "silent for 5.0 s", ...
+  uint64_t unfinished = 0;  // tasks it held, not done, handed back for reissue
+};
+
+// How the run dealt with faults; all zero in a run without any.
+struct FaultInfo {
+  std::vector<LostWorkerInfo> lostWorkers;
+  uint64_t reissuedTasks = 0;    // tasks handed back to the strategy from lost workers
+  uint64_t duplicatePixels = 0;  // result copies dropped (reissues raced, endgame copies)
+  uint64_t endgameCopies = 0;    // tasks sent as endgame duplicates
+  uint64_t resumedPixels = 0;    // pixels taken from a checkpoint instead of rendered
+  double workerTimeoutSeconds = 0;  // the lease: silence after which a worker is lost
+  double heartbeatSeconds = 0;      // how often workers and master say they are there
+  std::vector<int> missingSummaries;  // live workers whose end-of-run summary never came
+};
+
 struct RunInfo {
   std::string driver;    // "local", "mpi", "simulated"
   std::string strategy;
@@ -41,6 +61,7 @@ struct RunInfo {
   std::vector<uint64_t> tasksReceived;  // per worker
   std::optional<double> serialSeconds;  // for speed-up; absent: speed-up not reported
   uint64_t rays = 0;
+  FaultInfo faults;
 };
 
 struct RunReport {

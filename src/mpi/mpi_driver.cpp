@@ -1,348 +1,94 @@
 #include "mpi/mpi_driver.h"
 
-#include <algorithm>
+#include <fcntl.h>
+#include <signal.h>
+#include <unistd.h>
+
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
-#include <stdexcept>
 #include <string>
 #include <thread>
-#include <vector>
 
-#include "cluster/master.h"
-#include "cluster/worker.h"
 #include "core/check.h"
 #include "core/input_error.h"
-#include "drive/worker_engine.h"
 #include "mpi/mpi_comm.h"
 #include "mpi/mpi_transport.h"
-#include "mpi/worker_summary.h"
 
 namespace prt {
 namespace {
 
 using namespace mpi_detail;
-using Clock = std::chrono::steady_clock;
-
-// Seconds since reset(), on this rank's steady clock.
-class Stopwatch {
- public:
-  void reset() { start_ = Clock::now(); }
-  double now() const { return std::chrono::duration<double>(Clock::now() - start_).count(); }
-
- private:
-  Clock::time_point start_ = Clock::now();
-};
 
 std::string rankName(int worker) {
   return "worker rank " + std::to_string(rankOf(worker)) + " (worker " + std::to_string(worker) +
          ")";
 }
 
-std::string seconds(double s) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.1f s", s);
-  return text;
-}
-
-// Encodes, logs and sends every message of `out`, as the local driver's Network::send does.
-void sendOutbox(MpiTransport& net, int from, const Outbox& out, EventLog& log,
-                const Stopwatch& clock) {
-  for (const Envelope& e : out) {
-    Bytes bytes = encode(e.message);
-    const double now = clock.now();
-    log.add(
-        {EventKind::MessageSent, from, now, now, 0, bytes.size(), e.to, messageName(e.message)});
-    net.send(rankOf(e.to), kMessageTag, std::move(bytes));
-  }
-}
-
-// The message for an MPI failure, naming the rank involved when MPI says which.
-std::string describe(const MpiError& e) {
-  if (e.rank() > 0) {
-    return "MPI failed talking to " + rankName(endpointOf(e.rank())) + ": " + e.what();
-  }
-  if (e.rank() == 0) return std::string("MPI failed talking to the master (rank 0): ") + e.what();
-  return std::string("MPI failed: ") + e.what();
-}
-
-// ---------------------------------------------------------------------------------------------
-// Master (rank 0)
-
-class MasterRank {
- public:
-  MasterRank(MpiSession& session, const MpiRunRequest& request)
-      : session_(session),
-        request_(request),
-        n_(request.options.workers),
-        net_(session.comm().comm),
-        assembler_(request.scene.image.width, request.scene.image.height),
-        master_(makeStrategy(request.options.strategy, request.options.strategyOptions), n_,
-                static_cast<uint64_t>(request.scene.image.width) * request.scene.image.height,
-                makeSceneMessage(request.scene, request.settings),
-                [this](int w, const TaskSet& t, const std::vector<float>& rgb) {
-                  assembler_.add(w, t, rgb);
-                }),
-        lastContact_(static_cast<size_t>(n_), 0.0),
-        summaries_(static_cast<size_t>(n_)) {}
-
-  ParallelRun run() {
-    double elapsed = 0;
-    try {
-      session_.comm().runStarted = true;
-      clock_.reset();
-      send(master_.start());
-      while (!master_.complete()) {
-        if (!receive(false)) pollPause();
-        watchForSilence();
-      }
-      elapsed = clock_.now();
-      collectSummaries();
-    } catch (const MpiError& e) {
-      session_.abort(describe(e) + "; aborting");
-    } catch (const std::exception& e) {
-      session_.abort(std::string(e.what()) + "; aborting");
-    }
-    return finish(elapsed);
-  }
-
- private:
-  // Silence is counted from the last exchange either way, as in the local driver: a worker
-  // just handed new tasks after a long wait owes nothing yet.
-  void send(const Outbox& out) {
-    const double now = clock_.now();
-    for (const Envelope& e : out) lastContact_[static_cast<size_t>(e.to)] = now;
-    sendOutbox(net_, kMaster, out, log_, clock_);
-  }
-
-  // Handles one waiting message, if any; true if there was one. After the image is complete
-  // (`draining`), protocol messages still in flight are logged and dropped, as the local
-  // driver stops reading them.
-  bool receive(bool draining) {
-    std::optional<Packet> p = net_.poll();
-    if (!p) return false;
-    const double now = clock_.now();
-    const int w = endpointOf(p->rank);
-    if (w < 0 || w >= n_) {
-      throw std::runtime_error("message from unexpected rank " + std::to_string(p->rank));
-    }
-    lastContact_[static_cast<size_t>(w)] = now;
-    if (p->tag == kMessageTag) {
-      Message m;
-      try {
-        m = decode(p->bytes);
-      } catch (const std::exception& e) {
-        throw std::runtime_error("bad message from " + rankName(w) + ": " + e.what());
-      }
-      log_.add(
-          {EventKind::MessageReceived, kMaster, now, now, 0, p->bytes.size(), w, messageName(m)});
-      if (!draining) send(master_.onMessage(w, m));
-    } else if (p->tag == kSummaryTag && draining) {
-      auto& slot = summaries_[static_cast<size_t>(w)];
-      if (slot) throw std::runtime_error(rankName(w) + " sent two summaries");
-      try {
-        slot = decodeSummary(p->bytes);
-      } catch (const std::exception& e) {
-        throw std::runtime_error("bad summary from " + rankName(w) + ": " + e.what());
-      }
-      ++summariesIn_;
-    } else if (p->tag == kSummaryTag) {
-      throw std::runtime_error(rankName(w) + " stopped before the image was complete");
-    } else {
-      throw std::runtime_error("message with unexpected tag " + std::to_string(p->tag) + " from " +
-                               rankName(w));
-    }
-    return true;
-  }
-
-  // A worker that owes the master an answer and stays silent is lost; under MPI the run
-  // cannot recover it, so the job ends here.
-  void watchForSilence() {
-    const double now = clock_.now();
-    for (int w = 0; w < n_; ++w) {
-      const double silent = now - lastContact_[static_cast<size_t>(w)];
-      if (master_.owesAnswer(w) && silent > request_.options.workerTimeoutSeconds) {
-        session_.abort(rankName(w) + " stopped answering (no message for " + seconds(silent) +
-                       "); aborting");
-      }
-    }
-  }
-
-  // Every worker got StopMsg with the last results; each answers with its summary.
-  void collectSummaries() {
-    const double stopped = clock_.now();
-    while (summariesIn_ < n_) {
-      if (!receive(true)) pollPause();
-      const double now = clock_.now();
-      for (int w = 0; w < n_; ++w) {
-        const auto i = static_cast<size_t>(w);
-        const double silent = now - std::max(lastContact_[i], stopped);
-        if (!summaries_[i] && silent > request_.options.workerTimeoutSeconds) {
-          session_.abort(rankName(w) + " sent no summary within " + seconds(silent) +
-                         " of the image being complete; aborting");
-        }
-      }
-    }
-    if (!net_.flush(request_.options.workerTimeoutSeconds)) {
-      throw std::runtime_error("messages to the workers were never delivered");
-    }
-  }
-
-  ParallelRun finish(double elapsed) {
-    const ParallelOptions& options = request_.options;
-    ParallelRun run;
-    run.events = log_.events;
-    RunInfo info;
-    info.driver = "mpi";
-    info.strategy = options.strategy;
-    info.width = request_.scene.image.width;
-    info.height = request_.scene.image.height;
-    info.samplesPerPixel = request_.settings.samplesPerPixel;
-    info.drtRate = request_.settings.drtRate;
-    info.masterSpeedIndexSeconds = request_.masterSpeedIndexSeconds;
-    info.workerSpeedIndexSeconds = master_.speedIndices();
-    info.serialSeconds = request_.serialSeconds;
-    for (int w = 0; w < n_; ++w) {
-      const WorkerSummary& s = *summaries_[static_cast<size_t>(w)];
-      const double offset = workerClockOffset(log_.events, s.events, w);
-      for (Event e : s.events) {
-        e.start += offset;
-        e.end += offset;
-        run.events.push_back(std::move(e));
-      }
-      info.slowdowns.push_back(options.slowdownOf(w));
-      info.tasksReceived.push_back(s.tasksReceived);
-      info.rays += s.rays;
-    }
-    run.report = makeReport(info, run.events, elapsed);
-    run.image = std::move(assembler_.image());
-    run.owner = std::move(assembler_.owner());
-    return run;
-  }
-
-  MpiSession& session_;
-  const MpiRunRequest& request_;
-  const int n_;
-  MpiTransport net_;
-  ImageAssembler assembler_;
-  Master master_;
-  EventLog log_;
-  Stopwatch clock_;
-  std::vector<double> lastContact_;  // per worker: last message either way, master clock
-  std::vector<std::optional<WorkerSummary>> summaries_;
-  int summariesIn_ = 0;
-};
-
-// ---------------------------------------------------------------------------------------------
-// Workers (ranks >= 1)
-
-[[noreturn]] void failAsInjected(const FaultInjection& fault, int id, uint64_t rendered) {
+[[noreturn]] void failAsInjected(const FaultInjection& fault, int id) {
   const bool crash = fault.kind == FaultInjection::Kind::Crash;
   std::fprintf(stderr, "prt: %s: injected %s after %llu pixels; %s\n", rankName(id).c_str(),
-               crash ? "crash" : "hang", static_cast<unsigned long long>(rendered),
+               crash ? "crash" : "hang", static_cast<unsigned long long>(fault.afterPixels),
                crash ? "exiting" : "no longer answering");
   std::fflush(stderr);
   if (crash) std::_Exit(3);  // as a machine dropping off the network: no goodbye to MPI
   for (;;) std::this_thread::sleep_for(std::chrono::milliseconds(100));
 }
 
-class WorkerRank {
- public:
-  WorkerRank(MpiSession& session, const ParallelOptions& options)
-      : id_(endpointOf(session.rank())),
-        net_(session.comm().comm),
-        worker_(id_, WorkerOptions{options.batchPixels}),
-        // A slowdown list of the wrong length is the master's to report: it releases us.
-        engine_(options.slowdowns.size() == static_cast<size_t>(session.workerCount())
-                    ? options.slowdownOf(id_)
-                    : 1.0,
-                options.speedIndexKind, options.speedIndexDiscs) {
-    for (const FaultInjection& f : options.faults) {
-      if (f.worker == id_) fault_ = &f;
-    }
+// The process that started this rank (mpirun, or Open MPI's daemon on another host), if it
+// is one: its command name, read from /proc.
+std::string launcherName(pid_t pid) {
+  std::FILE* f = std::fopen(("/proc/" + std::to_string(pid) + "/comm").c_str(), "r");
+  if (f == nullptr) return "";
+  char name[64] = {};
+  const bool ok = std::fgets(name, sizeof name, f) != nullptr;
+  std::fclose(f);
+  if (!ok) return "";
+  std::string n(name);
+  while (!n.empty() && (n.back() == '\n' || n.back() == ' ')) n.pop_back();
+  return n;
+}
+
+// Forks a watchdog that, `graceSeconds` from now, sends SIGTERM to the launcher that started
+// this rank if it is still running — the one way left to end a job whose lost rank hangs
+// under --enable-recovery (MPI_Abort does not end it then). mpirun forwards the signal to the
+// job, so the hung process ends too. A launcher that returned in time is left alone; the
+// watchdog checks that the pid is still the launcher's before signalling. False when this
+// rank was not started by a launcher it recognises.
+bool endLauncherIfStillRunningAfter(double graceSeconds) {
+  const pid_t launcher = ::getppid();
+  const std::string name = launcherName(launcher);
+  if (name != "mpirun" && name != "mpiexec" && name != "orterun" && name != "orted" &&
+      name != "prterun") {
+    return false;
   }
-
-  // The same loop as the local driver's runWorker: read all waiting mail before computing,
-  // pause briefly when idle.
-  int run() {
-    while (!worker_.stopped()) {
-      if (std::optional<Packet> p = net_.poll()) {
-        if (p->tag == kReleaseTag && p->rank == 0 && !sceneReceived_) return releaseCode(*p);
-        if (p->tag != kMessageTag) {
-          throw std::runtime_error("message with unexpected tag " + std::to_string(p->tag) +
-                                   " from rank " + std::to_string(p->rank));
-        }
-        const Message m = decode(p->bytes);
-        if (std::holds_alternative<SceneMsg>(m)) {
-          clock_.reset();  // this worker's time 0 (see worker_summary.h)
-          sceneReceived_ = true;
-        }
-        const double now = clock_.now();
-        log_.add({EventKind::MessageReceived, id_, now, now, 0, p->bytes.size(),
-                  endpointOf(p->rank), messageName(m)});
-        send(worker_.onMessage(endpointOf(p->rank), m));
-        continue;
-      }
-      if (worker_.needsSetup()) {
-        setUp();
-      } else if (worker_.hasWork()) {
-        if (fault_ && rendered_ >= fault_->afterPixels) failAsInjected(*fault_, id_, rendered_);
-        renderBatch();
-      } else {
-        pollPause();
-      }
-    }
-    WorkerSummary summary{rays_, worker_.tasksReceived(), std::move(log_.events)};
-    net_.send(rankOf(kMaster), kSummaryTag, encodeSummary(summary));
-    if (!net_.flush(30.0)) throw std::runtime_error("the master did not take the summary");
-    return 0;
+  std::fflush(nullptr);
+  const pid_t child = ::fork();
+  if (child != 0) return child > 0;
+  // The watchdog: no MPI, no inherited output pipes (mpirun waits for their end), its own
+  // session so the job's signals do not reach it.
+  ::setsid();
+  const int devnull = ::open("/dev/null", O_RDWR);
+  for (int fd = 0; fd < 1024; ++fd) {
+    if (fd != devnull) ::close(fd);
   }
-
- private:
-  void send(const Outbox& out) { sendOutbox(net_, id_, out, log_, clock_); }
-
-  static int releaseCode(const Packet& p) {
-    int32_t code = 1;
-    if (p.bytes.size() == sizeof code) std::memcpy(&code, p.bytes.data(), sizeof code);
-    return code;
+  ::dup2(devnull, 0);
+  ::dup2(devnull, 1);
+  ::dup2(devnull, 2);
+  const auto deadline = std::chrono::steady_clock::now() +
+                        std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                            std::chrono::duration<double>(graceSeconds));
+  while (std::chrono::steady_clock::now() < deadline) {
+    if (::kill(launcher, 0) != 0 || launcherName(launcher) != name) ::_exit(0);
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));
   }
-
-  // Loads the scene and times the Towers of Hanoi. Workers measure at the same time, as
-  // separate machines would (and as the local driver's threads do).
-  void setUp() {
-    const double t0 = clock_.now();
-    engine_.load(worker_.scene());
-    const double speedIndex = engine_.measureSpeedIndex();
-    log_.add({EventKind::Setup, id_, t0, clock_.now(), 0, 0, 0, ""});
-    send(worker_.setupDone(speedIndex));
-  }
-
-  void renderBatch() {
-    const TaskSet batch = worker_.nextBatch();
-    const double t0 = clock_.now();
-    double computeSeconds = 0;
-    std::vector<float> rgb = engine_.render(batch, computeSeconds, rays_);
-    log_.add({EventKind::Compute, id_, t0, t0 + computeSeconds, batch.size(), 0, 0, ""});
-    rendered_ += batch.size();
-    send(worker_.batchDone(batch, std::move(rgb)));
-  }
-
-  const int id_;
-  MpiTransport net_;
-  Worker worker_;
-  WorkerEngine engine_;
-  const FaultInjection* fault_ = nullptr;
-  EventLog log_;
-  Stopwatch clock_;
-  bool sceneReceived_ = false;
-  uint64_t rendered_ = 0;
-  uint64_t rays_ = 0;
-};
+  if (launcherName(launcher) == name) ::kill(launcher, SIGTERM);
+  ::_exit(0);
+}
 
 }  // namespace
 
-ParallelRun renderMpiMaster(MpiSession& session, const MpiRunRequest& request) {
+ParallelRun renderMpiMaster(MpiSession& session, const RunRequest& request) {
   PRT_CHECK(session.isMaster());
   const ParallelOptions& options = request.options;
   if (options.workers != session.workerCount()) {
@@ -351,18 +97,89 @@ ParallelRun renderMpiMaster(MpiSession& session, const MpiRunRequest& request) {
   }
   validateParallelOptions(
       options, static_cast<uint64_t>(request.scene.image.width) * request.scene.image.height);
-  MasterRank master(session, request);
-  return master.run();
+  session.comm().runStarted = true;
+  MpiLink link(session.comm().comm);
+  ParallelRun run = runMasterSide(link, request, "mpi");
+  link.flush(options.workerTimeoutSeconds);
+  return run;
+}
+
+void finishMpiMaster(MpiSession& session, const ParallelRun& run) {
+  const FaultInfo& faults = run.report.info.faults;
+  const bool clean = faults.lostWorkers.empty() && faults.missingSummaries.empty();
+  MpiTransport net(session.comm().comm);
+  const int32_t code = clean ? kReleaseFinalize : kReleaseExit;
+  const auto* p = reinterpret_cast<const uint8_t*>(&code);
+  for (int r = 1; r < session.size(); ++r) {
+    try {
+      net.send(r, kReleaseTag, Bytes(p, p + sizeof code));
+    } catch (const MpiError&) {
+    }
+  }
+  net.flush(clean ? 30.0 : 2.0);
+  if (clean) return;  // every rank finalizes
+  // MPI_Finalize would wait for the lost ranks, which may never come.
+  session.comm().skipFinalize = true;
+  std::fflush(stdout);
+  const size_t lost = faults.lostWorkers.size() + faults.missingSummaries.size();
+  if (session.recoveryEnabled()) {
+    // mpirun returns once every process has ended: at once if the lost ones died, never if
+    // one hangs (stopped, or cut off). A watchdog ends the job after a grace period then.
+    const double grace = 2 * run.report.info.faults.workerTimeoutSeconds + 5;
+    const bool watched = endLauncherIfStillRunningAfter(grace);
+    std::fprintf(stderr,
+                 "prt: %zu worker rank(s) were lost; the image and report are complete. mpirun "
+                 "returns once the lost processes have ended%s\n",
+                 lost,
+                 watched ? "; if one still hangs, the job is ended in a few seconds" : "");
+    return;
+  }
+  // Without --enable-recovery the job is still alive only because the lost ranks hang: end
+  // them, and the job, with MPI_Abort's code 0.
+  std::fprintf(stderr,
+               "prt: %zu worker rank(s) were lost; the image and report are complete. Ending the "
+               "job with MPI_Abort(0) so that mpirun does not wait for them\n",
+               lost);
+  std::fflush(stderr);
+  MPI_Abort(session.comm().comm, 0);
+  std::_Exit(0);
 }
 
 int runMpiWorker(MpiSession& session, const ParallelOptions& options) {
   PRT_CHECK(!session.isMaster());
   const int id = endpointOf(session.rank());
   try {
-    WorkerRank worker(session, options);
-    return worker.run();
+    MpiLink link(session.comm().comm);
+    WorkerFaultActions faults;
+    faults.crash = [&] { failAsInjected(*options.faults.begin(), id); };
+    faults.hang = faults.crash;
+    ParallelOptions mine = options;
+    // A slowdown list of the wrong length is the master's to report: it releases us.
+    if (mine.slowdowns.size() != static_cast<size_t>(session.workerCount())) mine.slowdowns.clear();
+    for (const FaultInjection& f : mine.faults) {
+      if (f.worker == id) {
+        faults.crash = [f, id] { failAsInjected(f, id); };
+        faults.hang = faults.crash;
+      }
+    }
+    const WorkerExit exit = runWorkerSide(link, id, mine, faults);
+    if (exit == WorkerExit::MasterLost) {
+      if (const auto code = link.release()) {
+        // Released before the run started (bad input on the master) or after it.
+        if (*code > 0) return *code;
+        if (*code == kReleaseExit) session.comm().skipFinalize = true;
+        return 0;
+      }
+      std::fprintf(stderr, "prt: %s: the master stopped answering; exiting\n",
+                   rankName(id).c_str());
+      session.comm().skipFinalize = true;
+      return 1;
+    }
+    const auto code = link.awaitRelease(link.now() + options.workerTimeoutSeconds + 30);
+    if (!code || *code != kReleaseFinalize) session.comm().skipFinalize = true;
+    return 0;
   } catch (const MpiError& e) {
-    session.abort(rankName(id) + ": " + describe(e) + "; aborting");
+    session.abort(rankName(id) + ": MPI failed: " + e.what() + "; aborting");
   } catch (const std::exception& e) {
     session.abort(rankName(id) + ": " + e.what() + "; aborting");
   }

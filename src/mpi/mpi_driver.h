@@ -1,49 +1,39 @@
 #pragma once
-// The MPI driver: the master and worker state machines (cluster/) as the ranks of an mpirun
-// job, the same way the local driver (drive/local_driver.h) runs them as threads — the same
-// encoded messages, event log, image assembly, report and worker effects (WorkerEngine), so a
-// run under MPI is checked against a local run and the serial render bit for bit.
+// The MPI driver: start-up and shutdown of a parallel render as the ranks of an mpirun job.
+// All policy — the master and worker loops, leases, heartbeats, reissue, checkpoints, the
+// report — is the driver kit's (drive/parallel_run.h), the same as the local driver's; this
+// driver only provides the transport (mpi_transport.h) and decides how the job ends.
 //
 //   rank 0        the master: sends the scene, runs the strategy, assembles the image
 //   rank r >= 1   worker r - 1: never reads the scene file; it gets the scene text from rank 0
 //
-// Protocol messages go rank to rank as their encoded bytes, worker-to-worker transfers
-// directly between the two worker ranks. After StopMsg each worker sends the master a
-// WorkerSummary (its events, rays and task count; see mpi/worker_summary.h for how its clock
-// is aligned with the master's), and the master builds the report.
-//
-// Faults: unlike the local driver, a lost worker is not replaced. When a worker that owes the
-// master an answer (Master::owesAnswer) stays silent for `workerTimeoutSeconds`, or MPI
-// reports an error talking to a rank, the master prints a message naming the rank and aborts
-// the job (MPI_Abort): the run fails, it never hangs. A worker process that dies is normally
-// noticed by mpirun first, which then ends the job itself.
+// Faults (see the README's "Faults"): a worker rank that dies, hangs or is cut off is lost
+// when its lease runs out, and the master finishes the image with the live ranks. For a rank
+// that dies to leave the job alive, run `mpirun --enable-recovery`; without it mpirun ends the
+// whole job, and the checkpoint (--checkpoint) keeps the finished pixels for --resume. After
+// a loss, no rank calls MPI_Finalize (it would wait for the lost one); without recovery the
+// master then ends the job with MPI_Abort(0) so that mpirun does not wait for a hung rank.
 // `--inject-fault W:PIXELS:crash|hang` acts on worker W (rank W + 1): crash ends the process
 // abruptly (exit code 3), hang stops it answering.
-
-#include <optional>
 
 #include "drive/parallel_run.h"
 #include "mpi/mpi_session.h"
 
 namespace prt {
 
-struct MpiRunRequest {
-  Scene scene;
-  RenderSettings settings;
-  ParallelOptions options;              // options.workers must be session.workerCount()
-  double masterSpeedIndexSeconds = 0;   // the serial machine's speed index, for MASU
-  std::optional<double> serialSeconds;  // for speed-up and ASU
-};
+using MpiRunRequest = RunRequest;
 
 // Rank 0. Throws InputError for invalid options, before anything is sent (the caller then
-// releases the workers with session.releaseWorkers). Once the run has started, a lost worker or
-// an MPI failure ends the job through session.abort() instead of returning.
-ParallelRun renderMpiMaster(MpiSession& session, const MpiRunRequest& request);
+// releases the workers with session.releaseWorkers), and RunFailed when the run cannot finish.
+ParallelRun renderMpiMaster(MpiSession& session, const RunRequest& request);
+
+// Rank 0, after the outputs are written: ends the workers and tells the session how to end.
+void finishMpiMaster(MpiSession& session, const ParallelRun& run);
 
 // Ranks >= 1: runs worker rank - 1 until the master stops or releases it, and returns the
 // process exit code (0 after a finished run; the master's code after a release). All ranks
 // parse the same command line, so `options` matches the master's; only the per-worker fields
-// (slowdown, faults), batchPixels, speedIndexKind and speedIndexDiscs are used here.
+// (slowdown, faults), batchPixels, speedIndexKind, speedIndexDiscs and the timeout are used.
 int runMpiWorker(MpiSession& session, const ParallelOptions& options);
 
 }  // namespace prt

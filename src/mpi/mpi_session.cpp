@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <stdexcept>
+#include <string>
 
 #include "mpi/mpi_comm.h"
 #include "mpi/mpi_transport.h"
@@ -39,8 +40,25 @@ MpiSession::~MpiSession() {
   int finalized = 0;
   MPI_Finalized(&finalized);
   if (finalized) return;
+  if (comm_->skipFinalize) {
+    std::fflush(stdout);
+    std::fflush(stderr);
+    return;  // the process exits without MPI_Finalize; mpirun accepts it under recovery
+  }
   if (comm_->comm != MPI_COMM_NULL) MPI_Comm_free(&comm_->comm);
   MPI_Finalize();
+}
+
+int MpiSession::exitCode(int code) const {
+  if (!comm_->skipFinalize) return code;
+  std::fflush(stdout);
+  std::fflush(stderr);
+  std::_Exit(code);
+}
+
+bool MpiSession::recoveryEnabled() const {
+  const char* v = std::getenv("OMPI_MCA_orte_enable_recovery");
+  return v != nullptr && std::string(v) != "0" && std::string(v) != "false";
 }
 
 void MpiSession::releaseWorkers(int exitCode) {

@@ -6,6 +6,8 @@
 // Errors: the session's communicator returns MPI errors instead of aborting inside MPI, so the
 // driver can say which rank failed; a failed run then ends every rank with abort(), which
 // prints the reason and calls MPI_Abort — no rank is ever left waiting.
+// Ending: MPI_Finalize in the destructor, unless a rank was lost (it would wait for it): then
+// the process exits without it, as Open MPI allows under --enable-recovery.
 // Threading: MPI_THREAD_FUNNELED. Only the thread that created the session may use it or
 // call the MPI driver; other threads (e.g. a multi-threaded serial render) must not call MPI.
 // This header does not include <mpi.h>: nothing outside src/mpi sees MPI.
@@ -38,6 +40,13 @@ class MpiSession {
 
   // Prints "prt: error: <message>" to stderr and ends every rank of the job with `exitCode`.
   [[noreturn]] void abort(const std::string& message, int exitCode = 1) const;
+
+  // The process's exit code: returns `code`, or ends the process with it at once when a rank
+  // was lost (MPI_Finalize would wait for it).
+  int exitCode(int code) const;
+
+  // True under `mpirun --enable-recovery`: a rank that dies does not end the job.
+  bool recoveryEnabled() const;
 
   MpiComm& comm() const { return *comm_; }  // for the driver in src/mpi
 

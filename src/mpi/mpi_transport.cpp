@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <climits>
+#include <cstring>
 #include <thread>
 
 namespace prt::mpi_detail {
@@ -89,6 +90,62 @@ std::optional<Packet> MpiTransport::poll() {
   check(MPI_Mrecv(packet.bytes.data(), count, MPI_BYTE, &message, MPI_STATUS_IGNORE), "MPI_Mrecv",
         status.MPI_SOURCE);
   return packet;
+}
+
+MpiLink::MpiLink(MPI_Comm comm) : net_(comm), start_(MPI_Wtime()) {}
+
+double MpiLink::now() const {
+  return MPI_Wtime() - start_;
+}
+
+void MpiLink::send(int to, Channel channel, Bytes bytes) {
+  try {
+    net_.send(rankOf(to), channel == Channel::Summary ? kSummaryTag : kMessageTag,
+              std::move(bytes));
+  } catch (const MpiError&) {
+    // The peer is gone or its link is down: its lease will run out.
+  }
+}
+
+Incoming MpiLink::poll(double deadline) {
+  Incoming in;
+  for (;;) {
+    std::optional<Packet> p;
+    try {
+      p = net_.poll();
+    } catch (const MpiError& e) {
+      if (e.rank() < 0) throw;
+      // A failed request to one peer: treat it as that peer's loss.
+      in.kind = Incoming::Kind::PeerLost;
+      in.from = endpointOf(e.rank());
+      return in;
+    }
+    if (p) {
+      in.from = endpointOf(p->rank);
+      if (p->tag == kReleaseTag && p->rank == 0) {
+        int32_t code = 1;
+        if (p->bytes.size() == sizeof code) std::memcpy(&code, p->bytes.data(), sizeof code);
+        release_ = code;
+        in.kind = Incoming::Kind::PeerLost;
+        return in;
+      }
+      if (p->tag != kMessageTag && p->tag != kSummaryTag) continue;  // not ours: dropped
+      in.kind = Incoming::Kind::Packet;
+      in.channel = p->tag == kSummaryTag ? Channel::Summary : Channel::Protocol;
+      in.bytes = std::move(p->bytes);
+      return in;
+    }
+    if (now() >= deadline) return in;
+    pollPause();
+  }
+}
+
+std::optional<int32_t> MpiLink::awaitRelease(double deadline) {
+  while (!release_) {
+    const Incoming in = poll(deadline);
+    if (in.kind == Incoming::Kind::Timeout) break;
+  }
+  return release_;
 }
 
 bool MpiTransport::flush(double timeoutSeconds) {

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "cluster/messages.h"
+#include "drive/transport.h"
 
 namespace prt::mpi_detail {
 
@@ -24,7 +25,14 @@ namespace prt::mpi_detail {
 enum Tag : int {
   kMessageTag = 1,  // an encoded protocol Message (cluster/messages.h)
   kSummaryTag = 2,  // worker -> master after StopMsg: an encoded WorkerSummary
-  kReleaseTag = 3,  // master -> worker instead of the scene: exit with this int32 code
+  kReleaseTag = 3,  // master -> worker: the job's end; an int32 (see ReleaseCode)
+};
+
+// What a release tells a worker rank to do.
+enum ReleaseCode : int32_t {
+  kReleaseFinalize = 0,  // the run is over and every rank is there: MPI_Finalize, exit 0
+  kReleaseExit = -1,     // the run is over but a rank was lost: exit 0 without MPI_Finalize
+  // > 0: the master refused the run (bad input): exit with this code
 };
 
 // A protocol endpoint (worker index, or kMaster = -1) and its rank: rank 0 is the master.
@@ -75,6 +83,29 @@ class MpiTransport {
   std::vector<MPI_Request> requests_;  // parallel to buffers_ and peers_
   std::vector<Bytes> buffers_;
   std::vector<int> peers_;
+};
+
+// The driver kit's Transport over MPI ranks: protocol messages and summaries as tagged byte
+// buffers (endpoint e is rank e + 1). Sends never block and never throw for a lost peer (a
+// send to a dead rank may even succeed: loss is found by leases); polls sleep briefly between
+// probes. A release from the master arrives as the master's loss (the loop ends) and is kept
+// for the caller in release().
+class MpiLink final : public Transport {
+ public:
+  explicit MpiLink(MPI_Comm comm);
+  void send(int to, Channel channel, Bytes bytes) override;
+  Incoming poll(double deadline) override;
+  double now() const override;
+  bool flush(double timeoutSeconds) override { return net_.flush(timeoutSeconds); }
+  std::optional<int32_t> release() const { return release_; }
+  // Waits until `deadline` for a release from the master (after the run).
+  std::optional<int32_t> awaitRelease(double deadline);
+  MpiTransport& raw() { return net_; }
+
+ private:
+  MpiTransport net_;
+  std::optional<int32_t> release_;
+  double start_;
 };
 
 // The idle wait of every polling loop: short enough not to add latency that matters next to

@@ -54,7 +54,7 @@ class Simulation {
   }
 
   SimulatedRun run() {
-    send(kMaster, master_.start());
+    send(kMaster, master_.start(now_));
     while (!finished_) {
       if (queue_.empty()) {
         throw std::runtime_error("simulation stalled with " +
@@ -126,7 +126,7 @@ class Simulation {
     const Mail mail = std::move(masterInbox_.front());
     masterInbox_.pop_front();
     logReceived(kMaster, mail);
-    masterOut_ = master_.onMessage(mail.from, mail.message);
+    masterOut_ = master_.onMessage(mail.from, mail.message, now_);
     masterBusy_ = true;
     SimEvent done;
     done.time = now_ + options_.network.masterServiceSeconds;

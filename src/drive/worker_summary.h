@@ -1,12 +1,12 @@
 #pragma once
-// WorkerSummary: what an MPI worker tells the master after StopMsg so the report can be built
-// on rank 0 exactly as the local driver builds it — the worker's event log, its ray count and
-// the number of task messages it received. Sent once, under its own MPI tag, outside the
-// master-worker protocol (the protocol state machines never see it).
+// WorkerSummary: what a worker tells the master after StopMsg so the report can be built on
+// the master the same way whatever the transport — the worker's event log, its ray count and
+// the number of task messages it received. Sent once, on the transport's summary channel,
+// outside the master-worker protocol (the protocol state machines never see it).
 //
 // Clocks: ranks may run on different machines whose clocks are not synchronised, so a worker
-// times its events from its own receipt of the scene (t = 0, on its steady clock) and the
-// master places them on its own timeline with workerClockOffset(). The scene send and the
+// times its events on its own steady clock and the master places them on its own timeline
+// with workerClockOffset(), taking the worker's receipt of the scene as its reference. The scene send and the
 // speed-index reply form one round trip: the master sends the scene at M0 and receives the
 // speed index at M1 (master clock); the worker sends the speed index S seconds after receiving
 // the scene (worker clock). Assuming the two legs take equally long, the scene arrived at
@@ -36,7 +36,8 @@ inline WorkerSummary decodeSummary(const Bytes& bytes) {
 }
 
 // Seconds to add to `worker`'s event times to put them on the master's clock, from the scene
-// and speed-index messages in both logs (see above). Without them, the master's scene send.
+// and speed-index messages in both logs (see above). Without a reply, the scene is taken to
+// arrive as it was sent.
 double workerClockOffset(const std::vector<Event>& masterEvents,
                          const std::vector<Event>& workerEvents, int worker);
 

@@ -1,4 +1,4 @@
-#include "mpi/worker_summary.h"
+#include "drive/worker_summary.h"
 
 #include <gtest/gtest.h>
 
@@ -61,6 +61,11 @@ TEST(WorkerClockOffsetTest, SplitsTheRoundTripEvenly) {
   // Another worker's messages do not count; without a reply the scene send is the offset.
   EXPECT_DOUBLE_EQ(workerClockOffset(master, {}, 2), 1.0);
   EXPECT_DOUBLE_EQ(workerClockOffset(master, worker, 3), 0.0);
+  // A worker whose clock started 5 s before the scene reached it: the same placement.
+  const std::vector<Event> late = {
+      {EventKind::MessageReceived, 2, 5.0, 5.0, 0, 100, kMaster, "Scene"},
+      {EventKind::MessageSent, 2, 5.4, 5.4, 0, 9, kMaster, "SpeedIndex"}};
+  EXPECT_DOUBLE_EQ(workerClockOffset(master, late, 2) + 5.0, 1.1);
 }
 
 TEST(WorkerClockOffsetTest, NeverPlacesTheReceiptBeforeTheSend) {

@@ -1,4 +1,4 @@
-#include "mpi/worker_summary.h"
+#include "drive/worker_summary.h"
 
 #include <algorithm>
 #include <stdexcept>
@@ -65,7 +65,7 @@ WorkerSummary decodeSummary(const uint8_t* data, size_t size) {
 
 double workerClockOffset(const std::vector<Event>& masterEvents,
                          const std::vector<Event>& workerEvents, int worker) {
-  double sceneSent = -1, speedIndexReceived = -1, speedIndexSent = -1;
+  double sceneSent = -1, speedIndexReceived = -1;
   for (const Event& e : masterEvents) {
     if (e.kind == EventKind::MessageSent && e.peer == worker && e.label == "Scene" &&
         sceneSent < 0) {
@@ -75,16 +75,22 @@ double workerClockOffset(const std::vector<Event>& masterEvents,
       speedIndexReceived = e.start;
     }
   }
+  // The worker's clock may start anywhere: its receipt of the scene is its time 0 here.
+  double sceneReceived = -1, speedIndexSent = -1;
   for (const Event& e : workerEvents) {
-    if (e.kind == EventKind::MessageSent && e.peer == kMaster && e.label == "SpeedIndex") {
+    if (e.kind == EventKind::MessageReceived && e.peer == kMaster && e.label == "Scene" &&
+        sceneReceived < 0) {
+      sceneReceived = e.start;
+    } else if (e.kind == EventKind::MessageSent && e.peer == kMaster &&
+               e.label == "SpeedIndex" && speedIndexSent < 0) {
       speedIndexSent = e.start;
-      break;
     }
   }
-  if (sceneSent < 0) return 0;
-  if (speedIndexReceived < 0 || speedIndexSent < 0) return sceneSent;
-  const double oneWay = (speedIndexReceived - sceneSent - speedIndexSent) / 2;
-  return sceneSent + std::max(0.0, oneWay);
+  const double origin = sceneReceived < 0 ? 0.0 : sceneReceived;
+  if (sceneSent < 0) return -origin;
+  if (speedIndexReceived < 0 || speedIndexSent < 0) return sceneSent - origin;
+  const double oneWay = (speedIndexReceived - sceneSent - (speedIndexSent - origin)) / 2;
+  return sceneSent + std::max(0.0, oneWay) - origin;
 }
 
 }  // namespace prt

@@ -1,0 +1,114 @@
+#include "cli/checkpointing.h"
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+
+#include "cli/progress_bar.h"
+#include "core/input_error.h"
+#include "core/stop_signals.h"
+#include "image/image_io.h"
+#include "trace/renderer.h"
+
+namespace prt::cli {
+
+std::optional<Checkpoint> resumeCheckpoint(const RenderOptions& o, const Scene& scene,
+                                           const RenderSettings& settings) {
+  if (o.checkpointPath.empty()) {
+    if (o.resume) throw InputError("--resume needs --checkpoint FILE: the checkpoint to resume");
+    return std::nullopt;
+  }
+  const CheckpointKey key = checkpointKey(scene, settings);
+  if (!o.resume) {
+    std::error_code ec;
+    if (std::filesystem::exists(o.checkpointPath, ec)) {
+      throw InputError("checkpoint '" + o.checkpointPath +
+                       "' already exists: add --resume to continue from it, or remove it to "
+                       "render from the start");
+    }
+    return std::nullopt;
+  }
+  std::optional<Checkpoint> c = readCheckpoint(o.checkpointPath, key);
+  if (!c && !o.quiet) {
+    std::fprintf(stderr, "prt: no checkpoint at '%s' yet; rendering from the start\n",
+                 o.checkpointPath.c_str());
+  }
+  return c;
+}
+
+std::function<int()> stopSignalsFor(const RenderOptions& o) {
+  if (o.checkpointPath.empty()) return nullptr;
+  installStopSignals();
+  return [] { return pendingStopSignal(); };
+}
+
+int renderSerialWithCheckpoint(const RenderOptions& o, const Scene& scene,
+                               const RenderSettings& settings) {
+  if (!o.costMapPath.empty()) {
+    throw InputError("--cost-map times a whole render; it cannot be combined with --checkpoint");
+  }
+  const CheckpointKey key = checkpointKey(scene, settings);
+  std::optional<Checkpoint> resumed = resumeCheckpoint(o, scene, settings);
+  const std::function<int()> interrupted = stopSignalsFor(o);
+  const World world(scene);
+  const Renderer renderer(world, settings);
+  const uint64_t pixels = renderer.pixelCount();
+  Image image = resumed ? resumed->image : Image(scene.image.width, scene.image.height);
+  TaskSet done = resumed ? resumed->done : TaskSet{};
+  const std::vector<int16_t> noOwners;
+  writeCheckpoint(o.checkpointPath, key, done, image, noOwners);  // the path works: go
+
+  std::vector<bool> isDone(pixels, false);
+  done.forEach([&](uint64_t p) { isDone[p] = true; });
+  const uint64_t resumedCount = done.size();
+  using Clock = std::chrono::steady_clock;
+  const auto start = Clock::now();
+  auto lastSave = start;
+  uint64_t rays = 0;
+  // Pieces of a few rows: small enough to save often, large enough to keep every core busy.
+  const uint64_t piece = std::max<uint64_t>(4096, 4 * static_cast<uint64_t>(scene.image.width));
+  ProgressBar bar("px", !o.quiet);
+  std::vector<Color> colors;
+  uint64_t next = 0;
+  while (next < pixels) {
+    if (const int sig = interrupted ? interrupted() : 0) {
+      writeCheckpoint(o.checkpointPath, key, done, image, noOwners);
+      std::fprintf(stderr,
+                   "prt: interrupted by signal %d; %llu of %llu pixels are saved in '%s': run the "
+                   "same command with --resume to render the rest\n",
+                   sig, static_cast<unsigned long long>(done.size()),
+                   static_cast<unsigned long long>(pixels), o.checkpointPath.c_str());
+      return 128 + sig;
+    }
+    TaskSet todo;
+    while (next < pixels && todo.size() < piece) {
+      if (!isDone[next]) todo.append(TaskRun{next, 1, 1});
+      ++next;
+    }
+    if (todo.empty()) continue;
+    rays += renderTasks(renderer, todo, o.threads, colors);
+    size_t i = 0;
+    todo.forEach([&](uint64_t p) { image.set(p, colors[i++]); });
+    done.append(todo);
+    bar.update(done.size(), pixels);
+    const auto now = Clock::now();
+    if (std::chrono::duration<double>(now - lastSave).count() >= o.checkpointEverySeconds &&
+        next < pixels) {
+      writeCheckpoint(o.checkpointPath, key, done, image, noOwners);
+      lastSave = now;
+    }
+  }
+  const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  writeImage(image, scene.image.output);
+  removeCheckpoint(o.checkpointPath);
+  if (!o.quiet) {
+    std::printf("%s: %dx%d, %d spp, DRT %d, %.3f s, %llu rays; %llu pixels from the checkpoint\n",
+                scene.image.output.c_str(), scene.image.width, scene.image.height,
+                settings.samplesPerPixel, settings.drtRate, seconds,
+                static_cast<unsigned long long>(rays),
+                static_cast<unsigned long long>(resumedCount));
+  }
+  return 0;
+}
+
+}  // namespace prt::cli

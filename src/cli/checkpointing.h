@@ -1,0 +1,30 @@
+#pragma once
+// --checkpoint and --resume on the command line, for serial and parallel renders.
+
+#include <functional>
+#include <optional>
+
+#include "cli/render_options.h"
+#include "drive/checkpoint.h"
+#include "trace/render_settings.h"
+#include "trace/scene.h"
+
+namespace prt::cli {
+
+// The checkpoint to start from: nothing without --resume (an existing checkpoint file is then
+// refused, so an earlier run's progress is never overwritten by mistake), or when the file
+// does not exist yet (a warning says so). Throws InputError for a damaged file, one of
+// another render, or --resume without --checkpoint.
+std::optional<Checkpoint> resumeCheckpoint(const RenderOptions& o, const Scene& scene,
+                                           const RenderSettings& settings);
+
+// With a checkpoint, stop signals are caught so the run can save its work first; returns the
+// poll for them (null without a checkpoint: a signal then ends the run at once).
+std::function<int()> stopSignalsFor(const RenderOptions& o);
+
+// A serial render with --checkpoint: renders what the checkpoint lacks, in pieces, writing the
+// checkpoint every --checkpoint-every seconds and when a stop signal arrives.
+int renderSerialWithCheckpoint(const RenderOptions& o, const Scene& scene,
+                               const RenderSettings& settings);
+
+}  // namespace prt::cli

@@ -1,0 +1,147 @@
+#include "cluster/ledger.h"
+
+#include <algorithm>
+#include <limits>
+
+#include "core/check.h"
+
+namespace prt {
+
+Ledger::Ledger(int workerCount, uint64_t taskCount)
+    : workers_(static_cast<size_t>(workerCount)), liveCount_(workerCount), done_(taskCount, false) {
+  PRT_CHECK(workerCount >= 1);
+}
+
+size_t Ledger::index(int worker) const {
+  PRT_CHECK(worker >= 0 && worker < workerCount());
+  return static_cast<size_t>(worker);
+}
+
+void Ledger::seedDone(const TaskSet& done) {
+  done.forEach([&](uint64_t t) {
+    PRT_CHECK(t < taskCount());
+    if (!done_[t]) {
+      done_[t] = true;
+      ++doneCount_;
+    }
+  });
+}
+
+void Ledger::startLeases(double now) {
+  for (Holding& h : workers_) h.lastHeard = now;
+}
+
+void Ledger::heard(int worker, double now) {
+  Holding& h = workers_[index(worker)];
+  h.lastHeard = std::max(h.lastHeard, now);
+}
+
+double Ledger::silentSeconds(int worker, double now) const {
+  return now - workers_[index(worker)].lastHeard;
+}
+
+std::vector<int> Ledger::expired(double now, double leaseSeconds) const {
+  std::vector<int> out;
+  for (int w = 0; w < workerCount(); ++w) {
+    const Holding& h = workers_[static_cast<size_t>(w)];
+    if (h.live && now - h.lastHeard > leaseSeconds) out.push_back(w);
+  }
+  return out;
+}
+
+double Ledger::nextExpiry(double leaseSeconds) const {
+  double next = std::numeric_limits<double>::infinity();
+  for (const Holding& h : workers_) {
+    if (h.live) next = std::min(next, h.lastHeard + leaseSeconds);
+  }
+  return next;
+}
+
+void Ledger::gave(int worker, const TaskSet& tasks) {
+  workers_[index(worker)].given.append(tasks);
+}
+
+void Ledger::movedOut(int from, const TaskSet& tasks) {
+  workers_[index(from)].moved.append(tasks);
+}
+
+TaskSet Ledger::accept(int worker, const TaskSet& tasks) {
+  Holding& h = workers_[index(worker)];
+  h.returned += tasks.size();
+  TaskSet fresh;
+  tasks.forEach([&](uint64_t t) {
+    PRT_CHECK(t < taskCount());
+    if (done_[t]) {
+      ++duplicates_;
+      return;
+    }
+    done_[t] = true;
+    ++doneCount_;
+    fresh.append(TaskRun{t, 1, 1});
+  });
+  return fresh;
+}
+
+bool Ledger::holdsWork(int worker) const {
+  const Holding& h = workers_[index(worker)];
+  return h.given.size() > h.moved.size() + h.returned;
+}
+
+TaskSet Ledger::unfinished(int worker) const {
+  return unfinishedTail(worker, std::numeric_limits<uint64_t>::max());
+}
+
+TaskSet Ledger::unfinishedTail(int worker, uint64_t count) const {
+  const Holding& h = workers_[index(worker)];
+  TaskSet out;
+  if (count == 0) return out;
+  // What it moved out is not its own any more. Moved tasks are few next to the image, so a
+  // sorted copy keeps this cheap without a per-pixel table.
+  std::vector<uint64_t> moved = h.moved.toVector();
+  std::sort(moved.begin(), moved.end());
+  auto keeps = [&](uint64_t t) {
+    return !done_[t] && !std::binary_search(moved.begin(), moved.end(), t);
+  };
+  if (count >= h.given.size()) {
+    h.given.forEach([&](uint64_t t) {
+      if (keeps(t)) out.append(TaskRun{t, 1, 1});
+    });
+    return out;
+  }
+  // From the back: walk the runs in reverse and keep the last `count` tasks still owed.
+  std::vector<uint64_t> tail;
+  const auto& runs = h.given.runs();
+  for (auto r = runs.rbegin(); r != runs.rend() && tail.size() < count; ++r) {
+    for (uint64_t i = r->count; i-- > 0 && tail.size() < count;) {
+      const uint64_t t = r->at(i);
+      if (keeps(t)) tail.push_back(t);
+    }
+  }
+  for (auto t = tail.rbegin(); t != tail.rend(); ++t) out.append(TaskRun{*t, 1, 1});
+  return out;
+}
+
+TaskSet Ledger::markLost(int worker, double now, const std::string& reason) {
+  Holding& h = workers_[index(worker)];
+  PRT_CHECK(h.live);
+  h.live = false;
+  --liveCount_;
+  TaskSet left = unfinished(worker);
+  reissued_ += left.size();
+  losses_.push_back(LostWorker{worker, now, reason, left.size()});
+  return left;
+}
+
+TaskSet Ledger::doneSet() const {
+  TaskSet out;
+  for (uint64_t t = 0; t < taskCount(); ++t) {
+    if (!done_[t]) continue;
+    uint64_t end = t;
+    while (end < taskCount() && done_[end]) ++end;
+    out.append(TaskRun{t, end - t, 1});
+    t = end;
+  }
+  return out;
+}
+
+}  // namespace prt

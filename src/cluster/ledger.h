@@ -1,0 +1,98 @@
+#pragma once
+// Ledger: the master's truth about the work — which worker holds which tasks, which tasks are
+// done, when each worker was last heard from (its lease), and which workers were lost, when
+// and why. Pure bookkeeping: no I/O, no clock (times come in as seconds on the driver's
+// clock), so it is unit-tested with scripted losses, expiries and duplicates.
+//
+// Tasks here are pixels. A task may be held by several workers at once (a lost worker's tasks
+// reissued while it is in fact only slow; an endgame duplicate): the first result for a pixel
+// is accepted, every later copy is dropped. A lost worker stays lost, but a late result from
+// it is still accepted where it is the first.
+// Not thread-safe: one master owns one ledger.
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "core/task_set.h"
+
+namespace prt {
+
+struct LostWorker {
+  int worker = 0;
+  double atSeconds = 0;     // when the master declared it lost
+  std::string reason;       // "connection dropped", "silent for 5.0 s", ...
+  uint64_t unfinished = 0;  // tasks it held that were not done, handed back for reissue
+};
+
+class Ledger {
+ public:
+  Ledger(int workerCount, uint64_t taskCount);
+
+  int workerCount() const { return static_cast<int>(workers_.size()); }
+  uint64_t taskCount() const { return done_.size(); }
+
+  // Tasks finished before this run started (a resumed checkpoint): never handed out.
+  void seedDone(const TaskSet& done);
+
+  // Leases. Every message from a worker renews its lease; `start` begins every lease.
+  void startLeases(double now);
+  void heard(int worker, double now);
+  double silentSeconds(int worker, double now) const;
+  // Live workers silent for longer than `leaseSeconds`, in worker order.
+  std::vector<int> expired(double now, double leaseSeconds) const;
+  // When the next lease runs out (for a driver's poll deadline); +inf when none is live.
+  double nextExpiry(double leaseSeconds) const;
+
+  // Holdings.
+  void gave(int worker, const TaskSet& tasks);
+  void movedOut(int from, const TaskSet& tasks);  // `from` sent them to a peer (diffusion)
+  // Records results from `worker` (live or lost) and returns the tasks of `tasks` that were
+  // not done before, in order; a task already done is dropped.
+  TaskSet accept(int worker, const TaskSet& tasks);
+  // True while `worker` holds tasks it has not returned (whether or not another worker has
+  // since finished them).
+  bool holdsWork(int worker) const;
+  // What `worker` holds that is not done yet, in the order it received them.
+  TaskSet unfinished(int worker) const;
+  // Holdings of `worker` not done yet, taken from the back of what it received (the part it
+  // renders last), at most `count` tasks.
+  TaskSet unfinishedTail(int worker, uint64_t count) const;
+
+  // Losses.
+  bool isLive(int worker) const { return workers_[index(worker)].live; }
+  int liveCount() const { return liveCount_; }
+  // Marks `worker` lost and returns its unfinished tasks (also counted as reissued).
+  TaskSet markLost(int worker, double now, const std::string& reason);
+  // Tasks that reached a worker already lost (a transfer in flight): counted as reissued.
+  void reissuedLate(const TaskSet& tasks) { reissued_ += tasks.size(); }
+  const std::vector<LostWorker>& losses() const { return losses_; }
+  uint64_t reissuedTasks() const { return reissued_; }
+
+  // Completion.
+  bool isDone(uint64_t task) const { return done_[task]; }
+  uint64_t doneCount() const { return doneCount_; }
+  bool complete() const { return doneCount_ == taskCount(); }
+  TaskSet doneSet() const;  // every task done, ascending
+  uint64_t duplicates() const { return duplicates_; }  // result copies dropped
+
+ private:
+  struct Holding {
+    bool live = true;
+    double lastHeard = 0;
+    TaskSet given;     // every task it received, in order (assignments, transfers in)
+    TaskSet moved;     // tasks it sent to peers
+    uint64_t returned = 0;  // tasks it returned results for
+  };
+  size_t index(int worker) const;
+
+  std::vector<Holding> workers_;
+  int liveCount_;
+  std::vector<bool> done_;
+  uint64_t doneCount_ = 0;
+  uint64_t reissued_ = 0;
+  uint64_t duplicates_ = 0;
+  std::vector<LostWorker> losses_;
+};
+
+}  // namespace prt

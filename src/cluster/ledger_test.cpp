@@ -1,0 +1,79 @@
+// The ledger alone, with scripted holdings, losses, lease expiries and duplicates: no
+// transport, no clock.
+
+#include "cluster/ledger.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace prt {
+namespace {
+
+TEST(LedgerTest, ResultsAreAcceptedOnceAndDuplicatesCounted) {
+  Ledger ledger(2, 10);
+  ledger.gave(0, TaskSet::range(0, 6));
+  ledger.gave(1, TaskSet::range(4, 6));  // 4 and 5 held twice (an endgame copy)
+  EXPECT_EQ(ledger.accept(1, TaskSet::range(4, 3)), TaskSet::range(4, 3));
+  EXPECT_EQ(ledger.accept(0, TaskSet::range(0, 6)), TaskSet::range(0, 4));
+  EXPECT_EQ(ledger.duplicates(), 2u);
+  EXPECT_EQ(ledger.doneCount(), 7u);
+  EXPECT_FALSE(ledger.holdsWork(0));
+  EXPECT_TRUE(ledger.holdsWork(1));
+  EXPECT_EQ(ledger.unfinished(1), TaskSet::range(7, 3));
+  EXPECT_FALSE(ledger.complete());
+  ledger.accept(1, TaskSet::range(7, 3));
+  EXPECT_TRUE(ledger.complete());
+  EXPECT_EQ(ledger.doneSet(), TaskSet::range(0, 10));
+}
+
+TEST(LedgerTest, ALostWorkersUnfinishedTasksLeaveOutWhatItMovedAndWhatIsDone) {
+  Ledger ledger(3, 20);
+  ledger.gave(0, TaskSet::range(0, 10));
+  ledger.movedOut(0, TaskSet::range(7, 3));  // diffusion: 7..9 went to worker 2
+  ledger.gave(2, TaskSet::range(7, 3));
+  ledger.accept(0, TaskSet::range(0, 2));
+  ledger.accept(1, TaskSet::range(3, 1));  // someone else finished 3 (a reissue raced)
+  const TaskSet left = ledger.markLost(0, 4.5, "connection dropped");
+  EXPECT_EQ(left.toVector(), (std::vector<uint64_t>{2, 4, 5, 6}));
+  EXPECT_FALSE(ledger.isLive(0));
+  EXPECT_EQ(ledger.liveCount(), 2);
+  ASSERT_EQ(ledger.losses().size(), 1u);
+  EXPECT_EQ(ledger.losses()[0].reason, "connection dropped");
+  EXPECT_EQ(ledger.losses()[0].atSeconds, 4.5);
+  EXPECT_EQ(ledger.losses()[0].unfinished, 4u);
+  EXPECT_EQ(ledger.reissuedTasks(), 4u);
+  // A late result from the lost worker still counts where it is the first.
+  EXPECT_EQ(ledger.accept(0, TaskSet::range(2, 2)), TaskSet::range(2, 1));
+}
+
+TEST(LedgerTest, LeasesExpireOnlyForLiveSilentWorkers) {
+  Ledger ledger(3, 5);
+  ledger.startLeases(10.0);
+  EXPECT_TRUE(ledger.expired(12.0, 2.0).empty());  // exactly the lease: not yet
+  ledger.heard(1, 11.5);
+  EXPECT_EQ(ledger.expired(12.5, 2.0), (std::vector<int>{0, 2}));
+  EXPECT_DOUBLE_EQ(ledger.nextExpiry(2.0), 12.0);
+  ledger.markLost(0, 12.5, "silent");
+  EXPECT_EQ(ledger.expired(12.5, 2.0), (std::vector<int>{2}));
+  ledger.heard(2, 11.0);  // an old message delivered late never moves the lease back
+  ledger.heard(2, 12.6);
+  EXPECT_DOUBLE_EQ(ledger.silentSeconds(2, 13.0), 13.0 - 12.6);
+  ledger.markLost(1, 14, "silent");
+  ledger.markLost(2, 14, "silent");
+  EXPECT_TRUE(std::isinf(ledger.nextExpiry(2.0)));
+}
+
+TEST(LedgerTest, SeededTasksAreDoneAndTheTailIsTakenFromTheBack) {
+  Ledger ledger(1, 12);
+  ledger.seedDone(TaskSet::range(0, 4));
+  EXPECT_EQ(ledger.doneCount(), 4u);
+  EXPECT_EQ(ledger.accept(0, TaskSet::range(2, 4)), TaskSet::range(4, 2));
+  ledger.gave(0, TaskSet::range(6, 6));
+  ledger.accept(0, TaskSet::range(11, 1));
+  EXPECT_EQ(ledger.unfinishedTail(0, 2), TaskSet::range(9, 2));
+  EXPECT_EQ(ledger.unfinishedTail(0, 100), TaskSet::range(6, 5));
+}
+
+}  // namespace
+}  // namespace prt

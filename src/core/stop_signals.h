@@ -1,0 +1,13 @@
+#pragma once
+// Stop signals for long runs that can save their work: after installStopSignals(), SIGINT,
+// SIGTERM and SIGHUP only set a flag, which the run polls (pendingStopSignal) to write a
+// checkpoint and end with exit code 128 + the signal. A second such signal ends the process
+// at once, as if no handler were installed. Async-signal-safe; the flag may be read from any
+// thread.
+
+namespace prt {
+
+void installStopSignals();
+int pendingStopSignal();  // 0 while none has arrived
+
+}  // namespace prt

@@ -1,0 +1,149 @@
+#include "drive/checkpoint.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <stdexcept>
+
+#include "cluster/byte_codec.h"
+#include "core/input_error.h"
+#include "image/atomic_file.h"
+#include "scene/scene_file.h"
+
+namespace prt {
+namespace {
+
+constexpr char kMagic[8] = {'P', 'R', 'T', 'C', 'K', 'P', 'T', '1'};
+
+uint64_t fnv1a(const uint8_t* data, size_t size, uint64_t hash = 14695981039346656037ull) {
+  for (size_t i = 0; i < size; ++i) {
+    hash ^= data[i];
+    hash *= 1099511628211ull;
+  }
+  return hash;
+}
+
+std::string hex(uint64_t v) {
+  char text[20];
+  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(v));
+  return text;
+}
+
+}  // namespace
+
+CheckpointKey checkpointKey(const Scene& scene, const RenderSettings& settings) {
+  Scene keyed = scene;
+  keyed.image.output.clear();  // the same render may be written anywhere
+  const std::string text = writeScene(keyed);
+  uint64_t hash = fnv1a(reinterpret_cast<const uint8_t*>(text.data()), text.size());
+  const int32_t numbers[] = {scene.image.width, scene.image.height, settings.samplesPerPixel,
+                             settings.drtRate};
+  const uint64_t sceneHash = hash;
+  hash = fnv1a(reinterpret_cast<const uint8_t*>(numbers), sizeof numbers, hash);
+  CheckpointKey key;
+  key.hash = hash;
+  key.width = scene.image.width;
+  key.height = scene.image.height;
+  key.description = std::to_string(scene.image.width) + "x" +
+                    std::to_string(scene.image.height) + ", " +
+                    std::to_string(settings.samplesPerPixel) + " spp, DRT " +
+                    std::to_string(settings.drtRate) + ", scene " + hex(sceneHash);
+  return key;
+}
+
+void writeCheckpoint(const std::string& path, const CheckpointKey& key, const TaskSet& done,
+                     const Image& image, const std::vector<int16_t>& owner) {
+  ByteWriter w;
+  w.raw(kMagic, sizeof kMagic);
+  w.pod(key.hash);
+  w.text(key.description);
+  w.pod(static_cast<int32_t>(key.width));
+  w.pod(static_cast<int32_t>(key.height));
+  w.pod(static_cast<uint64_t>(done.runs().size()));
+  for (const TaskRun& r : done.runs()) {
+    w.pod(r.first);
+    w.pod(r.count);
+    w.pod(r.stride);
+  }
+  const auto data = image.data();
+  done.forEach([&](uint64_t p) { w.raw(&data[3 * p], 3 * sizeof(float)); });
+  done.forEach([&](uint64_t p) {
+    const int16_t o = p < owner.size() ? owner[p] : int16_t{-1};
+    w.pod(o);
+  });
+  w.pod(fnv1a(w.out.data(), w.out.size()));
+  writeFileAtomically(path, std::string_view(reinterpret_cast<const char*>(w.out.data()),
+                                             w.out.size()));
+}
+
+std::optional<Checkpoint> readCheckpoint(const std::string& path, const CheckpointKey& key) {
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) return std::nullopt;
+  if (!std::filesystem::is_regular_file(path, ec)) {
+    throw InputError("checkpoint '" + path + "' is not a regular file");
+  }
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError("cannot read checkpoint '" + path + "'");
+  const std::vector<uint8_t> bytes((std::istreambuf_iterator<char>(in)),
+                                   std::istreambuf_iterator<char>());
+  auto damaged = [&](const std::string& why) {
+    return InputError("checkpoint '" + path + "' is damaged (" + why +
+                      "); remove it to render from the start");
+  };
+  if (bytes.size() < sizeof kMagic + 8 ||
+      !std::equal(std::begin(kMagic), std::end(kMagic), bytes.begin())) {
+    throw InputError("'" + path + "' is not a PRT checkpoint");
+  }
+  uint64_t stored = 0;
+  std::memcpy(&stored, bytes.data() + bytes.size() - 8, 8);
+  if (fnv1a(bytes.data(), bytes.size() - 8) != stored) throw damaged("checksum mismatch");
+  try {
+    ByteReader r(bytes.data() + sizeof kMagic, bytes.size() - sizeof kMagic - 8, "checkpoint");
+    const auto hash = r.pod<uint64_t>();
+    const std::string description = r.text();
+    if (hash != key.hash) {
+      throw InputError("checkpoint '" + path + "' belongs to another render (" + description +
+                       "); this run is " + key.description +
+                       ". Remove it, or choose another --checkpoint file");
+    }
+    const auto width = r.pod<int32_t>();
+    const auto height = r.pod<int32_t>();
+    if (width != key.width || height != key.height) throw damaged("size mismatch");
+    Checkpoint c;
+    c.image = Image(width, height);
+    c.owner.assign(c.image.pixelCount(), -1);
+    const auto runs = r.pod<uint64_t>();
+    r.need(runs * 24);
+    for (uint64_t i = 0; i < runs; ++i) {
+      TaskRun run;
+      run.first = r.pod<uint64_t>();
+      run.count = r.pod<uint64_t>();
+      run.stride = r.pod<uint64_t>();
+      if (run.count == 0 || run.stride == 0 || run.last() >= c.image.pixelCount() ||
+          run.last() < run.first) {
+        throw damaged("a pixel outside the image");
+      }
+      c.done.append(run);
+    }
+    r.need(c.done.size() * (3 * sizeof(float) + sizeof(int16_t)));
+    auto data = c.image.data();
+    c.done.forEach([&](uint64_t p) { r.raw(&data[3 * p], 3 * sizeof(float)); });
+    c.done.forEach([&](uint64_t p) { c.owner[p] = r.pod<int16_t>(); });
+    r.finish();
+    return c;
+  } catch (const InputError&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw damaged(e.what());
+  }
+}
+
+void removeCheckpoint(const std::string& path) {
+  std::error_code ec;
+  std::filesystem::remove(path, ec);
+}
+
+}  // namespace prt

@@ -1,0 +1,143 @@
+// The two sides of a parallel render over any transport: what the local driver runs on its
+// threads and the MPI driver on its ranks (see parallel_run.h).
+
+#include <cstdio>
+
+#include "cluster/master.h"
+#include "drive/master_loop.h"
+#include "drive/parallel_run.h"
+#include "drive/worker_engine.h"
+
+namespace prt {
+namespace {
+
+std::string percent(uint64_t part, uint64_t whole) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.1f%%",
+                whole > 0 ? 100.0 * static_cast<double>(part) / static_cast<double>(whole) : 0.0);
+  return text;
+}
+
+}  // namespace
+
+ParallelRun runMasterSide(Transport& net, const RunRequest& request, const std::string& driver) {
+  const Scene& scene = request.scene;
+  const ParallelOptions& options = request.options;
+  const uint64_t pixels = static_cast<uint64_t>(scene.image.width) * scene.image.height;
+  const int n = options.workers;
+
+  ImageAssembler assembler(scene.image.width, scene.image.height);
+  MasterOptions masterOptions;
+  masterOptions.endgame = options.endgame;
+  if (request.resumeFrom) {
+    assembler.restore(*request.resumeFrom);
+    masterOptions.resumedDone = request.resumeFrom->done;
+  }
+  Master master(makeStrategy(options.strategy, options.strategyOptions), n, pixels,
+                makeSceneMessage(scene, request.settings),
+                [&](int w, const TaskSet& t, const std::vector<float>& rgb) {
+                  assembler.add(w, t, rgb);
+                },
+                std::move(masterOptions));
+
+  MasterLoopOptions loop;
+  loop.leaseSeconds = options.workerTimeoutSeconds;
+  loop.heartbeatSeconds = heartbeatSecondsFor(options.workerTimeoutSeconds);
+  loop.checkpointEverySeconds = options.checkpointEverySeconds;
+  loop.interrupted = request.interrupted;
+  const CheckpointKey key = checkpointKey(scene, request.settings);
+  bool warned = false;
+  auto saveCheckpoint = [&](const std::string& why) {
+    try {
+      writeCheckpoint(options.checkpointPath, key, master.ledger().doneSet(), assembler.image(),
+                      assembler.owner());
+    } catch (const std::exception& e) {
+      // The render goes on: a checkpoint that cannot be written loses nothing yet.
+      if (!warned) {
+        std::fprintf(stderr, "prt: warning: checkpoint (%s) not written: %s\n", why.c_str(),
+                     e.what());
+      }
+      warned = true;
+    }
+  };
+  if (!options.checkpointPath.empty()) {
+    // Written before any rendering: a path that cannot take it fails now, not hours later.
+    writeCheckpoint(options.checkpointPath, key, master.ledger().doneSet(), assembler.image(),
+                    assembler.owner());
+    loop.checkpoint = saveCheckpoint;
+  }
+
+  MasterLoopResult result = runMasterLoop(net, master, loop);
+  if (!result.failure.empty()) {
+    std::string message = result.failure;
+    if (!options.checkpointPath.empty()) {
+      message += "; " + std::to_string(master.doneCount()) + " of " + std::to_string(pixels) +
+                 " pixels (" + percent(master.doneCount(), pixels) + ") are saved in '" +
+                 options.checkpointPath +
+                 "': run the same command with --resume to render the rest";
+    } else {
+      message += "; add --checkpoint FILE to keep the finished pixels of a run";
+    }
+    throw RunFailed(message, result.interruptSignal);
+  }
+
+  ParallelRun run;
+  run.events = std::move(result.log.events);
+  RunInfo info;
+  info.driver = driver;
+  info.strategy = options.strategy;
+  info.width = scene.image.width;
+  info.height = scene.image.height;
+  info.samplesPerPixel = request.settings.samplesPerPixel;
+  info.drtRate = request.settings.drtRate;
+  info.masterSpeedIndexSeconds = request.masterSpeedIndexSeconds;
+  info.workerSpeedIndexSeconds = master.speedIndices();
+  info.serialSeconds = request.serialSeconds;
+  const std::vector<Event> masterEvents = run.events;
+  for (int w = 0; w < n; ++w) {
+    info.slowdowns.push_back(options.slowdownOf(w));
+    const auto& summary = result.summaries[static_cast<size_t>(w)];
+    if (!summary) {
+      if (master.isLive(w)) info.faults.missingSummaries.push_back(w);
+      info.tasksReceived.push_back(0);
+      continue;
+    }
+    const double offset = net.sharedClock() ? 0.0 : workerClockOffset(masterEvents, summary->events, w);
+    for (Event e : summary->events) {
+      e.start += offset;
+      e.end += offset;
+      run.events.push_back(std::move(e));
+    }
+    info.tasksReceived.push_back(summary->tasksReceived);
+    info.rays += summary->rays;
+  }
+  const Ledger& ledger = master.ledger();
+  for (const LostWorker& l : ledger.losses()) {
+    info.faults.lostWorkers.push_back({l.worker, l.atSeconds, l.reason, l.unfinished});
+  }
+  info.faults.reissuedTasks = ledger.reissuedTasks();
+  info.faults.duplicatePixels = ledger.duplicates();
+  info.faults.endgameCopies = master.endgameCopies();
+  info.faults.resumedPixels = master.resumedCount();
+  info.faults.workerTimeoutSeconds = loop.leaseSeconds;
+  info.faults.heartbeatSeconds = loop.heartbeatSeconds;
+  run.report = makeReport(info, run.events, result.elapsedSeconds);
+  run.image = std::move(assembler.image());
+  run.owner = std::move(assembler.owner());
+  return run;
+}
+
+WorkerExit runWorkerSide(Transport& net, int id, const ParallelOptions& options,
+                         const WorkerFaultActions& faults) {
+  WorkerEngine engine(options.slowdownOf(id), options.speedIndexKind, options.speedIndexDiscs);
+  WorkerLoopOptions loop;
+  loop.batchPixels = options.batchPixels;
+  loop.heartbeatSeconds = heartbeatSecondsFor(options.workerTimeoutSeconds);
+  loop.masterTimeoutSeconds = options.workerTimeoutSeconds;
+  for (const FaultInjection& f : options.faults) {
+    if (f.worker == id) loop.fault = f;
+  }
+  return runWorkerLoop(net, id, engine, loop, faults);
+}
+
+}  // namespace prt

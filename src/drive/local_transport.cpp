@@ -1,0 +1,54 @@
+#include "drive/local_transport.h"
+
+#include <algorithm>
+
+namespace prt {
+
+LocalNetwork::LocalNetwork(int workerCount) : start_(std::chrono::steady_clock::now()) {
+  for (int w = 0; w < workerCount; ++w) workers_.push_back(std::make_unique<Mailbox>());
+}
+
+Mailbox& LocalNetwork::boxOf(int endpoint) {
+  return endpoint == kMaster ? master_ : *workers_[static_cast<size_t>(endpoint)];
+}
+
+double LocalNetwork::now() const {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+}
+
+std::chrono::steady_clock::time_point LocalNetwork::timeAt(double seconds) const {
+  // Deadlines far ahead (an infinite lease) are capped: a wait never needs more than an hour.
+  const double capped = std::min(seconds, now() + 3600.0);
+  return start_ + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                      std::chrono::duration<double>(capped));
+}
+
+void LocalNetwork::shutDown() {
+  shutdown_ = true;
+  for (auto& box : workers_) box->push(Mail{kMaster, Channel::Protocol, {}, true});
+}
+
+void LocalTransport::send(int to, Channel channel, Bytes bytes) {
+  net_.boxOf(to).push(Mail{self_, channel, std::move(bytes), false});
+}
+
+Incoming LocalTransport::poll(double deadline) {
+  std::optional<Mail> mail = net_.boxOf(self_).popUntil(net_.timeAt(deadline));
+  Incoming in;
+  if (!mail) return in;
+  in.from = mail->from;
+  if (mail->lost) {
+    in.kind = Incoming::Kind::PeerLost;
+    return in;
+  }
+  in.kind = Incoming::Kind::Packet;
+  in.channel = mail->channel;
+  in.bytes = std::move(mail->bytes);
+  return in;
+}
+
+void LocalTransport::dropConnection() {
+  if (self_ != kMaster) net_.boxOf(kMaster).push(Mail{self_, Channel::Protocol, {}, true});
+}
+
+}  // namespace prt

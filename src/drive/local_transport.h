@@ -1,0 +1,52 @@
+#pragma once
+// LocalNetwork and LocalTransport: the driver kit's transport between threads of one process.
+// Each endpoint (the master, each worker) has a mailbox; bytes are moved, never shared. The
+// network's clock is shared, so event times need no alignment. A worker thread that ends
+// without its StopMsg (a crash, an exception) drops its connection: the master's mailbox gets
+// a PeerLost notice, as a TCP link would report a closed socket.
+
+#include <atomic>
+#include <chrono>
+#include <memory>
+#include <vector>
+
+#include "drive/mailbox.h"
+#include "drive/transport.h"
+
+namespace prt {
+
+class LocalNetwork {
+ public:
+  explicit LocalNetwork(int workerCount);
+  Mailbox& boxOf(int endpoint);
+  double now() const;
+  void restartClock() { start_ = std::chrono::steady_clock::now(); }
+  std::chrono::steady_clock::time_point timeAt(double seconds) const;
+  // Tells every thread the run is over: a hung worker waits for this, and every worker still
+  // in its loop hears that the master is gone.
+  void shutDown();
+  bool isShutDown() const { return shutdown_; }
+
+ private:
+  std::chrono::steady_clock::time_point start_;
+  Mailbox master_;
+  std::vector<std::unique_ptr<Mailbox>> workers_;
+  std::atomic<bool> shutdown_{false};
+};
+
+class LocalTransport final : public Transport {
+ public:
+  LocalTransport(LocalNetwork& network, int endpoint) : net_(network), self_(endpoint) {}
+  void send(int to, Channel channel, Bytes bytes) override;
+  Incoming poll(double deadline) override;
+  double now() const override { return net_.now(); }
+  bool sharedClock() const override { return true; }
+  // The connection drops: the master hears that this endpoint is gone.
+  void dropConnection();
+
+ private:
+  LocalNetwork& net_;
+  int self_;
+};
+
+}  // namespace prt

@@ -1,0 +1,175 @@
+#include "drive/master_loop.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace prt {
+namespace {
+
+class MasterLoop {
+ public:
+  MasterLoop(Transport& net, Master& master, const MasterLoopOptions& options)
+      : net_(net), master_(master), options_(options) {
+    result_.summaries.resize(static_cast<size_t>(master.workerCount()));
+  }
+
+  MasterLoopResult run() {
+    const double start = net_.now();
+    sendOut(master_.start(start));
+    double nextBeat = start + options_.heartbeatSeconds;
+    double nextCheckpoint = start + options_.checkpointEverySeconds;
+    while (!master_.complete()) {
+      if (master_.failed()) {
+        result_.failure = "every worker was lost; the image cannot be finished";
+        break;
+      }
+      if (options_.interrupted) {
+        if (const int sig = options_.interrupted()) {
+          result_.interruptSignal = sig;
+          result_.failure = "interrupted by signal " + std::to_string(sig);
+          break;
+        }
+      }
+      double deadline = std::min({nextBeat, master_.ledger().nextExpiry(options_.leaseSeconds),
+                                  net_.now() + 0.25});
+      if (options_.checkpoint) deadline = std::min(deadline, nextCheckpoint);
+      receive(net_.poll(deadline));
+      const double now = net_.now();
+      sendOut(master_.expireLeases(now, options_.leaseSeconds));
+      if (now >= nextBeat) {
+        for (int w = 0; w < master_.workerCount(); ++w) {
+          if (master_.isLive(w)) net_.send(w, Channel::Protocol, encode(HeartbeatMsg{}));
+        }
+        nextBeat = now + options_.heartbeatSeconds;
+      }
+      const size_t losses = master_.ledger().losses().size();
+      if (losses > lossesLogged_) {
+        logLosses();
+        checkpoint("a worker was lost");
+      }
+      if (options_.checkpoint && now >= nextCheckpoint && !master_.complete()) {
+        checkpoint("periodic");
+        nextCheckpoint = net_.now() + options_.checkpointEverySeconds;
+      }
+    }
+    result_.elapsedSeconds = net_.now() - start;
+    logLosses();
+    if (!result_.failure.empty()) {
+      checkpoint(result_.failure);
+    } else {
+      collectSummaries();
+    }
+    result_.log = std::move(log_);
+    return std::move(result_);
+  }
+
+ private:
+  void checkpoint(const std::string& why) {
+    if (options_.checkpoint) options_.checkpoint(why);
+  }
+
+  void logLosses() {
+    const auto& losses = master_.ledger().losses();
+    for (; lossesLogged_ < losses.size(); ++lossesLogged_) {
+      const LostWorker& l = losses[lossesLogged_];
+      log_.add({EventKind::WorkerLost, l.worker, l.atSeconds, l.atSeconds, 0, 0, 0, l.reason});
+    }
+  }
+
+  void sendOut(const Outbox& out) {
+    for (const Envelope& e : out) {
+      Bytes bytes = encode(e.message);
+      const double now = net_.now();
+      log_.add({EventKind::MessageSent, kMaster, now, now, 0, bytes.size(), e.to,
+                messageName(e.message)});
+      net_.send(e.to, Channel::Protocol, std::move(bytes));
+    }
+  }
+
+  bool isWorker(int from) const { return from >= 0 && from < master_.workerCount(); }
+
+  void receive(const Incoming& in) {
+    const double now = net_.now();
+    if (!isWorker(in.from)) return;  // not one of ours: nothing to trust in it
+    if (in.kind == Incoming::Kind::PeerLost) {
+      sendOut(master_.onWorkerLost(in.from, now, "connection dropped"));
+      return;
+    }
+    if (in.kind != Incoming::Kind::Packet) return;
+    if (in.channel == Channel::Summary) {
+      storeSummary(in);
+      return;
+    }
+    Message m;
+    try {
+      m = decode(in.bytes);
+    } catch (const std::exception& e) {
+      sendOut(master_.onWorkerLost(in.from, now, std::string("sent a malformed message: ") +
+                                                     e.what()));
+      return;
+    }
+    if (!std::holds_alternative<HeartbeatMsg>(m)) {
+      log_.add({EventKind::MessageReceived, kMaster, now, now, 0, in.bytes.size(), in.from,
+                messageName(m)});
+    }
+    sendOut(master_.onMessage(in.from, m, now));
+  }
+
+  void storeSummary(const Incoming& in) {
+    auto& slot = result_.summaries[static_cast<size_t>(in.from)];
+    if (slot) return;
+    try {
+      slot = decodeSummary(in.bytes);
+    } catch (const std::exception&) {
+      // A summary that does not decode leaves the worker's times out of the report; the image
+      // does not depend on it.
+    }
+  }
+
+  // Every worker got StopMsg with the last results; each live one answers with its summary.
+  void collectSummaries() {
+    const int n = master_.workerCount();
+    std::vector<double> lastHeard(static_cast<size_t>(n), net_.now());
+    std::vector<bool> waiting(static_cast<size_t>(n));
+    for (int w = 0; w < n; ++w) waiting[static_cast<size_t>(w)] = master_.isLive(w);
+    auto pending = [&] {
+      for (int w = 0; w < n; ++w) {
+        const auto i = static_cast<size_t>(w);
+        if (waiting[i] && !result_.summaries[i] &&
+            net_.now() - lastHeard[i] <= options_.leaseSeconds) {
+          return true;
+        }
+      }
+      return false;
+    };
+    while (pending()) {
+      const Incoming in = net_.poll(net_.now() + 0.05);
+      if (!isWorker(in.from)) continue;
+      const auto i = static_cast<size_t>(in.from);
+      if (in.kind == Incoming::Kind::PeerLost) {
+        waiting[i] = false;
+      } else if (in.kind == Incoming::Kind::Packet) {
+        lastHeard[i] = net_.now();
+        if (in.channel == Channel::Summary) storeSummary(in);
+        // Protocol messages still in flight after the end (a last request) are dropped.
+      }
+    }
+    net_.flush(options_.leaseSeconds);
+  }
+
+  Transport& net_;
+  Master& master_;
+  const MasterLoopOptions& options_;
+  EventLog log_;
+  MasterLoopResult result_;
+  size_t lossesLogged_ = 0;
+};
+
+}  // namespace
+
+MasterLoopResult runMasterLoop(Transport& net, Master& master, const MasterLoopOptions& options) {
+  return MasterLoop(net, master, options).run();
+}
+
+}  // namespace prt

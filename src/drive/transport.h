@@ -1,0 +1,53 @@
+#pragma once
+// Transport: the seam between the driver kit's loops (drive/master_loop.h,
+// drive/worker_loop.h) and whatever carries their bytes — mailboxes between threads
+// (drive/local_transport.h) or MPI ranks (src/mpi). The loops hold all the policy (leases,
+// heartbeats, reissue, checkpoints, the report); a transport only moves bytes, says when a
+// peer is known to be gone, and tells the time. Every wait has a deadline.
+//
+// Endpoints are worker indices 0..c-1 and kMaster. One transport per endpoint, used by one
+// thread.
+
+#include <cstdint>
+
+#include "cluster/messages.h"
+
+namespace prt {
+
+// What a packet carries: a protocol Message, or a worker's end-of-run summary.
+enum class Channel : uint8_t { Protocol = 1, Summary = 2 };
+
+struct Incoming {
+  enum class Kind {
+    Packet,    // `bytes` arrived from `from` on `channel`
+    PeerLost,  // the transport knows `from` is gone (its thread ended, its link dropped)
+    Timeout,   // nothing arrived before the deadline
+  };
+  Kind kind = Kind::Timeout;
+  int from = kMaster;
+  Channel channel = Channel::Protocol;
+  Bytes bytes;
+};
+
+class Transport {
+ public:
+  virtual ~Transport() = default;
+  // Starts sending; never blocks for the receiver. A send to a peer that is gone may succeed
+  // silently: loss is found by leases, not by errors.
+  virtual void send(int to, Channel channel, Bytes bytes) = 0;
+  // The next incoming packet or loss notice, waiting at most until `deadline` (seconds on
+  // now()'s clock; a deadline in the past polls without waiting).
+  virtual Incoming poll(double deadline) = 0;
+  // Seconds on this endpoint's steady clock.
+  virtual double now() const = 0;
+  // True when every endpoint reads the same clock (threads of one process), so workers'
+  // event times need no alignment.
+  virtual bool sharedClock() const { return false; }
+  // Lets pending sends complete, for at most `timeoutSeconds`; false if some did not.
+  virtual bool flush(double timeoutSeconds) {
+    (void)timeoutSeconds;
+    return true;
+  }
+};
+
+}  // namespace prt
