@@ -107,6 +107,20 @@ ParallelRun renderMpiMaster(MpiSession& session, const RunRequest& request) {
 void finishMpiMaster(MpiSession& session, const ParallelRun& run) {
   const FaultInfo& faults = run.report.info.faults;
   const bool clean = faults.lostWorkers.empty() && faults.missingSummaries.empty();
+  if (!clean && !session.recoveryEnabled()) {
+    // Without --enable-recovery the job is still alive only because the lost ranks hang, and a
+    // rank that exits without MPI_Finalize would end it in error: end them all, and the job,
+    // with MPI_Abort's code 0. The live workers wait for it (see runMpiWorker).
+    session.comm().skipFinalize = true;
+    std::fprintf(stderr,
+                 "prt: %zu worker rank(s) were lost; the image and report are complete. Ending "
+                 "the job with MPI_Abort(0) so that mpirun does not wait for them\n",
+                 faults.lostWorkers.size() + faults.missingSummaries.size());
+    std::fflush(stdout);
+    std::fflush(stderr);
+    MPI_Abort(session.comm().comm, 0);
+    std::_Exit(0);
+  }
   MpiTransport net(session.comm().comm);
   const int32_t code = clean ? kReleaseFinalize : kReleaseExit;
   const auto* p = reinterpret_cast<const uint8_t*>(&code);
@@ -118,31 +132,18 @@ void finishMpiMaster(MpiSession& session, const ParallelRun& run) {
   }
   net.flush(clean ? 30.0 : 2.0);
   if (clean) return;  // every rank finalizes
-  // MPI_Finalize would wait for the lost ranks, which may never come.
+  // Under --enable-recovery, MPI_Finalize would wait for the lost ranks, which may never
+  // come; mpirun returns once every process has ended: at once if the lost ones died, never
+  // if one hangs (stopped, or cut off). A watchdog ends the job after a grace period then.
   session.comm().skipFinalize = true;
   std::fflush(stdout);
-  const size_t lost = faults.lostWorkers.size() + faults.missingSummaries.size();
-  if (session.recoveryEnabled()) {
-    // mpirun returns once every process has ended: at once if the lost ones died, never if
-    // one hangs (stopped, or cut off). A watchdog ends the job after a grace period then.
-    const double grace = 2 * run.report.info.faults.workerTimeoutSeconds + 5;
-    const bool watched = endLauncherIfStillRunningAfter(grace);
-    std::fprintf(stderr,
-                 "prt: %zu worker rank(s) were lost; the image and report are complete. mpirun "
-                 "returns once the lost processes have ended%s\n",
-                 lost,
-                 watched ? "; if one still hangs, the job is ended in a few seconds" : "");
-    return;
-  }
-  // Without --enable-recovery the job is still alive only because the lost ranks hang: end
-  // them, and the job, with MPI_Abort's code 0.
+  const double grace = 2 * faults.workerTimeoutSeconds + 5;
+  const bool watched = endLauncherIfStillRunningAfter(grace);
   std::fprintf(stderr,
-               "prt: %zu worker rank(s) were lost; the image and report are complete. Ending the "
-               "job with MPI_Abort(0) so that mpirun does not wait for them\n",
-               lost);
-  std::fflush(stderr);
-  MPI_Abort(session.comm().comm, 0);
-  std::_Exit(0);
+               "prt: %zu worker rank(s) were lost; the image and report are complete. mpirun "
+               "returns once the lost processes have ended%s\n",
+               faults.lostWorkers.size() + faults.missingSummaries.size(),
+               watched ? "; if one still hangs, the job is ended in a few seconds" : "");
 }
 
 int runMpiWorker(MpiSession& session, const ParallelOptions& options) {

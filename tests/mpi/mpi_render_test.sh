@@ -5,7 +5,16 @@
 #   image STRATEGY  the image is byte-identical to the serial render of the same scene
 #   report [FLAG]   --report JSON has the run's measures and one entry per worker (with FLAG,
 #                   e.g. --speed-index=probe, added to the command line)
-#   fault KIND      --inject-fault 1:0:KIND (crash|hang) fails the job, naming the rank
+#   fault KIND      --inject-fault 1:0:KIND: the master finishes the image without worker 1
+#                   (hang: without --enable-recovery; crash: with it), exit code 0
+#   crash-checkpoint  an injected crash without --enable-recovery ends the job; the
+#                   checkpoint it leaves gives the serial image with --resume
+#   kill            SIGKILL of a worker rank's process mid-render, under --enable-recovery:
+#                   the serial image, exit code 0
+#   stop            SIGSTOP of a worker rank's process mid-render, under --enable-recovery:
+#                   the serial image; mpirun ends within the grace period
+#   resume          SIGKILL of the whole job (mpirun and every rank) mid-render; --resume
+#                   under mpirun gives the serial image
 #   singleton       one rank is refused with a clear message
 #   slowdown        a --slowdown list not matching the worker count is refused
 set -eu
@@ -32,14 +41,77 @@ fail() { echo "FAIL: $*" >&2; exit 1; }
 mpi_prt() {
   set +e
   # shellcheck disable=SC2086
-  timeout -k 5 90 "$mpiexec" $launcher_flags -np "$np" "$prt" render "$scene" $size -q "$@" \
-    >out.txt 2>err.txt
+  timeout -k 5 90 "$mpiexec" $launcher_flags -np "$np" "$prt" render "$scene" ${geometry:-$size} \
+    -q "$@" >out.txt 2>err.txt
   status=$?
   set -e
   cat out.txt
   cat err.txt >&2
   return 0
 }
+
+# Starts prt under mpirun in the background (pid in $job), output to out.txt and err.txt.
+mpi_prt_background() {
+  # shellcheck disable=SC2086
+  "$mpiexec" $launcher_flags "$@" >out.txt 2>err.txt &
+  job=$!
+}
+
+# Waits up to $1 seconds for the background job; its exit status in $status (124: still
+# running, then killed with everything it started).
+wait_job() {
+  limit=$1
+  waited=0
+  while kill -0 "$job" 2>/dev/null && [ "$waited" -lt $((limit * 10)) ]; do
+    sleep 0.1
+    waited=$((waited + 1))
+  done
+  if kill -0 "$job" 2>/dev/null; then
+    kill_job
+    status=124
+  else
+    set +e
+    wait "$job"
+    status=$?
+    set -e
+  fi
+  cat err.txt >&2
+}
+
+kill_job() {
+  pkill -9 -P "$job" 2>/dev/null || true
+  kill -9 "$job" 2>/dev/null || true
+  wait "$job" 2>/dev/null || true
+}
+
+# The pid of worker rank $1 of the background job (a child of mpirun), once it is running.
+rank_pid() {
+  for i in $(seq 1 100); do
+    for child in $(pgrep -P "$job" 2>/dev/null); do
+      if tr '\0' '\n' <"/proc/$child/environ" 2>/dev/null | grep -qx "OMPI_COMM_WORLD_RANK=$1"; then
+        echo "$child"
+        return 0
+      fi
+    done
+    sleep 0.05
+  done
+  return 1
+}
+
+# Waits until the first results have reached the master (its report counts them in the
+# checkpoint's size: header and runs come first), at most 20 s.
+wait_for_progress() {
+  for i in $(seq 1 200); do
+    [ -f "$1" ] && [ "$(stat -c %s "$1")" -gt "$2" ] && return 0
+    sleep 0.1
+  done
+  return 1
+}
+
+# A render of a few seconds on slow workers (the more workers, the slower each), so a fault
+# can strike mid-render.
+slow="--width 64 --height 48 --spp 16 --drt 2"
+slowdowns() { seq -s, 1 $((np - 1)) | sed "s/[0-9][0-9]*/$((30 * (np - 1)))/g"; }
 
 case $mode in
   image)
@@ -73,18 +145,100 @@ assert trace, "empty trace"
 PY
     ;;
   fault)
+    # shellcheck disable=SC2086
+    "$prt" render "$scene" $size -q -o serial.pfm
+    recovery=
+    [ "$arg" = crash ] && recovery=--enable-recovery
     start=$(date +%s)
-    mpi_prt --strategy reservoir --batch 16 -o mpi.pfm --inject-fault "1:0:$arg" \
-      --worker-timeout 2
+    # shellcheck disable=SC2086
+    set +e
+    timeout -k 5 90 "$mpiexec" $launcher_flags $recovery -np "$np" "$prt" render "$scene" $size -q \
+      --strategy reservoir --batch 16 -o mpi.pfm --inject-fault "1:0:$arg" --worker-timeout 2 \
+      --report report.json >out.txt 2>err.txt
+    status=$?
+    set -e
+    cat err.txt >&2
     elapsed=$(($(date +%s) - start))
-    [ "$status" -ne 0 ] || fail "a $arg worker did not fail the run"
-    [ "$status" -ne 124 ] && [ "$status" -ne 137 ] || fail "the run hung (killed by timeout)"
-    [ "$elapsed" -lt 60 ] || fail "the failure took $elapsed s to detect"
-    grep -q "rank 2" err.txt || fail "stderr does not name the failed rank (2)"
-    if [ "$arg" = hang ]; then
-      grep -q "prt: error: worker rank 2 (worker 1) stopped answering" err.txt ||
-        fail "the master did not report the silent worker"
+    [ "$status" -eq 0 ] || fail "a run losing a $arg worker exited with $status"
+    [ "$elapsed" -lt 60 ] || fail "the run took $elapsed s"
+    cmp serial.pfm mpi.pfm || fail "the image differs from the serial one"
+    grep -q "injected $arg" err.txt || fail "the worker did not report its injected $arg"
+    python3 - <<'PY'
+import json
+r = json.load(open("report.json"))
+lost = r["lost_workers"]
+assert [l["worker"] for l in lost] == [1], lost
+assert r["workers"][1]["lost"], r["workers"][1]
+assert r["reissued_tasks"] > 0, r["reissued_tasks"]
+PY
+    ;;
+  crash-checkpoint)
+    # shellcheck disable=SC2086
+    "$prt" render "$scene" $size -q -o serial.pfm
+    set +e
+    # shellcheck disable=SC2086
+    timeout -k 5 90 "$mpiexec" $launcher_flags -np "$np" "$prt" render "$scene" $size -q \
+      --strategy self --chunk 8 --batch 8 -o mpi.pfm --inject-fault "1:40:crash" \
+      --slowdown 4,4 --checkpoint ck --checkpoint-every 0.05 >out.txt 2>err.txt
+    status=$?
+    set -e
+    cat err.txt >&2
+    [ "$status" -ne 0 ] || fail "without --enable-recovery a crashed rank should end the job"
+    [ ! -f mpi.pfm ] || fail "a failed run wrote an image"
+    [ -f ck ] || fail "no checkpoint was left"
+    mpi_prt --strategy reservoir --batch 16 -o mpi.pfm --checkpoint ck --resume --report r.json
+    [ "$status" -eq 0 ] || fail "the resumed run exited with $status"
+    cmp serial.pfm mpi.pfm || fail "the resumed image differs from the serial one"
+    [ ! -f ck ] || fail "the checkpoint was not removed after the image was written"
+    ;;
+  kill|stop)
+    # shellcheck disable=SC2086
+    "$prt" render "$scene" $slow -q -o serial.pfm
+    start=$(date +%s)
+    # shellcheck disable=SC2086
+    mpi_prt_background --enable-recovery -np "$np" "$prt" render "$scene" $slow -q \
+      --strategy "${arg:-reservoir}" --slowdown "$(slowdowns)" \
+      --batch 8 -o mpi.pfm --worker-timeout 2 --report report.json --checkpoint ck \
+      --checkpoint-every 0.1
+    victim=$(rank_pid 2) || { kill_job; fail "worker rank 2 never started"; }
+    wait_for_progress ck 200 || { kill_job; fail "no progress within 20 s"; }
+    if [ "$mode" = kill ]; then kill -9 "$victim"; else kill -STOP "$victim"; fi
+    wait_job 80
+    kill -9 "$victim" 2>/dev/null || true
+    elapsed=$(($(date +%s) - start))
+    cmp serial.pfm mpi.pfm || fail "the image differs from the serial one (exit $status)"
+    if [ "$mode" = kill ]; then
+      [ "$status" -eq 0 ] || fail "a run surviving a killed rank exited with $status"
+    else
+      [ "$status" -ne 124 ] || fail "mpirun never returned after a stopped rank"
     fi
+    [ "$elapsed" -lt 70 ] || fail "the run took $elapsed s"
+    python3 - <<'PY'
+import json
+r = json.load(open("report.json"))
+assert [l["worker"] for l in r["lost_workers"]] == [1], r["lost_workers"]
+PY
+    ;;
+  resume)
+    # shellcheck disable=SC2086
+    "$prt" render "$scene" $slow -q -o serial.pfm
+    # shellcheck disable=SC2086
+    mpi_prt_background -np "$np" "$prt" render "$scene" $slow -q --strategy "${arg:-reservoir}" \
+      --slowdown "$(slowdowns)" --batch 8 \
+      -o mpi.pfm --checkpoint ck --checkpoint-every 0.1
+    wait_for_progress ck 2000 || { kill_job; fail "no progress within 20 s"; }
+    kill_job
+    [ ! -f mpi.pfm ] || fail "the killed run wrote an image"
+    geometry=$slow mpi_prt --strategy hybrid --batch 16 -o mpi.pfm --checkpoint ck --resume \
+      --report r.json
+    [ "$status" -eq 0 ] || fail "the resumed run exited with $status"
+    cmp serial.pfm mpi.pfm || fail "the resumed image differs from the serial one"
+    python3 - <<'PY'
+import json
+r = json.load(open("r.json"))
+assert r["resumed_pixels"] > 0, r["resumed_pixels"]
+assert sum(w["pixels"] for w in r["workers"]) == 64 * 48 - r["resumed_pixels"]
+PY
     ;;
   singleton)
     mpi_prt -o mpi.pfm
