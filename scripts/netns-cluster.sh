@@ -1,0 +1,80 @@
+#!/usr/bin/env bash
+# A cluster of N hosts on this machine, for testing PRT's fault handling over real TCP links:
+# each host is a network namespace (own hostname, own address) joined to a bridge, and mpirun
+# starts its daemons in them through a launch agent instead of ssh. Needs root.
+#
+#   scripts/netns-cluster.sh up N [DIR]   create hosts prt-h0 .. prt-h(N-1) on 10.231.0.0/24;
+#                                         DIR (default /tmp/prt-netns) gets `hostfile`,
+#                                         `agent` (the launch agent) and `mpirun-flags`
+#   scripts/netns-cluster.sh link-down I  cut host I off (its link on the bridge goes down)
+#   scripts/netns-cluster.sh link-up I    restore it
+#   scripts/netns-cluster.sh down [DIR]   remove every host, the bridge and DIR's files
+#
+# Run a job across the hosts with:
+#   mpirun $(cat DIR/mpirun-flags) --hostfile DIR/hostfile -np 3 build/prt render ...
+# Traffic stays on the bridge's private subnet, inside this machine.
+set -euo pipefail
+
+bridge=prt-br0
+subnet=10.231.0
+prefix=prt-h
+
+host_ip() { echo "$subnet.$((10 + $1))"; }
+
+up() {
+  local n=$1 dir=${2:-/tmp/prt-netns}
+  down "$dir" 2>/dev/null || true
+  mkdir -p "$dir"
+  ip link add "$bridge" type bridge
+  ip addr add "$subnet.1/24" dev "$bridge"
+  ip link set "$bridge" up
+  : >"$dir/hostfile"
+  for ((i = 0; i < n; i++)); do
+    local ns=$prefix$i
+    ip netns add "$ns"
+    ip link add "prt-v$i" type veth peer name eth0 netns "$ns"
+    ip link set "prt-v$i" master "$bridge" up
+    ip -n "$ns" addr add "$(host_ip "$i")/24" dev eth0
+    ip -n "$ns" link set eth0 up
+    ip -n "$ns" link set lo up
+    echo "$ns slots=1" >>"$dir/hostfile"
+  done
+  # The launch agent: mpirun calls it as `agent HOST COMMAND...` to start its daemon on HOST.
+  # The daemon runs in HOST's namespace with HOST as its hostname (a UTS namespace of its own).
+  cat >"$dir/agent" <<'AGENT'
+#!/bin/sh
+host=$1
+shift
+exec ip netns exec "$host" unshare --uts sh -c "hostname $host; $*"
+AGENT
+  chmod +x "$dir/agent"
+  echo "--mca plm_rsh_agent $dir/agent --mca btl tcp,self" \
+    "--mca btl_tcp_if_include $subnet.0/24 --mca oob_tcp_if_include $subnet.0/24" \
+    >"$dir/mpirun-flags"
+  echo "netns-cluster: $n hosts up (${prefix}0..$prefix$((n - 1))), files in $dir"
+}
+
+down() {
+  local dir=${1:-/tmp/prt-netns}
+  for ns in $(ip netns list 2>/dev/null | awk '{print $1}' | grep "^$prefix" || true); do
+    ip netns pids "$ns" 2>/dev/null | xargs -r kill -9 2>/dev/null || true
+    ip netns del "$ns" 2>/dev/null || true
+  done
+  for v in $(ip -o link show 2>/dev/null | awk -F': ' '{print $2}' | grep '^prt-v' | cut -d@ -f1 || true); do
+    ip link del "$v" 2>/dev/null || true
+  done
+  ip link del "$bridge" 2>/dev/null || true
+  rm -f "$dir/hostfile" "$dir/agent" "$dir/mpirun-flags"
+  rmdir "$dir" 2>/dev/null || true
+}
+
+case ${1:-} in
+  up) up "${2:?number of hosts}" "${3:-}" ;;
+  down) down "${2:-}" ;;
+  link-down) ip link set "prt-v${2:?host index}" down ;;
+  link-up) ip link set "prt-v${2:?host index}" up ;;
+  *)
+    echo "usage: $0 up N [DIR] | link-down I | link-up I | down [DIR]" >&2
+    exit 2
+    ;;
+esac

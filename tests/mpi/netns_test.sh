@@ -1,0 +1,69 @@
+#!/bin/sh
+# A render across three hosts (network namespaces on a bridge, scripts/netns-cluster.sh) over
+# TCP; mid-render one host's link goes down. The run must finish with the serial image, or
+# leave a checkpoint from which --resume gives it. Needs root; skipped (exit 77) otherwise.
+#   netns_test.sh PRT MPIEXEC SCENE WORKDIR CLUSTER_SCRIPT
+set -eu
+
+prt=$1 mpiexec=$2 scene=$3 work=$4 cluster=$5
+skip() { echo "SKIP: $*"; exit 77; }
+fail() { echo "FAIL: $*" >&2; exit 1; }
+[ "$(id -u)" -eq 0 ] || skip "making network namespaces needs root"
+command -v ip >/dev/null || skip "no ip command (iproute2)"
+command -v unshare >/dev/null || skip "no unshare command (util-linux)"
+"$mpiexec" --version 2>/dev/null | grep -qiE "open ?mpi|openrte" || skip "the launch agent needs Open MPI"
+
+rm -rf "$work"
+mkdir -p "$work"
+cd "$work"
+hosts=$work/hosts
+job=
+cleanup() {
+  [ -n "$job" ] && { pkill -9 -P "$job" 2>/dev/null || true; kill -9 "$job" 2>/dev/null || true; }
+  bash "$cluster" down "$hosts" >/dev/null 2>&1 || true
+}
+trap cleanup EXIT INT TERM
+bash "$cluster" up 3 "$hosts" || skip "could not make the network namespaces"
+
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+geometry="--width 64 --height 48 --spp 16 --drt 2"
+# shellcheck disable=SC2086
+"$prt" render "$scene" $geometry -q -o serial.pfm
+# shellcheck disable=SC2086,SC2046
+"$mpiexec" $(cat "$hosts/mpirun-flags") --enable-recovery --hostfile "$hosts/hostfile" -np 3 \
+  "$prt" render "$scene" $geometry -q --slowdown 30,30 --batch 8 --worker-timeout 2 -o out.pfm \
+  --checkpoint ck --checkpoint-every 0.1 --report report.json >out.txt 2>err.txt &
+job=$!
+progress=0
+for i in $(seq 1 300); do
+  if [ -f ck ] && [ "$(stat -c %s ck)" -gt 3000 ]; then progress=1; break; fi
+  sleep 0.1
+done
+[ "$progress" -eq 1 ] || { cat err.txt >&2; fail "no progress across the hosts within 30 s"; }
+bash "$cluster" link-down 2  # worker rank 2 (worker 1) is on prt-h2
+echo "link of prt-h2 down"
+# The master finishes the image with the hosts it can reach; mpirun itself may wait for the
+# cut-off host's daemon long after, which is not the image's concern.
+for i in $(seq 1 600); do
+  [ -f out.pfm ] && break
+  kill -0 "$job" 2>/dev/null || break
+  sleep 0.1
+done
+grep -v "PMIX ERROR" err.txt >&2 || true
+if [ -f out.pfm ]; then
+  cmp serial.pfm out.pfm || fail "the image differs from the serial one"
+  python3 - <<'PY'
+import json
+r = json.load(open("report.json"))
+assert [l["worker"] for l in r["lost_workers"]] == [1], r["lost_workers"]
+print("finished without the cut-off host; lost:", r["lost_workers"])
+PY
+else
+  [ -f ck ] || fail "neither an image nor a checkpoint"
+  # shellcheck disable=SC2086
+  "$prt" render "$scene" $geometry -q -o out.pfm --checkpoint ck --resume ||
+    fail "resuming the checkpoint failed"
+  cmp serial.pfm out.pfm || fail "the resumed image differs from the serial one"
+  echo "resumed from the checkpoint"
+fi
+echo "ok: netns"
