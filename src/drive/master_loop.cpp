@@ -77,15 +77,8 @@ class MasterLoop {
     }
   }
 
-  void sendOut(const Outbox& out) {
-    for (const Envelope& e : out) {
-      Bytes bytes = encode(e.message);
-      const double now = net_.now();
-      log_.add({EventKind::MessageSent, kMaster, now, now, 0, bytes.size(), e.to,
-                messageName(e.message)});
-      net_.send(e.to, Channel::Protocol, std::move(bytes));
-    }
-  }
+  void sendOut(const Outbox& out) { sendOutbox(net_, kMaster, out, log_); }
+
 
   bool isWorker(int from) const { return from >= 0 && from < master_.workerCount(); }
 

@@ -11,6 +11,7 @@
 #include <cstdint>
 
 #include "cluster/messages.h"
+#include "metrics/events.h"
 
 namespace prt {
 
@@ -49,5 +50,9 @@ class Transport {
     return true;
   }
 };
+
+// Encodes and sends every message of `out` from endpoint `from`, logging each as a
+// MessageSent event on the transport's clock: how both loops send what a state machine says.
+void sendOutbox(Transport& net, int from, const Outbox& out, EventLog& log);
 
 }  // namespace prt

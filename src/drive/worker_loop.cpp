@@ -74,15 +74,8 @@ class WorkerLoop {
     nextBeat_ = now + options_.heartbeatSeconds;
   }
 
-  void sendOut(const Outbox& out) {
-    for (const Envelope& e : out) {
-      Bytes bytes = encode(e.message);
-      const double now = net_.now();
-      log_.add({EventKind::MessageSent, id_, now, now, 0, bytes.size(), e.to,
-                messageName(e.message)});
-      net_.send(e.to, Channel::Protocol, std::move(bytes));
-    }
-  }
+  void sendOut(const Outbox& out) { sendOutbox(net_, id_, out, log_); }
+
 
   // While computing: takes whatever has arrived into the inbox. False if the master is gone.
   bool gatherMail() {
