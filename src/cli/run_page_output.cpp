@@ -41,11 +41,7 @@ std::vector<std::pair<std::string, std::string>> strategyParameters(
 
 void writeReportAndPage(const std::string& reportPath, const std::string& htmlPath,
                         const nlohmann::json& document, const PagePicture& picture) {
-  if (!reportPath.empty()) {
-    writeFileAtomically(reportPath,
-                        document.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) +
-                            "\n");
-  }
+  if (!reportPath.empty()) writeFileAtomically(reportPath, reportDocumentText(document));
   if (!htmlPath.empty()) writeFileAtomically(htmlPath, runPageHtml(document, picture));
 }
 

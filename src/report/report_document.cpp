@@ -60,6 +60,24 @@ json reportDocument(const RunReport& report, const RunContext& context,
   return doc;
 }
 
+std::string reportDocumentText(const json& document) {
+  constexpr auto kReplace = json::error_handler_t::replace;
+  json shown = document;
+  std::vector<std::pair<std::string, std::string>> bulky;
+  for (const char* key : {"timeline", "ownership_map"}) {
+    if (!shown.contains(key)) continue;
+    const std::string placeholder = std::string("@prt-compact-") + key + "@";
+    bulky.emplace_back("\"" + placeholder + "\"", shown[key].dump(-1, ' ', false, kReplace));
+    shown[key] = placeholder;
+  }
+  std::string text = shown.dump(2, ' ', false, kReplace);
+  for (const auto& [placeholder, compact] : bulky) {
+    const size_t at = text.find(placeholder);
+    if (at != std::string::npos) text.replace(at, placeholder.size(), compact);
+  }
+  return text + "\n";
+}
+
 json parseReportDocument(const std::string& text, const std::string& path) {
   json doc;
   try {

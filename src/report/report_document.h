@@ -40,6 +40,10 @@ nlohmann::json reportDocument(const RunReport& report, const RunContext& context
                               const std::vector<Event>& events,
                               const std::vector<int32_t>& owner);
 
+// The document as the file holds it: indented for reading, except the bulky "timeline" and
+// "ownership_map", one line each.
+std::string reportDocumentText(const nlohmann::json& document);
+
 // Parses a saved report. Throws InputError naming `path` (with line:col for malformed JSON)
 // when it cannot be read, is not JSON, or lacks the keys every report has.
 nlohmann::json parseReportDocument(const std::string& text, const std::string& path);

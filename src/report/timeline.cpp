@@ -89,6 +89,8 @@ json timelineJson(const std::vector<Event>& events, int workers, double elapsedS
   double end = elapsedSeconds;
   for (const Event& e : events) end = std::max(end, e.end);  // a late event stays in view
   const double tickSeconds = end > 0 ? end / ticks : 1;
+  const int bins = std::max(1, options.shareBins);
+  const double binSeconds = end > 0 ? end / bins : 1;
   auto tickOf = [&](double t) {
     return std::clamp(static_cast<long>(std::floor(t / tickSeconds)), 0L, static_cast<long>(ticks));
   };
@@ -99,12 +101,12 @@ json timelineJson(const std::vector<Event>& events, int workers, double elapsedS
     row.first = r * perRow;
     row.last = std::min(n, (r + 1) * perRow) - 1;
     if (aggregated) {
-      row.renderingSeconds.assign(static_cast<size_t>(ticks), 0);
-      row.setupSeconds.assign(static_cast<size_t>(ticks), 0);
+      row.renderingSeconds.assign(static_cast<size_t>(bins), 0);
+      row.setupSeconds.assign(static_cast<size_t>(bins), 0);
     }
   }
   Row master;
-  std::vector<double> rendering(static_cast<size_t>(ticks), 0);
+  std::vector<double> rendering(static_cast<size_t>(bins), 0);
 
   for (const Event& e : events) {
     const bool onWorker = e.worker >= 0 && e.worker < n;
@@ -112,10 +114,10 @@ json timelineJson(const std::vector<Event>& events, int workers, double elapsedS
     switch (e.kind) {
       case EventKind::Compute:
         if (!onWorker) break;
-        addOverlap(rendering, tickSeconds, e.start, e.end);
+        addOverlap(rendering, binSeconds, e.start, e.end);
         row.finished = std::max(row.finished, e.end);
         if (aggregated) {
-          addOverlap(row.renderingSeconds, tickSeconds, e.start, e.end);
+          addOverlap(row.renderingSeconds, binSeconds, e.start, e.end);
         } else {
           row.rendering.add(tickOf(e.start), tickOf(e.end));
         }
@@ -123,7 +125,7 @@ json timelineJson(const std::vector<Event>& events, int workers, double elapsedS
       case EventKind::Setup:
         if (!onWorker) break;
         if (aggregated) {
-          addOverlap(row.setupSeconds, tickSeconds, e.start, e.end);
+          addOverlap(row.setupSeconds, binSeconds, e.start, e.end);
         } else {
           row.setup.add(tickOf(e.start), tickOf(e.end));
         }
@@ -146,16 +148,17 @@ json timelineJson(const std::vector<Event>& events, int workers, double elapsedS
     }
   }
 
-  json out = {{"elapsed_s", elapsedSeconds}, {"ticks", ticks},       {"tick_s", tickSeconds},
+  json out = {{"elapsed_s", elapsedSeconds}, {"ticks", ticks},
+              {"tick_s", tickSeconds},       {"share_bins", bins},
               {"workers", n},                {"workers_per_row", perRow},
               {"aggregated", aggregated}};
-  out["rendering_share"] = shares(rendering, tickSeconds * n);
+  out["rendering_share"] = shares(rendering, binSeconds * n);
   json rowsJson = json::array();
   size_t dropped = master.dropped;
   for (Row& row : rows) {
     json r = {{"first", row.first}, {"last", row.last}, {"finished_s", row.finished}};
     if (aggregated) {
-      const double capacity = tickSeconds * (row.last - row.first + 1);
+      const double capacity = binSeconds * (row.last - row.first + 1);
       r["rendering_share"] = shares(row.renderingSeconds, capacity);
       r["setup_share"] = shares(row.setupSeconds, capacity);
     } else {

@@ -6,14 +6,15 @@
 // span shorter than a tick still covers one), the ticks in which it sent or received a
 // message, and marks for every other event on it (a loss, a reissue, any kind added later:
 // named by eventKindName). Beyond `maxRows` workers, a row stands for a group of consecutive
-// workers and carries, per tick, the share of the group's time spent rendering and setting
-// up; messages are then not drawn one by one (the JSON says so: "aggregated": true). Events
-// of the master other than messages are marks of their own. Every run also gets the share of
-// all workers rendering in each tick, the curve of how well the work was shared out.
+// workers and carries, per time bin (`shareBins` over the run), the share of the group's time
+// spent rendering and setting up; messages are then not drawn one by one (the JSON says so:
+// "aggregated": true). Events of the master other than messages are marks of their own. Every
+// run also gets the share of all workers rendering in each bin, the curve of how well the work
+// was shared out.
 //
 // JSON (all times in ticks unless named _s):
-//   {"elapsed_s", "ticks", "workers", "workers_per_row", "aggregated",
-//    "rendering_share": [per tick],            // all workers, 0..1, three decimals
+//   {"elapsed_s", "ticks", "tick_s", "share_bins", "workers", "workers_per_row", "aggregated",
+//    "rendering_share": [per bin],             // all workers, 0..1, three decimals
 //    "rows": [{"first", "last",                // the workers the row stands for
 //              "rendering": [[from, to], ...], "setup": [[from, to], ...], "messages": [t, ...]
 //              | "rendering_share": [...], "setup_share": [...],
@@ -33,6 +34,7 @@ struct TimelineOptions {
   int ticks = 1000;          // time steps across the run; also the bins of the shares
   int maxRows = 64;          // workers drawn one by one; above, rows are groups
   int maxMarksPerRow = 100;  // marks kept per row (and for the master); the rest are counted
+  int shareBins = 250;       // time bins of the shares (all workers', and grouped rows')
 };
 
 nlohmann::json timelineJson(const std::vector<Event>& events, int workers, double elapsedSeconds,

@@ -63,6 +63,10 @@ std::string timelineSvg(const json& timeline, const std::vector<std::string>& co
   const double rowsBottom = rowsTop + rowHeight * static_cast<double>(rows.size());
   const double height = rowsBottom + 30;
   auto x = [&](double tick) { return kLeft + kPlot * tick / ticks; };
+  // Shares come in bins of their own: bin i of `count` starts at this x.
+  auto xb = [&](double bin, size_t binCount) {
+    return kLeft + kPlot * bin / static_cast<double>(std::max<size_t>(1, binCount));
+  };
   auto xs = [&](double seconds) { return kLeft + kPlot * std::clamp(seconds / end, 0.0, 1.0); };
   auto colourOf = [&](int w) {
     return w >= 0 && static_cast<size_t>(w) < colours.size() ? colours[static_cast<size_t>(w)]
@@ -84,8 +88,8 @@ std::string timelineSvg(const json& timeline, const std::vector<std::string>& co
     std::string path = "M" + num(kLeft) + " " + num(kShareHeight);
     for (size_t t = 0; t < share.size(); ++t) {
       const double y = kShareHeight * (1 - std::clamp(share[t].get<double>(), 0.0, 1.0));
-      path += "H" + num(x(static_cast<double>(t))) + "V" + num(y) + "H" +
-              num(x(static_cast<double>(t + 1)));
+      path += "H" + num(xb(static_cast<double>(t), share.size())) + "V" + num(y) + "H" +
+              num(xb(static_cast<double>(t + 1), share.size()));
     }
     path += "V" + num(kShareHeight) + "Z";
     s += "<path d=\"" + path + "\" class=\"share-area\"><title>share of the workers rendering"
@@ -145,7 +149,8 @@ std::string timelineSvg(const json& timeline, const std::vector<std::string>& co
             ++u;
           }
           if (level > 0) {
-            const double a = x(static_cast<double>(t)), b = x(static_cast<double>(u));
+            const double a = xb(static_cast<double>(t), values.size());
+            const double b = xb(static_cast<double>(u), values.size());
             paths[std::min(level, 5) - 1] += "M" + num(a) + " " + num(y) + "h" + num(b - a) +
                                              "v" + num(h) + "H" + num(a) + "Z";
           }
