@@ -82,6 +82,12 @@ TEST_F(ReportCliTest, BadInputIsExitCodeTwoAndWritesNothing) {
   EXPECT_NE(r.output.find(".html or .htm"), std::string::npos) << r.output;
   EXPECT_FALSE(fs::exists(path("a.png"))) << "checked before rendering";
 
+  r = run("render " + kScene + " --width 16 --height 16 --workers 2 --html " +
+          path("nowhere/page.html") + " -o " + path("a.png"));
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.output.find("no folder"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(path("a.png"))) << "checked before rendering";
+
   r = run("render " + kScene + " --width 16 --height 16 --html " + path("page.html") + " -o " +
           path("a.png"));
   EXPECT_EQ(r.exitCode, 2);

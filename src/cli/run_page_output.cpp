@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 
 #include "core/input_error.h"
 #include "core/machine.h"
@@ -20,6 +21,10 @@ void checkHtmlPath(const std::string& path) {
   for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   if (extension != ".html" && extension != ".htm") {
     throw InputError("--html '" + path + "': the page's file name must end in .html or .htm");
+  }
+  const std::filesystem::path folder = std::filesystem::path(path).parent_path();
+  if (!folder.empty() && !std::filesystem::is_directory(folder)) {
+    throw InputError("--html '" + path + "': no folder '" + folder.string() + "' to write it in");
   }
 }
 

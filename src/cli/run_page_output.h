@@ -18,7 +18,8 @@
 
 namespace prt::cli {
 
-// Throws InputError unless `path` is empty or ends in .html or .htm (checked before a run).
+// Throws InputError unless `path` is empty, or ends in .html or .htm in a folder that exists
+// (checked before a run, so that a typo does not cost the render).
 void checkHtmlPath(const std::string& path);
 
 // The strategy's own parameters (those it reads from StrategyOptions), by name.

@@ -94,6 +94,28 @@ std::string glance(const json& r) {
   s += "On average a worker was rendering <b>" + formatPercent(efficiency) +
        "</b> of the run (efficiency); the rest it waited for work, for the scene, or for the "
        "others to finish.";
+  // Lost workers, from the table and the timeline's marks.
+  std::string lostList;
+  size_t lostCount = 0;
+  for (const json& w : r["workers"]) {
+    if (!w.is_object() || !w.value("lost", false)) continue;
+    ++lostCount;
+    const int id = w.value("worker", 0);
+    if (!lostList.empty()) lostList += ", ";
+    lostList += std::to_string(id);
+    for (const json& row : r.value("timeline", json::object()).value("rows", json::array())) {
+      for (const json& m : row.value("marks", json::array())) {
+        if (m.value("kind", std::string()) == "worker_lost" && m.value("worker", -1) == id) {
+          lostList += " (at " + formatSeconds(m.value("t_s", 0.0)) + ")";
+        }
+      }
+    }
+  }
+  if (lostCount > 0) {
+    s += " <b class=\"fault-text\">" + std::string(lostCount == 1 ? "Worker " : "Workers ") +
+         lostList + (lostCount == 1 ? " was" : " were") +
+         " lost</b>; the master gave the unfinished tasks to the others.";
+  }
   // How close together the workers ran out of work: the balance itself.
   if (r.contains("timeline") && r["timeline"].contains("rows")) {
     std::vector<double> finished;

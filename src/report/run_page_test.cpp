@@ -149,6 +149,16 @@ TEST(RunPage, ShowsFaultKeysAndUnknownKeysGenerically) {
   EXPECT_NE(html.find("<th>heartbeats</th>"), std::string::npos);
   EXPECT_EQ(valueOf(html, "heartbeats", html.find("<tr class=\"worker")), 7);
   EXPECT_NE(html.find("lost-row"), std::string::npos);
+  EXPECT_NE(html.find("Worker 2 was lost</b>"), std::string::npos);
+}
+
+TEST(RunPage, SaysWhenAWorkerWasLost) {
+  SampleRun run = fourWorkers();
+  run.events.push_back({EventKind::WorkerLost, 3, 1.25, 1.25, 0, 0, 0, ""});
+  const RunReport report = makeReport(run.report.info, run.events, 2.0);
+  const std::string html = runPageHtml(reportDocument(report, context(), run.events, run.owner), {});
+  EXPECT_NE(html.find("Worker 3 (at 1.25 s) was lost</b>"), std::string::npos);
+  EXPECT_NE(html.find("class=\"lost\"><title>worker 3 lost at 1.25 s</title>"), std::string::npos);
 }
 
 TEST(RunPage, OldReportsWithoutTimelineOrMapStillDraw) {
