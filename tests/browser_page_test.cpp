@@ -26,16 +26,23 @@ class BrowserPageTest : public e2e::ScratchDirTest {
   std::string chromium(const std::string& page, const std::string& mode) {
     const std::string browser = findProgram("chromium");
     if (browser.empty()) {
-      skip_ = "chromium is not installed (scripts/install-deps.sh installs it); the page was "
-              "not opened in a browser";
+      skip_ =
+          "chromium is not installed (scripts/install-deps.sh installs it); the page was "
+          "not opened in a browser";
       return "";
     }
     const std::string timeout = findProgram("timeout");
-    std::vector<std::string> args = {"--headless", "--no-sandbox", "--disable-gpu",
-                                     "--no-first-run", "--hide-scrollbars",
+    std::vector<std::string> args = {"--headless",
+                                     "--no-sandbox",
+                                     "--disable-gpu",
+                                     "--no-first-run",
+                                     "--hide-scrollbars",
                                      "--user-data-dir=" + path("chromium-profile"),
-                                     "--window-size=1280,2200", "--virtual-time-budget=3000",
-                                     "--enable-logging=stderr", "--v=0", mode,
+                                     "--window-size=1280,2200",
+                                     "--virtual-time-budget=3000",
+                                     "--enable-logging=stderr",
+                                     "--v=0",
+                                     mode,
                                      "file://" + page};
     std::string program = browser;
     if (!timeout.empty()) {
@@ -64,26 +71,28 @@ class BrowserPageTest : public e2e::ScratchDirTest {
   std::string skip_;
 };
 
-#define SKIP_IF_NO_BROWSER()            \
-  do {                                  \
+#define SKIP_IF_NO_BROWSER()                   \
+  do {                                         \
     if (!skip_.empty()) GTEST_SKIP() << skip_; \
   } while (0)
 
 TEST_F(BrowserPageTest, RenderedRunPageDrawsAndHighlightsAWorker) {
   const auto render = e2e::run("render " + std::string(PRT_SOURCE_DIR) +
                                "/scenes/fig06-primitives.scene --width 96 --height 72 --workers 3 "
-                               "--strategy reservoir --serial-seconds 1 --html " + path("run.html") +
-                               " --report " + path("run.json") + " -o " + path("run.png") + " -q");
+                               "--strategy reservoir --serial-seconds 1 --html " +
+                               path("run.html") + " --report " + path("run.json") + " -o " +
+                               path("run.png") + " -q");
   ASSERT_EQ(render.exitCode, 0) << render.output;
 
   const std::string dom = chromium(path("run.html") + "#worker=1", "--dump-dom");
   SKIP_IF_NO_BROWSER();
   EXPECT_EQ(consoleLines(dom), std::vector<std::string>{}) << "the page logged messages";
   EXPECT_NE(dom.find("data-page-ready=\"yes\""), std::string::npos)
-      << "the script did not run to its end:\n" << lastLines(dom, 20);
+      << "the script did not run to its end:\n"
+      << lastLines(dom, 20);
   EXPECT_NE(dom.find("<tr class=\"worker sel\" data-first=\"1\""), std::string::npos)
       << "worker 1 was not highlighted in the table";
-  EXPECT_NE(dom.find("picked") , std::string::npos);
+  EXPECT_NE(dom.find("picked"), std::string::npos);
   EXPECT_NE(dom.find("worker 1: "), std::string::npos) << "no description of the picked worker";
 
   const std::string shot = path("shot.png");
@@ -107,8 +116,10 @@ TEST_F(BrowserPageTest, RenderedRunPageDrawsAndHighlightsAWorker) {
 }
 
 TEST_F(BrowserPageTest, LargeSimulatedRunAndItsSavedReportOpen) {
-  const auto sim = e2e::run("simulate --workers 1024 --width 320 --height 180 --slow-share 0.5 "
-                            "--html " + path("sim.html") + " --report " + path("sim.json") + " -q");
+  const auto sim = e2e::run(
+      "simulate --workers 1024 --width 320 --height 180 --slow-share 0.5 "
+      "--html " +
+      path("sim.html") + " --report " + path("sim.json") + " -q");
   ASSERT_EQ(sim.exitCode, 0) << sim.output;
   const auto again = e2e::run("report " + path("sim.json") + " -o " + path("again.html"));
   ASSERT_EQ(again.exitCode, 0) << again.output;

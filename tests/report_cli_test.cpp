@@ -29,9 +29,9 @@ nlohmann::json embeddedReport(const std::string& html) {
 }
 
 TEST_F(ReportCliTest, SavedReportDrawsTheSamePageAgain) {
-  const Result r = run("render " + kScene + " --width 48 --height 32 --workers 2 --html " +
-                       path("run.html") + " --report " + path("run.json") + " -o " +
-                       path("run.png") + " -q");
+  const Result r =
+      run("render " + kScene + " --width 48 --height 32 --workers 2 --html " + path("run.html") +
+          " --report " + path("run.json") + " -o " + path("run.png") + " -q");
   ASSERT_EQ(r.exitCode, 0) << r.output;
   const std::string page = readWholeFile(path("run.html"));
   const nlohmann::json saved = nlohmann::json::parse(readWholeFile(path("run.json")));
@@ -97,7 +97,8 @@ TEST_F(ReportCliTest, BadInputIsExitCodeTwoAndWritesNothing) {
   EXPECT_EQ(r.exitCode, 2);
   EXPECT_NE(r.output.find("cannot read the report"), std::string::npos) << r.output;
 
-  const std::string bad = write("bad.json", "{\n  \"strategy\": \"reservoir\",\n  \"elapsed_s\": ,\n}\n");
+  const std::string bad =
+      write("bad.json", "{\n  \"strategy\": \"reservoir\",\n  \"elapsed_s\": ,\n}\n");
   r = run("report " + bad + " -o " + path("page.html"));
   EXPECT_EQ(r.exitCode, 2);
   EXPECT_NE(r.output.find("bad.json:3:16: error:"), std::string::npos) << r.output;
@@ -113,8 +114,9 @@ TEST_F(ReportCliTest, BadInputIsExitCodeTwoAndWritesNothing) {
 TEST_F(ReportCliTest, ExperimentIndexGathersEverySummaryInTheFolder) {
   fs::create_directories(path("out"));
   // A summary left by an earlier experiment in the same folder.
-  write("out/table3.md", "# Table III: serial times\n\nSome **bold** text and `code`.\n\n"
-                         "| case | seconds |\n|---|---|\n| A | 2.5 |\n");
+  write("out/table3.md",
+        "# Table III: serial times\n\nSome **bold** text and `code`.\n\n"
+        "| case | seconds |\n|---|---|\n| A | 2.5 |\n");
   write("out/table3.csv", "case,seconds\nA,2.5\n");
   const Result r = run("experiment scale --quick --quiet --strategies blocks,self --scene " +
                        std::string(PRT_SOURCE_DIR) + "/scenes/complex.scene --out " + path("out"));

@@ -36,8 +36,8 @@ std::string locate(const std::string& path, const std::string& reportPath) {
 }
 
 std::string output(const nlohmann::json& doc, const char* name) {
-  const nlohmann::json& outputs = doc.value("context", nlohmann::json::object())
-                                      .value("outputs", nlohmann::json::object());
+  const nlohmann::json& outputs =
+      doc.value("context", nlohmann::json::object()).value("outputs", nlohmann::json::object());
   return outputs.contains(name) && outputs[name].is_string() ? outputs[name].get<std::string>()
                                                              : "";
 }
@@ -49,8 +49,10 @@ PagePicture picture(const ReportOptions& o, const nlohmann::json& doc) {
       if (const std::string found = locate(map, o.reportPath); !found.empty()) {
         return costPicture(readCostMapFile(found));
       }
-      return PagePicture{"", "", false, "The cost map '" + map + "' named by the report was not "
-                                        "found."};
+      return PagePicture{"", "", false,
+                         "The cost map '" + map +
+                             "' named by the report was not "
+                             "found."};
     }
     const auto serial = doc.value("serial_s", 0.0);
     const int width = doc.value("width", 0), height = doc.value("height", 0);
@@ -65,9 +67,10 @@ PagePicture picture(const ReportOptions& o, const nlohmann::json& doc) {
   }
   return PagePicture{"", "", true,
                      image.empty() ? "The report names no image; pass --image FILE."
-                                   : "The image '" + image + "' named by the report was not "
-                                     "found (looked as written and beside the report); pass "
-                                     "--image FILE."};
+                                   : "The image '" + image +
+                                         "' named by the report was not "
+                                         "found (looked as written and beside the report); pass "
+                                         "--image FILE."};
 }
 
 int runReport(const ReportOptions& o) {

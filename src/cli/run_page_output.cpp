@@ -1,10 +1,9 @@
 #include "cli/run_page_output.h"
 
-#include <cctype>
-#include <cstdio>
-
 #include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 
 #include "core/input_error.h"
@@ -91,15 +90,17 @@ PagePicture costPicture(const CostMap& costs, int maxSide) {
   for (uint64_t p = 0; p < costs.pixelCount(); ++p) {
     const double v = std::sqrt(std::clamp(costs.pixelSeconds(p) / top, 0.0, 1.0));
     // Dark blue through magenta to pale yellow, in linear light.
-    const Color c(std::pow(std::clamp(1.6 * v, 0.0, 1.0), 2.2),
-                  std::pow(std::clamp(1.6 * v - 0.6, 0.0, 1.0), 2.2),
-                  std::pow(std::clamp(0.35 + 0.9 * v - 1.1 * v * v + 0.6 * v * v * v, 0.0, 1.0), 2.2));
+    const Color c(
+        std::pow(std::clamp(1.6 * v, 0.0, 1.0), 2.2),
+        std::pow(std::clamp(1.6 * v - 0.6, 0.0, 1.0), 2.2),
+        std::pow(std::clamp(0.35 + 0.9 * v - 1.1 * v * v + 0.6 * v * v * v, 0.0, 1.0), 2.2));
     heat.set(p, c);
   }
   PagePicture picture;
   picture.png = encodePng(shrink(heat, maxSide));
-  picture.caption = "The cost map the simulator replayed: each pixel's render time, brighter "
-                    "where costlier (nothing is rendered in a simulated run).";
+  picture.caption =
+      "The cost map the simulator replayed: each pixel's render time, brighter "
+      "where costlier (nothing is rendered in a simulated run).";
   picture.isRender = false;
   return picture;
 }
@@ -126,10 +127,11 @@ void writeRenderReportAndPage(const RenderOptions& o, const Scene& scene, const 
   if (!slowdowns.empty()) context.parameters.emplace_back("slowdown", slowdowns);
   context.parameters.emplace_back("worker_timeout_s", parameterText(o.workerTimeoutSeconds));
   context.outputs.emplace_back("image", scene.image.output);
-  for (const auto& [name, path] : {std::pair<const char*, const std::string&>{"report", o.reportPath},
-                                   {"html", o.htmlPath},
-                                   {"trace", o.tracePath},
-                                   {"ownership", o.ownershipPath}}) {
+  for (const auto& [name, path] :
+       {std::pair<const char*, const std::string&>{"report", o.reportPath},
+        {"html", o.htmlPath},
+        {"trace", o.tracePath},
+        {"ownership", o.ownershipPath}}) {
     if (!path.empty()) context.outputs.emplace_back(name, path);
   }
   const std::vector<int32_t> owner(run.owner.begin(), run.owner.end());

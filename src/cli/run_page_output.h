@@ -23,8 +23,8 @@ namespace prt::cli {
 void checkHtmlPath(const std::string& path);
 
 // The strategy's own parameters (those it reads from StrategyOptions), by name.
-std::vector<std::pair<std::string, std::string>> strategyParameters(
-    const std::string& strategy, const StrategyOptions& options);
+std::vector<std::pair<std::string, std::string>> strategyParameters(const std::string& strategy,
+                                                                    const StrategyOptions& options);
 
 // A number as the command line would take it: "80", "0.5".
 std::string parameterText(double value);

@@ -118,14 +118,17 @@ int runSimulate(const SimulateOptions& o) {
     context.dateUtc = utcNow();
     context.parameters = strategyParameters(options.strategy, options.strategyOptions);
     context.parameters.emplace_back("batch_pixels", std::to_string(o.batchPixels));
-    context.parameters.emplace_back("batch_overhead_us", parameterText(o.batchOverheadMicroseconds));
+    context.parameters.emplace_back("batch_overhead_us",
+                                    parameterText(o.batchOverheadMicroseconds));
     context.parameters.emplace_back("latency_us", parameterText(o.latencyMicroseconds));
     context.parameters.emplace_back("bandwidth_mbps", parameterText(o.bandwidthMbps));
-    context.parameters.emplace_back("master_service_us", parameterText(o.masterServiceMicroseconds));
-    for (const auto& [name, path] : {std::pair<const char*, const std::string&>{"cost_map", o.costMapPath},
-                                     {"report", o.reportPath},
-                                     {"html", o.htmlPath},
-                                     {"trace", o.tracePath}}) {
+    context.parameters.emplace_back("master_service_us",
+                                    parameterText(o.masterServiceMicroseconds));
+    for (const auto& [name, path] :
+         {std::pair<const char*, const std::string&>{"cost_map", o.costMapPath},
+          {"report", o.reportPath},
+          {"html", o.htmlPath},
+          {"trace", o.tracePath}}) {
       if (!path.empty()) context.outputs.emplace_back(name, path);
     }
     writeReportAndPage(o.reportPath, o.htmlPath,

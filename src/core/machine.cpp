@@ -28,8 +28,8 @@ std::string hostName() {
 }
 
 std::string describeMachine() {
-  std::string text = cpuModel() + ", " + std::to_string(hardwareThreads()) + " cores, host " +
-                     hostName();
+  std::string text =
+      cpuModel() + ", " + std::to_string(hardwareThreads()) + " cores, host " + hostName();
   struct utsname system {};
   if (::uname(&system) == 0) {
     text += std::string(", ") + system.sysname + " " + system.release + " " + system.machine;

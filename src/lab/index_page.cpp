@@ -157,8 +157,11 @@ std::string writeExperimentIndex(const std::string& outDir) {
     }
     body += "</section>\n";
   }
-  if (contents.empty()) body += "<section><p>No experiment summaries here yet.</p></section>\n";
-  else body.insert(body.find("<main>\n") + 7, "<section><b>Experiments:</b> " + contents + "</section>\n");
+  if (contents.empty())
+    body += "<section><p>No experiment summaries here yet.</p></section>\n";
+  else
+    body.insert(body.find("<main>\n") + 7,
+                "<section><b>Experiments:</b> " + contents + "</section>\n");
   body += "</main>\n<footer>Made by prt experiment.</footer>\n";
   const std::string path = (fs::path(outDir) / "index.html").string();
   writeFileAtomically(path, htmlDocument("PRT experiments", body));

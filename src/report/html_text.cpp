@@ -13,12 +13,23 @@ std::string escapeHtml(std::string_view text) {
   out.reserve(text.size());
   for (char c : text) {
     switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&#39;"; break;
-      default: out += c;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      case '\'':
+        out += "&#39;";
+        break;
+      default:
+        out += c;
     }
   }
   return out;
@@ -41,7 +52,8 @@ std::string base64(std::string_view bytes) {
   }
   if (i < bytes.size()) {
     uint32_t v = static_cast<uint32_t>(static_cast<unsigned char>(bytes[i])) << 16;
-    if (i + 1 < bytes.size()) v |= static_cast<uint32_t>(static_cast<unsigned char>(bytes[i + 1])) << 8;
+    if (i + 1 < bytes.size())
+      v |= static_cast<uint32_t>(static_cast<unsigned char>(bytes[i + 1])) << 8;
     out += kDigits[v >> 18];
     out += kDigits[(v >> 12) & 63];
     out += i + 1 < bytes.size() ? kDigits[(v >> 6) & 63] : '=';
@@ -120,8 +132,9 @@ std::string htmlDocument(const std::string& title, const std::string& body,
                          const std::string& extraHead) {
   return "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
          "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
-         "<title>" + escapeHtml(title) + "</title>\n<style>\n" + std::string(kPageStyle) +
-         "</style>\n" + extraHead + "</head>\n<body>\n" + body + "</body>\n</html>\n";
+         "<title>" +
+         escapeHtml(title) + "</title>\n<style>\n" + std::string(kPageStyle) + "</style>\n" +
+         extraHead + "</head>\n<body>\n" + body + "</body>\n</html>\n";
 }
 
 }  // namespace prt

@@ -6,8 +6,7 @@ namespace prt {
 namespace {
 
 TEST(HtmlText, EscapesMarkup) {
-  EXPECT_EQ(escapeHtml("<a href=\"x\">&'</a>"),
-            "&lt;a href=&quot;x&quot;&gt;&amp;&#39;&lt;/a&gt;");
+  EXPECT_EQ(escapeHtml("<a href=\"x\">&'</a>"), "&lt;a href=&quot;x&quot;&gt;&amp;&#39;&lt;/a&gt;");
 }
 
 TEST(HtmlText, Base64MatchesRfc4648) {

@@ -58,9 +58,9 @@ nlohmann::json ownershipJson(const std::vector<int32_t>& owner, int width, int h
   uint64_t length = 0;
   for (int y = 0; y < h; ++y) {
     for (int x = 0; x < w; ++x) {
-      const size_t source = static_cast<size_t>(y) * static_cast<size_t>(step) *
-                                static_cast<size_t>(width) +
-                            static_cast<size_t>(x) * static_cast<size_t>(step);
+      const size_t source =
+          static_cast<size_t>(y) * static_cast<size_t>(step) * static_cast<size_t>(width) +
+          static_cast<size_t>(x) * static_cast<size_t>(step);
       const int64_t o = source < owner.size() ? std::max<int64_t>(-1, owner[source]) : -1;
       if (o == current) {
         ++length;

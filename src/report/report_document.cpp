@@ -25,8 +25,8 @@ SourceLocation locate(const std::string& text, size_t offset, const std::string&
   }
   where.column = static_cast<int>(std::min(offset, text.size()) - lineStart) + 1;
   const size_t lineEnd = text.find('\n', lineStart);
-  where.lineText = text.substr(lineStart, lineEnd == std::string::npos ? std::string::npos
-                                                                       : lineEnd - lineStart);
+  where.lineText = text.substr(
+      lineStart, lineEnd == std::string::npos ? std::string::npos : lineEnd - lineStart);
   return where;
 }
 
@@ -47,11 +47,14 @@ json reportDocument(const RunReport& report, const RunContext& context,
   json parameters = json::object(), outputs = json::object();
   for (const auto& [name, value] : context.parameters) parameters[name] = value;
   for (const auto& [name, value] : context.outputs) outputs[name] = value;
-  doc["context"] = {{"command_line", context.commandLine}, {"scene", context.scene},
-                    {"machine", context.machine},          {"date", context.dateUtc},
-                    {"parameters", parameters},            {"outputs", outputs}};
-  doc["timeline"] = timelineJson(events, static_cast<int>(report.workers.size()),
-                                 report.elapsedSeconds);
+  doc["context"] = {{"command_line", context.commandLine},
+                    {"scene", context.scene},
+                    {"machine", context.machine},
+                    {"date", context.dateUtc},
+                    {"parameters", parameters},
+                    {"outputs", outputs}};
+  doc["timeline"] =
+      timelineJson(events, static_cast<int>(report.workers.size()), report.elapsedSeconds);
   const size_t pixels =
       static_cast<size_t>(report.info.width) * static_cast<size_t>(report.info.height);
   if (!owner.empty() && owner.size() == pixels) {

@@ -37,8 +37,7 @@ std::string utcNow();
 // `owner`: per pixel of the width x height image, the worker that rendered it (-1: none);
 // empty: no ownership map.
 nlohmann::json reportDocument(const RunReport& report, const RunContext& context,
-                              const std::vector<Event>& events,
-                              const std::vector<int32_t>& owner);
+                              const std::vector<Event>& events, const std::vector<int32_t>& owner);
 
 // The document as the file holds it: indented for reading, except the bulky "timeline" and
 // "ownership_map", one line each.

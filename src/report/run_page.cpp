@@ -21,8 +21,8 @@ using namespace page;  // the page's forgiving field access, chips, the worker t
 
 std::string card(const std::string& key, const std::string& value, const std::string& label,
                  const std::string& tip, const json& raw, const std::string& cls = "") {
-  return "<div class=\"card" + (cls.empty() ? "" : " " + cls) + "\" data-key=\"" +
-         escapeHtml(key) + "\" data-value=\"" + escapeHtml(raw.dump()) + "\"><div class=\"value\">" +
+  return "<div class=\"card" + (cls.empty() ? "" : " " + cls) + "\" data-key=\"" + escapeHtml(key) +
+         "\" data-value=\"" + escapeHtml(raw.dump()) + "\"><div class=\"value\">" +
          escapeHtml(value) + "</div><div class=\"label\">" + escapeHtml(label) +
          "</div><div class=\"tip\">" + escapeHtml(tip) + "</div></div>\n";
 }
@@ -54,8 +54,10 @@ std::string glance(const json& r) {
   s += "<p>";
   if (speedup) {
     s += "The " + formatCount(workers) + " workers finished the image <b>" +
-         formatNumber(*speedup) + " times faster</b> than one machine alone (speed-up). Their "
-         "speeds allowed at most " + formatNumber(masu) + " (MASU), so the balancing reached <b>" +
+         formatNumber(*speedup) +
+         " times faster</b> than one machine alone (speed-up). Their "
+         "speeds allowed at most " +
+         formatNumber(masu) + " (MASU), so the balancing reached <b>" +
          (asu ? formatPercent(*asu) : std::string("n/a")) + "</b> of the ideal (ASU). ";
   } else {
     s += "The workers' speeds allow a speed-up of at most " + formatNumber(masu) +
@@ -102,8 +104,10 @@ std::string glance(const json& r) {
       const auto [lo, hi] = std::minmax_element(finished.begin(), finished.end());
       const bool groups = r["timeline"].value("aggregated", false);
       s += " The " + std::string(groups ? "groups of workers" : "workers") +
-           " sent their last results within <b>" + formatSeconds(*hi - *lo) + "</b> of one "
-           "another (" + formatPercent((*hi - *lo) / elapsed) +
+           " sent their last results within <b>" + formatSeconds(*hi - *lo) +
+           "</b> of one "
+           "another (" +
+           formatPercent((*hi - *lo) / elapsed) +
            " of the run): the smaller, the better the work was shared out.";
     }
   }
@@ -111,10 +115,27 @@ std::string glance(const json& r) {
   return s;
 }
 
-const std::set<std::string> kKnownKeys = {
-    "driver", "strategy", "width", "height", "samples_per_pixel", "drt", "workers_count",
-    "elapsed_s", "serial_s", "speedup", "efficiency", "masu", "asu", "master_speed_index_s",
-    "messages", "bytes", "rays", "workers", "context", "timeline", "ownership_map"};
+const std::set<std::string> kKnownKeys = {"driver",
+                                          "strategy",
+                                          "width",
+                                          "height",
+                                          "samples_per_pixel",
+                                          "drt",
+                                          "workers_count",
+                                          "elapsed_s",
+                                          "serial_s",
+                                          "speedup",
+                                          "efficiency",
+                                          "masu",
+                                          "asu",
+                                          "master_speed_index_s",
+                                          "messages",
+                                          "bytes",
+                                          "rays",
+                                          "workers",
+                                          "context",
+                                          "timeline",
+                                          "ownership_map"};
 
 std::string measures(const json& r) {
   const bool simulated = text(r, "driver") == "simulated";
@@ -124,11 +145,12 @@ std::string measures(const json& r) {
             simulated ? "virtual time from the first message to the last result"
                       : "wall time from sending the scene to the last result",
             r.value("elapsed_s", json()));
-  s += card("speedup", speedup ? formatNumber(*speedup) + " ×" : "n/a", "speed-up",
-            "serial time " + (number(r, "serial_s") ? formatSeconds(*number(r, "serial_s"))
-                                                    : std::string("unknown")) +
-                " / elapsed",
-            r.value("speedup", json()));
+  s += card(
+      "speedup", speedup ? formatNumber(*speedup) + " ×" : "n/a", "speed-up",
+      "serial time " +
+          (number(r, "serial_s") ? formatSeconds(*number(r, "serial_s")) : std::string("unknown")) +
+          " / elapsed",
+      r.value("speedup", json()));
   s += card("masu", formatNumber(numberOr(r, "masu", 0)), "MASU",
             "most the speeds allow: sum over workers of serial speed index / worker's",
             r.value("masu", json()));
@@ -152,8 +174,8 @@ std::string measures(const json& r) {
     const auto known = kLabels.find(key);
     const std::string label = known != kLabels.end() ? known->second.first : humanKey(key);
     const std::string tip = known != kLabels.end() ? known->second.second : "from the report";
-    const bool fault = known != kLabels.end() &&
-                       ((value.is_array() && !value.empty()) || (value.is_number() && value.get<double>() > 0));
+    const bool fault = known != kLabels.end() && ((value.is_array() && !value.empty()) ||
+                                                  (value.is_number() && value.get<double>() > 0));
     std::string shown = genericValue(value), detail = tip;
     if (value.is_array()) {  // a list (of workers, say): its length, the list in the tip
       shown = formatCount(value.size());
@@ -161,7 +183,8 @@ std::string measures(const json& r) {
     }
     extra += card(key, shown, label, detail, value, fault ? "fault" : "");
   }
-  if (!extra.empty()) s += "<h3>Faults, recovery and other measures</h3><div class=\"cards\">\n" + extra + "</div>\n";
+  if (!extra.empty())
+    s += "<h3>Faults, recovery and other measures</h3><div class=\"cards\">\n" + extra + "</div>\n";
   s += "</section>\n";
   return s;
 }
@@ -201,7 +224,8 @@ std::string mapsSection(const json& r, const PagePicture& picture,
            "</button>";
     }
   } else {
-    s += "<span class=\"note\">" + formatCount(n) + " workers: too many for a legend; hover "
+    s += "<span class=\"note\">" + formatCount(n) +
+         " workers: too many for a legend; hover "
          "the map or a timeline row to find one.</span>";
   }
   s += "</div>\n<p id=\"picked\" class=\"picked\">Hover the map, the legend, a timeline row or a "
@@ -212,8 +236,9 @@ std::string mapsSection(const json& r, const PagePicture& picture,
 std::string timelineSection(const json& r, const std::vector<std::string>& colours) {
   std::string s = "<section><h2>Timeline</h2>\n";
   if (!r.contains("timeline")) {
-    return s + "<p class=\"note\">This report has no timeline (it was written by a prt that "
-               "did not record one).</p></section>\n";
+    return s +
+           "<p class=\"note\">This report has no timeline (it was written by a prt that "
+           "did not record one).</p></section>\n";
   }
   const json& t = r["timeline"];
   s += "<p class=\"lead\">Top: the share of the workers rendering at each moment; the white "
@@ -221,12 +246,15 @@ std::string timelineSection(const json& r, const std::vector<std::string>& colou
        std::string(t.value("aggregated", false) ? "group of workers" : "worker") +
        ". Hover anything for details.</p>\n";
   s += "<div class=\"timeline-box\">" + timelineSvg(t, colours) + "</div>\n";
-  s += "<div class=\"legend\"><span>" + chip("#4e79a7") + "rendering (in the worker's colour)</span>"
+  s += "<div class=\"legend\"><span>" + chip("#4e79a7") +
+       "rendering (in the worker's colour)</span>"
        "<span><span class=\"chip setup-chip\"></span>setting up (scene, speed index)</span>"
        "<span><span class=\"chip waiting-chip\"></span>waiting</span>"
-       "<span><span class=\"chip tick-chip\"></span>communicating (a message sent or received)</span>"
+       "<span><span class=\"chip tick-chip\"></span>communicating (a message sent or "
+       "received)</span>"
        "<span><span class=\"chip lost-chip\"></span>lost</span>"
-       "<span><span class=\"chip mark-chip\"></span>other events (reissued tasks, ...)</span></div>\n";
+       "<span><span class=\"chip mark-chip\"></span>other events (reissued tasks, "
+       "...)</span></div>\n";
   if (t.value("aggregated", false)) {
     s += "<p class=\"note\">" + formatCount(t.value("workers", 0)) +
          " workers are too many to draw one by one: each row stands for " +
@@ -271,8 +299,8 @@ std::string detailsSection(const json& r) {
   if (const auto serial = number(r, "serial_s")) row("serial time", formatSeconds(*serial));
   row("serial machine's speed index", formatSeconds(numberOr(r, "master_speed_index_s", 0)));
   if (!text(context, "command_line").empty()) {
-    row("command line", "<code class=\"command\">" + escapeHtml(text(context, "command_line")) +
-                            "</code>");
+    row("command line",
+        "<code class=\"command\">" + escapeHtml(text(context, "command_line")) + "</code>");
   }
   row("machine", escapeHtml(text(context, "machine")) +
                      (driver == "mpi" ? " (the master's; workers may run elsewhere)" : ""));
@@ -321,20 +349,21 @@ std::string runPageHtml(const json& r, const PagePicture& picture) {
   const std::string driver = text(r, "driver");
   const std::string title = "PRT run: " + text(r, "strategy") + " on " + formatCount(n) +
                             " workers" + (driver.empty() ? "" : " (" + driver + ")");
-  std::string body = "<header><h1>" + escapeHtml(title) + "</h1><p class=\"sub\">" +
-                     escapeHtml(text(r.value("context", json::object()), "scene")) + " · " +
-                     std::to_string(r.value("width", 0)) + "×" + std::to_string(r.value("height", 0)) +
-                     " · " + escapeHtml(text(r.value("context", json::object()), "date")) +
-                     "</p></header>\n<main>\n";
+  std::string body =
+      "<header><h1>" + escapeHtml(title) + "</h1><p class=\"sub\">" +
+      escapeHtml(text(r.value("context", json::object()), "scene")) + " · " +
+      std::to_string(r.value("width", 0)) + "×" + std::to_string(r.value("height", 0)) + " · " +
+      escapeHtml(text(r.value("context", json::object()), "date")) + "</p></header>\n<main>\n";
   body += glance(r);
   body += measures(r);
   body += mapsSection(r, picture, colours);
   body += timelineSection(r, colours);
   body += workersSection(r, colours);
   body += detailsSection(r);
-  body += "</main>\n<footer>Made by prt. The run's report is embedded in this file as JSON "
-          "(<code>script#prt-run</code>); <code>prt report</code> draws this page again from "
-          "the saved report.</footer>\n";
+  body +=
+      "</main>\n<footer>Made by prt. The run's report is embedded in this file as JSON "
+      "(<code>script#prt-run</code>); <code>prt report</code> draws this page again from "
+      "the saved report.</footer>\n";
 
   double totalPixels = 0;
   for (const json& w : r["workers"]) totalPixels += numberOr(w, "pixels", 0);
@@ -342,8 +371,8 @@ std::string runPageHtml(const json& r, const PagePicture& picture) {
   for (const json& w : r["workers"]) info.push_back(workerInfo(w, r, totalPixels));
   const json page = {{"colours", colours}, {"info", info}, {"picture_is_render", picture.isRender}};
   body += "<script type=\"application/json\" id=\"prt-run\">" + jsonForScript(r) + "</script>\n";
-  body += "<script type=\"application/json\" id=\"prt-page\">" + jsonForScript(page) +
-          "</script>\n";
+  body +=
+      "<script type=\"application/json\" id=\"prt-page\">" + jsonForScript(page) + "</script>\n";
   body += "<script>\n" + std::string(kPageScript) + "</script>\n";
   return htmlDocument(title, body);
 }

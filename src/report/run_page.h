@@ -22,10 +22,10 @@
 namespace prt {
 
 struct PagePicture {
-  std::string png;      // PNG bytes; empty: no picture
-  std::string caption;  // under the picture
-  bool isRender = true; // the rendered image (the ownership map is then shaded by it)
-  std::string missing;  // why there is no picture, shown in its place
+  std::string png;       // PNG bytes; empty: no picture
+  std::string caption;   // under the picture
+  bool isRender = true;  // the rendered image (the ownership map is then shaded by it)
+  std::string missing;   // why there is no picture, shown in its place
 };
 
 std::string runPageHtml(const nlohmann::json& report, const PagePicture& picture);

@@ -62,8 +62,8 @@ SampleRun fourWorkers() {
   for (int w = 0; w < 4; ++w) {
     run.events.push_back({EventKind::Setup, w, 0, 0.1 * (w + 1), 0, 0, 0, ""});
     run.events.push_back({EventKind::Compute, w, 0.5, 1.5 + 0.1 * w, 8, 0, 0, ""});
-    run.events.push_back({EventKind::MessageSent, w, 1.5 + 0.1 * w, 1.5 + 0.1 * w, 0, 120, -1,
-                          "Results"});
+    run.events.push_back(
+        {EventKind::MessageSent, w, 1.5 + 0.1 * w, 1.5 + 0.1 * w, 0, 120, -1, "Results"});
     for (int x = 0; x < 8; ++x) run.owner.push_back(w);
   }
   run.report = makeReport(info, run.events, 2.0);
@@ -93,8 +93,10 @@ TEST(RunPage, EmbedsTheReportItWasDrawnFrom) {
 TEST(RunPage, MeasuresOnThePageMatchTheJsonReport) {
   const SampleRun run = fourWorkers();
   const json saved = json::parse(run.report.toJson());
-  const std::string html = runPageHtml(reportDocument(run.report, context(), run.events, run.owner), {});
-  for (const char* key : {"elapsed_s", "speedup", "efficiency", "masu", "asu", "messages", "bytes"}) {
+  const std::string html =
+      runPageHtml(reportDocument(run.report, context(), run.events, run.owner), {});
+  for (const char* key :
+       {"elapsed_s", "speedup", "efficiency", "masu", "asu", "messages", "bytes"}) {
     EXPECT_EQ(valueOf(html, key), saved[key]) << key;
   }
   // What a reader sees: 3.0 s serial over 2.0 s is a speed-up of 1.50; MASU 0.5+0.5+0.25+0.25.
@@ -107,23 +109,22 @@ TEST(RunPage, MeasuresOnThePageMatchTheJsonReport) {
   for (const json& w : saved["workers"]) {
     row = html.find("<tr class=\"worker", row + 1);
     ASSERT_NE(row, std::string::npos);
-    for (const char* key : {"worker", "speed_index_s", "slowdown", "tasks", "pixels", "busy_s",
-                            "idle_s", "lost"}) {
+    for (const char* key :
+         {"worker", "speed_index_s", "slowdown", "tasks", "pixels", "busy_s", "idle_s", "lost"}) {
       EXPECT_EQ(valueOf(html, key, row), w[key]) << key;
     }
-    EXPECT_EQ(valueOf(html, "messages", row), w["messages_sent"].get<int>() +
-                                                  w["messages_received"].get<int>());
+    EXPECT_EQ(valueOf(html, "messages", row),
+              w["messages_sent"].get<int>() + w["messages_received"].get<int>());
   }
 }
 
 TEST(RunPage, ShowsTheContextAndFetchesNothing) {
   const SampleRun run = fourWorkers();
-  const std::string html =
-      runPageHtml(reportDocument(run.report, context(), run.events, run.owner),
-                  PagePicture{"\x89PNG fake", "the image", true, ""});
-  for (const char* text : {"prt render scenes/complex.scene --workers 4 --html run.html",
-                           "a test machine", "initial_percent", "<b>reservoir</b>",
-                           "data:image/png;base64,", "<svg id=\"timeline\""}) {
+  const std::string html = runPageHtml(reportDocument(run.report, context(), run.events, run.owner),
+                                       PagePicture{"\x89PNG fake", "the image", true, ""});
+  for (const char* text :
+       {"prt render scenes/complex.scene --workers 4 --html run.html", "a test machine",
+        "initial_percent", "<b>reservoir</b>", "data:image/png;base64,", "<svg id=\"timeline\""}) {
     EXPECT_NE(html.find(text), std::string::npos) << text;
   }
   EXPECT_FALSE(std::regex_search(html, std::regex("(src|href)=\"(https?:)?//")));
@@ -156,7 +157,8 @@ TEST(RunPage, SaysWhenAWorkerWasLost) {
   SampleRun run = fourWorkers();
   run.events.push_back({EventKind::WorkerLost, 3, 1.25, 1.25, 0, 0, 0, ""});
   const RunReport report = makeReport(run.report.info, run.events, 2.0);
-  const std::string html = runPageHtml(reportDocument(report, context(), run.events, run.owner), {});
+  const std::string html =
+      runPageHtml(reportDocument(report, context(), run.events, run.owner), {});
   EXPECT_NE(html.find("Worker 3 (at 1.25 s) was lost</b>"), std::string::npos);
   EXPECT_NE(html.find("class=\"lost\"><title>worker 3 lost at 1.25 s</title>"), std::string::npos);
 }

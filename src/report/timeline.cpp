@@ -9,7 +9,9 @@ namespace {
 
 using nlohmann::json;
 
-double rounded(double share) { return std::round(share * 1000) / 1000; }
+double rounded(double share) {
+  return std::round(share * 1000) / 1000;
+}
 
 // Adds [start, end) seconds, weighted by `weight`, to the per-tick totals.
 void addOverlap(std::vector<double>& bins, double tickSeconds, double start, double end,
@@ -139,8 +141,10 @@ json timelineJson(const std::vector<Event>& events, int workers, double elapsedS
           ++row.dropped;
           break;
         }
-        json mark = {{"kind", eventKindName(e.kind)}, {"label", markLabel(e)},
-                     {"t_s", e.start}, {"worker", e.worker}};
+        json mark = {{"kind", eventKindName(e.kind)},
+                     {"label", markLabel(e)},
+                     {"t_s", e.start},
+                     {"worker", e.worker}};
         if (e.end > e.start) mark["end_s"] = e.end;
         row.marks.push_back(std::move(mark));
         break;
@@ -148,9 +152,8 @@ json timelineJson(const std::vector<Event>& events, int workers, double elapsedS
     }
   }
 
-  json out = {{"elapsed_s", elapsedSeconds}, {"ticks", ticks},
-              {"tick_s", tickSeconds},       {"share_bins", bins},
-              {"workers", n},                {"workers_per_row", perRow},
+  json out = {{"elapsed_s", elapsedSeconds}, {"ticks", ticks}, {"tick_s", tickSeconds},
+              {"share_bins", bins},          {"workers", n},   {"workers_per_row", perRow},
               {"aggregated", aggregated}};
   out["rendering_share"] = shares(rendering, binSeconds * n);
   json rowsJson = json::array();
@@ -165,8 +168,7 @@ json timelineJson(const std::vector<Event>& events, int workers, double elapsedS
       r["rendering"] = row.rendering.toJson();
       r["setup"] = row.setup.toJson();
       std::sort(row.messages.begin(), row.messages.end());
-      row.messages.erase(std::unique(row.messages.begin(), row.messages.end()),
-                         row.messages.end());
+      row.messages.erase(std::unique(row.messages.begin(), row.messages.end()), row.messages.end());
       r["messages"] = row.messages;
     }
     r["marks"] = std::move(row.marks);

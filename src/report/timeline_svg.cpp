@@ -70,7 +70,7 @@ std::string timelineSvg(const json& timeline, const std::vector<std::string>& co
   auto xs = [&](double seconds) { return kLeft + kPlot * std::clamp(seconds / end, 0.0, 1.0); };
   auto colourOf = [&](int w) {
     return w >= 0 && static_cast<size_t>(w) < colours.size() ? colours[static_cast<size_t>(w)]
-                                                            : std::string("#4e79a7");
+                                                             : std::string("#4e79a7");
   };
 
   std::string s = "<svg id=\"timeline\" viewBox=\"0 0 " + num(kWidth) + " " + num(height) +
@@ -92,7 +92,8 @@ std::string timelineSvg(const json& timeline, const std::vector<std::string>& co
               num(xb(static_cast<double>(t + 1), share.size()));
     }
     path += "V" + num(kShareHeight) + "Z";
-    s += "<path d=\"" + path + "\" class=\"share-area\"><title>share of the workers rendering"
+    s += "<path d=\"" + path +
+         "\" class=\"share-area\"><title>share of the workers rendering"
          "</title></path>";
   }
   s += "<text x=\"" + num(kLeft - 6) + "\" y=\"11\" class=\"axis end\">100 %</text>";
@@ -109,9 +110,9 @@ std::string timelineSvg(const json& timeline, const std::vector<std::string>& co
     const std::string colour = colourOf(first);
     s += "<g class=\"row\" data-first=\"" + std::to_string(first) + "\" data-last=\"" +
          std::to_string(last) + "\"><title>" + escapeHtml(rowLabel(first, last)) +
-         (row.contains("finished_s") ? ", last result at " +
-                                           formatSeconds(row["finished_s"].get<double>())
-                                     : std::string()) +
+         (row.contains("finished_s")
+              ? ", last result at " + formatSeconds(row["finished_s"].get<double>())
+              : std::string()) +
          "</title>";
     s += "<rect x=\"" + num(kLeft) + "\" y=\"" + num(y) + "\" width=\"" + num(kPlot) +
          "\" height=\"" + num(h) + "\" class=\"waiting\"/>";
@@ -151,8 +152,8 @@ std::string timelineSvg(const json& timeline, const std::vector<std::string>& co
           if (level > 0) {
             const double a = xb(static_cast<double>(t), values.size());
             const double b = xb(static_cast<double>(u), values.size());
-            paths[std::min(level, 5) - 1] += "M" + num(a) + " " + num(y) + "h" + num(b - a) +
-                                             "v" + num(h) + "H" + num(a) + "Z";
+            paths[std::min(level, 5) - 1] +=
+                "M" + num(a) + " " + num(y) + "h" + num(b - a) + "v" + num(h) + "H" + num(a) + "Z";
           }
           t = u;
         }
@@ -178,8 +179,8 @@ std::string timelineSvg(const json& timeline, const std::vector<std::string>& co
         }
         const double cx = xs(t), cy = y + h / 2, d = std::max(3.0, h / 2);
         s += "<path d=\"M" + num(cx) + " " + num(cy - d) + "l" + num(d) + " " + num(d) + "l-" +
-             num(d) + " " + num(d) + "l-" + num(d) + " -" + num(d) + "Z\" class=\"mark\">" +
-             title + "</path>";
+             num(d) + " " + num(d) + "l-" + num(d) + " -" + num(d) + "Z\" class=\"mark\">" + title +
+             "</path>";
       }
     }
     if (rowHeight >= 9 || r % static_cast<size_t>(std::ceil(9 / rowHeight)) == 0) {

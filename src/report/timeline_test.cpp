@@ -67,7 +67,8 @@ TEST(Timeline, ManyWorkersAreGroupedWithShares) {
 
 TEST(Timeline, MarksPerRowAreCapped) {
   std::vector<Event> e;
-  for (int i = 0; i < 250; ++i) e.push_back({EventKind::WorkerLost, 0, 0.01 * i, 0.01 * i, 0, 0, 0, ""});
+  for (int i = 0; i < 250; ++i)
+    e.push_back({EventKind::WorkerLost, 0, 0.01 * i, 0.01 * i, 0, 0, 0, ""});
   const json t = timelineJson(e, 1, 3.0, {100, 64, 100});
   EXPECT_EQ(t["rows"][0]["marks"].size(), 100u);
   EXPECT_EQ(t["marks_dropped"], 150);

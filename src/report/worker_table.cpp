@@ -10,8 +10,8 @@ namespace prt::page {
 namespace {
 
 const std::set<std::string> kKnownWorkerKeys = {
-    "worker", "speed_index_s", "slowdown", "tasks", "pixels", "busy_s", "idle_s",
-    "messages_sent", "messages_received", "bytes_sent", "bytes_received", "lost"};
+    "worker", "speed_index_s", "slowdown",          "tasks",      "pixels",         "busy_s",
+    "idle_s", "messages_sent", "messages_received", "bytes_sent", "bytes_received", "lost"};
 
 std::string workerRow(const json& w, const json& r, double totalPixels, double elapsed,
                       const std::vector<std::string>& extraKeys, const std::string& colour) {
@@ -20,8 +20,8 @@ std::string workerRow(const json& w, const json& r, double totalPixels, double e
   const double index = numberOr(w, "speed_index_s", 0);
   const double busyShare = elapsed > 0 ? numberOr(w, "busy_s", 0) / elapsed : 0;
   std::string s = "<tr class=\"worker" + std::string(w.value("lost", false) ? " lost-row" : "") +
-                  "\" data-first=\"" + std::to_string(id) + "\" data-last=\"" +
-                  std::to_string(id) + "\">";
+                  "\" data-first=\"" + std::to_string(id) + "\" data-last=\"" + std::to_string(id) +
+                  "\">";
   auto cell = [&](const std::string& shown, const json& raw, const char* key) {
     s += "<td data-key=\"" + std::string(key) + "\" data-value=\"" + escapeHtml(raw.dump()) +
          "\">" + shown + "</td>";
@@ -45,7 +45,8 @@ std::string workerRow(const json& w, const json& r, double totalPixels, double e
        json(count(w, "messages_sent") + count(w, "messages_received")), "messages");
   cell(formatBytes(count(w, "bytes_sent") + count(w, "bytes_received")),
        json(count(w, "bytes_sent") + count(w, "bytes_received")), "bytes");
-  cell(w.value("lost", false) ? "<b class=\"fault-text\">lost</b>" : "", w.value("lost", json()), "lost");
+  cell(w.value("lost", false) ? "<b class=\"fault-text\">lost</b>" : "", w.value("lost", json()),
+       "lost");
   for (const std::string& key : extraKeys) {
     cell(w.contains(key) ? escapeHtml(genericValue(w[key])) : "", w.value(key, json()),
          key.c_str());
@@ -66,7 +67,8 @@ std::string workerTable(const json& r, const std::vector<std::string>& colours, 
       }
     }
   }
-  std::string s = "<table class=\"workers\" id=\"" + id + "\"><thead><tr><th>worker</th>"
+  std::string s = "<table class=\"workers\" id=\"" + id +
+                  "\"><thead><tr><th>worker</th>"
                   "<th title=\"time of its speed-index run: lower is faster\">speed index</th>"
                   "<th title=\"serial machine's speed index / this worker's\">relative speed</th>"
                   "<th title=\"--slowdown: k times slower than the machine\">slowdown</th>"
@@ -102,9 +104,10 @@ std::string speedClasses(const json& r, double totalPixels) {
       classes[static_cast<double>(i * 10 / all.size())].push_back(all[i]);
     }
   }
-  std::string s = "<table class=\"classes\"><thead><tr><th>workers</th><th>slowdown</th>"
-                  "<th>mean speed index</th><th>pixels</th><th>mean busy share</th><th>lost</th>"
-                  "</tr></thead><tbody>\n";
+  std::string s =
+      "<table class=\"classes\"><thead><tr><th>workers</th><th>slowdown</th>"
+      "<th>mean speed index</th><th>pixels</th><th>mean busy share</th><th>lost</th>"
+      "</tr></thead><tbody>\n";
   for (const auto& [key, ws] : classes) {
     double lo = 1e300, hi = 0, index = 0, pixels = 0, busy = 0;
     size_t lost = 0;
@@ -133,9 +136,10 @@ std::string speedClasses(const json& r, double totalPixels) {
 std::string workersSection(const json& r, const std::vector<std::string>& colours) {
   double totalPixels = 0;
   for (const json& w : r["workers"]) totalPixels += numberOr(w, "pixels", 0);
-  std::string s = "<section><h2>Workers</h2>\n<p class=\"lead\">A worker's speed index is the "
-                  "time of a fixed benchmark on it; the strategy shares the work out by these "
-                  "(relative speed: how many of the serial machine it is worth).</p>\n";
+  std::string s =
+      "<section><h2>Workers</h2>\n<p class=\"lead\">A worker's speed index is the "
+      "time of a fixed benchmark on it; the strategy shares the work out by these "
+      "(relative speed: how many of the serial machine it is worth).</p>\n";
   if (r["workers"].size() > kWorkersListed) {
     s += "<p class=\"note\">" + formatCount(r["workers"].size()) +
          " workers: summarised by speed class; the full table is folded below.</p>\n";
@@ -151,11 +155,12 @@ std::string workersSection(const json& r, const std::vector<std::string>& colour
 std::string workerInfo(const json& w, const json& r, double totalPixels) {
   const int id = w.value("worker", 0);
   const double elapsed = numberOr(r, "elapsed_s", 0);
-  std::string s = "worker " + std::to_string(id) + ": " + formatCount(count(w, "pixels")) +
-                  " pixels (" + formatPercent(totalPixels > 0 ? numberOr(w, "pixels", 0) / totalPixels : 0) +
-                  "), rendering " + formatPercent(elapsed > 0 ? numberOr(w, "busy_s", 0) / elapsed : 0) +
-                  " of the run, speed index " + formatSeconds(numberOr(w, "speed_index_s", 0)) +
-                  ", slowdown " + formatNumber(numberOr(w, "slowdown", 1)) + "×";
+  std::string s =
+      "worker " + std::to_string(id) + ": " + formatCount(count(w, "pixels")) + " pixels (" +
+      formatPercent(totalPixels > 0 ? numberOr(w, "pixels", 0) / totalPixels : 0) +
+      "), rendering " + formatPercent(elapsed > 0 ? numberOr(w, "busy_s", 0) / elapsed : 0) +
+      " of the run, speed index " + formatSeconds(numberOr(w, "speed_index_s", 0)) + ", slowdown " +
+      formatNumber(numberOr(w, "slowdown", 1)) + "×";
   if (w.value("lost", false)) s += ", lost";
   return s;
 }
