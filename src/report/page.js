@@ -75,7 +75,10 @@
     }
   }
 
+  var current = null;  // what is highlighted now: mousemove over one worker redraws once
   function highlight(sel) {
+    if (same(sel, current) || (!sel && !current)) return;
+    current = sel;
     draw(sel);
     var nodes = document.querySelectorAll('[data-first]');
     for (var i = 0; i < nodes.length; i++) {
@@ -97,7 +100,11 @@
   }
   function same(a, b) { return a && b && a[0] === b[0] && a[1] === b[1]; }
   function hover(sel) { if (!pinned) highlight(sel); }
-  function click(sel) { pinned = same(pinned, sel) ? null : sel; highlight(pinned || sel); }
+  function click(sel) {
+    pinned = same(pinned, sel) ? null : sel;
+    current = null;  // the note under the map changes (kept or not): refresh it
+    highlight(pinned || sel);
+  }
 
   var targets = document.querySelectorAll('[data-first]');
   for (var i = 0; i < targets.length; i++) {
