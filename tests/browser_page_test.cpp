@@ -21,18 +21,31 @@ namespace {
 
 class BrowserPageTest : public e2e::ScratchDirTest {
  protected:
-  // Runs Chromium on `page` with `mode` (--dump-dom, or --screenshot=FILE); returns what it
-  // printed (the DOM and its log), or skips the test when it cannot start.
-  std::string chromium(const std::string& page, const std::string& mode) {
-    const std::string browser = findProgram("chromium");
-    if (browser.empty()) {
+  // Skips the test (skip_ says why) unless Chromium is installed and opens a trivial page.
+  void SetUp() override {
+    ScratchDirTest::SetUp();
+    if (findProgram("chromium").empty()) {
       skip_ =
           "chromium is not installed (scripts/install-deps.sh installs it); the page was "
           "not opened in a browser";
-      return "";
+      return;
     }
-    const std::string timeout = findProgram("timeout");
-    std::vector<std::string> args = {"--headless",
+    const std::string probe = write("probe.html", "<p>probe</p>");
+    int status = 0;
+    const std::string dom = chromium(probe, "--dump-dom", &status);
+    if (!describeExit(status).empty() || dom.find("<p>probe</p>") == std::string::npos) {
+      skip_ = "chromium cannot start here (" +
+              (describeExit(status).empty() ? "no page" : describeExit(status)) +
+              "): " + lastLines(dom, 4);
+    }
+  }
+
+  // Runs Chromium on `page` with `mode` (--dump-dom, or --screenshot=FILE); returns what it
+  // printed (the DOM and its log). A failure past the probe fails the test.
+  std::string chromium(const std::string& page, const std::string& mode, int* status = nullptr) {
+    std::vector<std::string> args = {"60",
+                                     findProgram("chromium"),
+                                     "--headless",
                                      "--no-sandbox",
                                      "--disable-gpu",
                                      "--no-first-run",
@@ -44,18 +57,14 @@ class BrowserPageTest : public e2e::ScratchDirTest {
                                      "--v=0",
                                      mode,
                                      "file://" + page};
-    std::string program = browser;
-    if (!timeout.empty()) {
-      args.insert(args.begin(), {"120", browser});
-      program = timeout;
-    }
     const std::string log = path("chromium.log");
-    const int status = runProgram(program, args, path(""), log);
-    const std::string output = readWholeFile(log);
-    if (!describeExit(status).empty()) {
-      skip_ = "chromium cannot start here (" + describeExit(status) + "): " + lastLines(output, 4);
+    const int exit = runProgram(findProgram("timeout"), args, path(""), log);
+    if (status) {
+      *status = exit;
+    } else {
+      EXPECT_EQ(describeExit(exit), "") << "chromium on " << page;
     }
-    return output;
+    return readWholeFile(log);
   }
 
   // Console messages the page logged: none is expected, an error above all.
@@ -77,6 +86,7 @@ class BrowserPageTest : public e2e::ScratchDirTest {
   } while (0)
 
 TEST_F(BrowserPageTest, RenderedRunPageDrawsAndHighlightsAWorker) {
+  SKIP_IF_NO_BROWSER();
   const auto render = e2e::run("render " + std::string(PRT_SOURCE_DIR) +
                                "/scenes/fig06-primitives.scene --width 96 --height 72 --workers 3 "
                                "--strategy reservoir --serial-seconds 1 --html " +
@@ -85,7 +95,6 @@ TEST_F(BrowserPageTest, RenderedRunPageDrawsAndHighlightsAWorker) {
   ASSERT_EQ(render.exitCode, 0) << render.output;
 
   const std::string dom = chromium(path("run.html") + "#worker=1", "--dump-dom");
-  SKIP_IF_NO_BROWSER();
   EXPECT_EQ(consoleLines(dom), std::vector<std::string>{}) << "the page logged messages";
   EXPECT_NE(dom.find("data-page-ready=\"yes\""), std::string::npos)
       << "the script did not run to its end:\n"
@@ -97,7 +106,6 @@ TEST_F(BrowserPageTest, RenderedRunPageDrawsAndHighlightsAWorker) {
 
   const std::string shot = path("shot.png");
   const std::string log = chromium(path("run.html") + "#worker=1", "--screenshot=" + shot);
-  SKIP_IF_NO_BROWSER();
   EXPECT_EQ(consoleLines(log), std::vector<std::string>{});
   const Image image = readImage(shot);
   ASSERT_GT(image.width(), 600);
@@ -116,6 +124,7 @@ TEST_F(BrowserPageTest, RenderedRunPageDrawsAndHighlightsAWorker) {
 }
 
 TEST_F(BrowserPageTest, LargeSimulatedRunAndItsSavedReportOpen) {
+  SKIP_IF_NO_BROWSER();
   const auto sim = e2e::run(
       "simulate --workers 1024 --width 320 --height 180 --slow-share 0.5 "
       "--html " +
@@ -125,7 +134,6 @@ TEST_F(BrowserPageTest, LargeSimulatedRunAndItsSavedReportOpen) {
   ASSERT_EQ(again.exitCode, 0) << again.output;
   for (const char* page : {"sim.html", "again.html"}) {
     const std::string dom = chromium(path(page) + "#worker=700", "--dump-dom");
-    SKIP_IF_NO_BROWSER();
     EXPECT_EQ(consoleLines(dom), std::vector<std::string>{}) << page;
     EXPECT_NE(dom.find("data-page-ready=\"yes\""), std::string::npos) << page;
     EXPECT_NE(dom.find("too many to draw one by one"), std::string::npos) << page;
