@@ -31,7 +31,10 @@ std::string card(const std::string& key, const std::string& value, const std::st
 std::string speedupGauge(double workers, double masu, std::optional<double> speedup) {
   const double top = std::max({workers, masu, speedup.value_or(0), 1.0});
   auto pct = [&](double v) { return formatNumber(100 * std::clamp(v / top, 0.0, 1.0), 4) + "%"; };
-  std::string s = "<div class=\"gauge\"><div class=\"gauge-track\">";
+  std::string s = "<div class=\"gauge\"><div class=\"gauge-title\">speed-up <b>" +
+                  (speedup ? formatNumber(*speedup) : std::string("unknown")) +
+                  "</b> (the bar) against MASU, the most these workers' speeds allow (the "
+                  "mark)</div><div class=\"gauge-track\">";
   if (speedup) {
     s += "<div class=\"gauge-fill\" style=\"width:" + pct(*speedup) + "\"></div>";
   }
@@ -42,77 +45,110 @@ std::string speedupGauge(double workers, double masu, std::optional<double> spee
   return s;
 }
 
-std::string glance(const json& r) {
-  const size_t workers = r["workers"].size();
-  const double elapsed = numberOr(r, "elapsed_s", 0);
-  const auto speedup = number(r, "speedup");
-  const double masu = numberOr(r, "masu", 0);
-  const auto asu = number(r, "asu");
-  const double efficiency = numberOr(r, "efficiency", 0);
-  std::string s = "<section class=\"glance\"><h2>At a glance</h2>";
-  s += speedupGauge(static_cast<double>(workers), masu, speedup);
-  s += "<p>";
-  if (speedup) {
-    s += "The " + formatCount(workers) + " workers finished the image <b>" +
-         formatNumber(*speedup) +
-         " times faster</b> than one machine alone (speed-up). Their "
-         "speeds allowed at most " +
-         formatNumber(masu) + " (MASU), so the balancing reached <b>" +
-         (asu ? formatPercent(*asu) : std::string("n/a")) + "</b> of the ideal (ASU). ";
-  } else {
-    s += "The workers' speeds allow a speed-up of at most " + formatNumber(masu) +
-         " (MASU). This run has no serial time, so its own speed-up is unknown: rerun with "
-         "<code>--measure-serial</code> or <code>--serial-seconds T</code>. ";
+double maxBusy(const json& workers) {
+  double most = 0;
+  for (const json& w : workers) most = std::max(most, numberOr(w, "busy_s", 0));
+  return most;
+}
+
+// What balancing bought, estimated from each worker's seconds per pixel in this run: the time
+// the slowest worker would have needed for an equal share of the pixels, against the time
+// had every worker finished together. Empty unless every worker rendered and none was lost.
+std::string balanceEstimate(const json& r) {
+  const json& workers = r["workers"];
+  if (workers.size() < 2) return "";
+  double slowest = 0, speed = 0, pixels = 0;
+  for (const json& w : workers) {
+    const double busy = numberOr(w, "busy_s", 0), p = numberOr(w, "pixels", 0);
+    if (!(busy > 0) || !(p > 0) || w.value("lost", false)) return "";
+    slowest = std::max(slowest, busy / p);
+    speed += p / busy;
+    pixels += p;
   }
-  s += "On average a worker was rendering <b>" + formatPercent(efficiency) +
-       "</b> of the run (efficiency); the rest it waited for work, for the scene, or for the "
-       "others to finish.";
-  // Lost workers, from the table and the timeline's marks.
-  std::string lostList;
-  size_t lostCount = 0;
+  const double equal = slowest * pixels / static_cast<double>(workers.size());
+  const double together = pixels / speed;
+  return "<li><b>What the balancing bought:</b> judging by each worker's time per pixel here, "
+         "an equal share of the pixels would have kept the slowest one rendering about <b>" +
+         formatSeconds(equal) +
+         "</b>; with every worker finishing together it would take "
+         "about <b>" +
+         formatSeconds(together) +
+         "</b>; this run's workers rendered for at "
+         "most <b>" +
+         formatSeconds(maxBusy(workers)) + "</b>.</li>";
+}
+
+// "Worker 3 (at 1.25 s) was lost</b>; ...", from the table and the timeline's marks.
+std::string lostWorkers(const json& r) {
+  std::string list;
+  size_t lost = 0;
   for (const json& w : r["workers"]) {
     if (!w.is_object() || !w.value("lost", false)) continue;
-    ++lostCount;
+    ++lost;
     const int id = w.value("worker", 0);
-    if (!lostList.empty()) lostList += ", ";
-    lostList += std::to_string(id);
+    if (!list.empty()) list += ", ";
+    list += std::to_string(id);
     for (const json& row : r.value("timeline", json::object()).value("rows", json::array())) {
       for (const json& m : row.value("marks", json::array())) {
         if (m.value("kind", std::string()) == "worker_lost" && m.value("worker", -1) == id) {
-          lostList += " (at " + formatSeconds(m.value("t_s", 0.0)) + ")";
+          list += " (at " + formatSeconds(m.value("t_s", 0.0)) + ")";
         }
       }
     }
   }
-  if (lostCount > 0) {
-    s += " <b class=\"fault-text\">" + std::string(lostCount == 1 ? "Worker " : "Workers ") +
-         lostList + (lostCount == 1 ? " was" : " were") +
-         " lost</b>; the master gave the unfinished tasks to the others.";
-  }
-  // How close together the workers ran out of work: the balance itself.
-  if (r.contains("timeline") && r["timeline"].contains("rows")) {
-    std::vector<double> finished;
-    for (const json& row : r["timeline"]["rows"]) {
-      const double f = numberOr(row, "finished_s", 0);
-      bool lost = false;
-      for (const json& m : row.value("marks", json::array())) {
-        lost = lost || m.value("kind", std::string()) == "worker_lost";
-      }
-      if (f > 0 && !lost) finished.push_back(f);
+  if (lost == 0) return "";
+  return "<li><b class=\"fault-text\">" + std::string(lost == 1 ? "Worker " : "Workers ") + list +
+         (lost == 1 ? " was" : " were") +
+         " lost</b>; the master gave the unfinished tasks to the others.</li>";
+}
+
+// How close together the workers (or groups) sent their last results: the balance itself.
+std::string finishSpread(const json& r) {
+  const double elapsed = numberOr(r, "elapsed_s", 0);
+  if (!r.contains("timeline") || !r["timeline"].contains("rows") || !(elapsed > 0)) return "";
+  std::vector<double> finished;
+  for (const json& row : r["timeline"]["rows"]) {
+    const double f = numberOr(row, "finished_s", 0);
+    bool lost = false;
+    for (const json& m : row.value("marks", json::array())) {
+      lost = lost || m.value("kind", std::string()) == "worker_lost";
     }
-    if (finished.size() >= 2 && elapsed > 0) {
-      const auto [lo, hi] = std::minmax_element(finished.begin(), finished.end());
-      const bool groups = r["timeline"].value("aggregated", false);
-      s += " The " + std::string(groups ? "groups of workers" : "workers") +
-           " sent their last results within <b>" + formatSeconds(*hi - *lo) +
-           "</b> of one "
-           "another (" +
-           formatPercent((*hi - *lo) / elapsed) +
-           " of the run): the smaller, the better the work was shared out.";
-    }
+    if (f > 0 && !lost) finished.push_back(f);
   }
-  s += "</p></section>\n";
-  return s;
+  if (finished.size() < 2) return "";
+  const auto [lo, hi] = std::minmax_element(finished.begin(), finished.end());
+  const bool groups = r["timeline"].value("aggregated", false);
+  return "<li>The " + std::string(groups ? "groups of workers" : "workers") +
+         " sent their last results within <b>" + formatSeconds(*hi - *lo) +
+         "</b> of one another (" + formatPercent((*hi - *lo) / elapsed) +
+         " of the run): the smaller, the better the work was shared out.</li>";
+}
+
+std::string glance(const json& r) {
+  const size_t workers = r["workers"].size();
+  const auto speedup = number(r, "speedup");
+  const double masu = numberOr(r, "masu", 0);
+  const auto asu = number(r, "asu");
+  std::string s = "<section class=\"glance\"><h2>At a glance</h2>";
+  s += speedupGauge(static_cast<double>(workers), masu, speedup);
+  s += "<ul class=\"glance-list\">";
+  if (speedup) {
+    s += "<li>The " + formatCount(workers) + " workers made the image <b>" +
+         formatNumber(*speedup) +
+         " times faster</b> than one machine alone (speed-up). Their "
+         "speeds allow at most " +
+         formatNumber(masu) + " (MASU): the run reached <b>" +
+         (asu ? formatPercent(*asu) : std::string("n/a")) + "</b> of that ideal (ASU).</li>";
+  } else {
+    s += "<li>The workers' speeds allow a speed-up of at most " + formatNumber(masu) +
+         " (MASU). This run has no serial time, so its own speed-up is unknown: rerun with "
+         "<code>--measure-serial</code> or <code>--serial-seconds T</code>.</li>";
+  }
+  s += "<li>On average a worker was rendering <b>" + formatPercent(numberOr(r, "efficiency", 0)) +
+       "</b> of the run (efficiency); the rest it waited for the scene, for work, or for the "
+       "others to finish.</li>";
+  s += lostWorkers(r) + balanceEstimate(r) + finishSpread(r);
+  return s + "</ul></section>\n";
 }
 
 const std::set<std::string> kKnownKeys = {"driver",

@@ -118,6 +118,17 @@ TEST(RunPage, MeasuresOnThePageMatchTheJsonReport) {
   }
 }
 
+TEST(RunPage, EstimatesWhatBalancingBought) {
+  // Busy 1.0, 1.1, 1.2 and 1.3 s for 8 pixels each: an equal share keeps the slowest busy
+  // 1.3 s; finishing together, 32 / (8/1.0 + 8/1.1 + 8/1.2 + 8/1.3) = 1.139 s.
+  const SampleRun run = fourWorkers();
+  const std::string html =
+      runPageHtml(reportDocument(run.report, context(), run.events, run.owner), {});
+  EXPECT_NE(html.find("rendering about <b>1.30 s</b>"), std::string::npos);
+  EXPECT_NE(html.find("finishing together it would take about <b>1.14 s</b>"), std::string::npos);
+  EXPECT_NE(html.find("rendered for at most <b>1.30 s</b>"), std::string::npos);
+}
+
 TEST(RunPage, ShowsTheContextAndFetchesNothing) {
   const SampleRun run = fourWorkers();
   const std::string html = runPageHtml(reportDocument(run.report, context(), run.events, run.owner),
