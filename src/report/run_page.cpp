@@ -325,7 +325,8 @@ std::string detailsSection(const json& r) {
   row("scene", escapeHtml(text(context, "scene")));
   row("image", std::to_string(r.value("width", 0)) + " × " + std::to_string(r.value("height", 0)) +
                    " pixels, " + std::to_string(r.value("samples_per_pixel", 1)) +
-                   " samples per pixel, DRT " + std::to_string(r.value("drt", 1)) +
+                   (r.value("samples_per_pixel", 1) == 1 ? " sample" : " samples") +
+                   " per pixel, DRT " + std::to_string(r.value("drt", 1)) +
                    (count(r, "rays") ? ", " + formatCount(count(r, "rays")) + " rays" : ""));
   const std::string driver = text(r, "driver");
   row("driver", escapeHtml(driver == "local"       ? "local: worker threads in one process"
