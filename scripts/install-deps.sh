@@ -10,6 +10,7 @@ packages=(
   openmpi-bin libopenmpi-dev
   povray
   python3 gnuplot-nox hyperfine
+  chromium  # headless, for the test that opens the run page in a browser
 )
 
 missing=()

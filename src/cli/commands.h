@@ -10,9 +10,13 @@ namespace prt::cli {
 
 using Action = std::function<int()>;  // returns the process exit code
 
-Action addRenderCommand(CLI::App& app);
+// `commandLine` (as typed) is recorded in reports, pages and summaries.
+Action addRenderCommand(CLI::App& app, const std::string& commandLine);
 Action addSpeedIndexCommand(CLI::App& app);
-Action addSimulateCommand(CLI::App& app);  // discrete-event simulation (simulate_command.cpp)
+// Discrete-event simulation (simulate_command.cpp).
+Action addSimulateCommand(CLI::App& app, const std::string& commandLine);
+// A saved report's page (report_command.cpp).
+Action addReportCommand(CLI::App& app);
 Action addExportCommand(CLI::App& app);   // POV-Ray export (export_command.cpp)
 Action addCompareCommand(CLI::App& app);  // PRT vs POV-Ray images (compare_command.cpp)
 // The paper's experiments (experiment_command.cpp); `commandLine` is recorded in summaries.

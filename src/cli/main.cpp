@@ -15,13 +15,14 @@ int main(int argc, char** argv) {
   // The trace library's build in use, as the loader picked it for this processor.
   app.set_version_flag("--version",
                        std::string("prt 0.1.0 (trace kernels: ") + prt::traceIsaLevel() + ")");
-  const prt::cli::Action render = prt::cli::addRenderCommand(app);
-  const prt::cli::Action speedIndex = prt::cli::addSpeedIndexCommand(app);
-  const prt::cli::Action simulate = prt::cli::addSimulateCommand(app);
-  const prt::cli::Action exportPov = prt::cli::addExportCommand(app);
-  const prt::cli::Action compare = prt::cli::addCompareCommand(app);
   std::string commandLine = "prt";
   for (int i = 1; i < argc; ++i) commandLine += std::string(" ") + argv[i];
+  const prt::cli::Action render = prt::cli::addRenderCommand(app, commandLine);
+  const prt::cli::Action speedIndex = prt::cli::addSpeedIndexCommand(app);
+  const prt::cli::Action simulate = prt::cli::addSimulateCommand(app, commandLine);
+  const prt::cli::Action exportPov = prt::cli::addExportCommand(app);
+  const prt::cli::Action compare = prt::cli::addCompareCommand(app);
+  const prt::cli::Action report = prt::cli::addReportCommand(app);
   const prt::cli::Action experiment = prt::cli::addExperimentCommand(app, commandLine);
   try {
     app.parse(argc, argv);
@@ -37,6 +38,7 @@ int main(int argc, char** argv) {
       if (sub->get_name() == "export") return exportPov();
       if (sub->get_name() == "compare") return compare();
       if (sub->get_name() == "experiment") return experiment();
+      if (sub->get_name() == "report") return report();
     }
   } catch (const prt::InputError& e) {
     std::fprintf(stderr, "%s\n", e.format().c_str());

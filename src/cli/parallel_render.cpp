@@ -1,5 +1,6 @@
 #include "cli/parallel_render.h"
 
+#include "cli/run_page_output.h"
 #include <cstdio>
 #include <cstdlib>
 #include <tuple>
@@ -119,6 +120,10 @@ void addParallelOptions(CLI::App& cmd, RenderOptions& o) {
   cmd.add_option("--trace", o.tracePath,
                  "Write a Chrome trace-event timeline (open in Perfetto)")
       ->group(parallel);
+  cmd.add_option("--html", o.htmlPath,
+                 "Write the run's page: one self-contained HTML file with the image, the "
+                 "ownership map, the timeline and the measures")
+      ->group(parallel);
   cmd.add_option("--ownership", o.ownershipPath,
                  "Write the image coloured by the worker that rendered each pixel")
       ->group(parallel);
@@ -154,7 +159,7 @@ ParallelOptions toParallelOptions(const RenderOptions& o, int workers) {
 
 int finishParallelRun(const RenderOptions& o, const Scene& scene, const ParallelRun& run) {
   writeImage(run.image, scene.image.output);
-  if (!o.reportPath.empty()) writeFileAtomically(o.reportPath, run.report.toJson());
+  writeRenderReportAndPage(o, scene, run);  // --report and --html
   if (!o.tracePath.empty()) {
     writeFileAtomically(o.tracePath,
                         chromeTraceJson(run.events, static_cast<int>(run.report.workers.size()),

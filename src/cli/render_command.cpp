@@ -10,6 +10,7 @@
 #include "cli/commands.h"
 #include "cli/parallel_render.h"
 #include "cli/progress_bar.h"
+#include "cli/run_page_output.h"
 #include "core/input_error.h"
 #include "image/image_io.h"
 #include "scene/scene_file.h"
@@ -70,6 +71,7 @@ int renderSerial(const RenderOptions& o, const Scene& scene, const RenderSetting
 }
 
 int runRender(const RenderOptions& o) {
+  checkHtmlPath(o.htmlPath);
   const bool mpi = launchedByMpirun();
   if ((mpi || o.workers || o.strategy) && !o.costMapPath.empty()) {
     throw InputError("--cost-map records a serial render; drop --workers and --strategy (and "
@@ -92,10 +94,11 @@ int runRender(const RenderOptions& o) {
   const RenderSettings settings = resolveSettings(o, scene);
   if (o.workers || o.strategy) return renderParallelLocal(o, scene, settings);
   for (const bool parallelOnly : {!o.reportPath.empty(), !o.tracePath.empty(),
-                                  !o.ownershipPath.empty(), !o.slowdowns.empty()}) {
+                                  !o.ownershipPath.empty(), !o.htmlPath.empty(),
+                                  !o.slowdowns.empty()}) {
     if (parallelOnly) {
-      throw InputError("--report, --trace, --ownership and --slowdown describe a parallel run; "
-                       "add --workers N (and optionally --strategy NAME)");
+      throw InputError("--report, --trace, --ownership, --html and --slowdown describe a "
+                       "parallel run; add --workers N (and optionally --strategy NAME)");
     }
   }
   if (!o.checkpointPath.empty()) return renderSerialWithCheckpoint(o, scene, settings);
@@ -105,8 +108,9 @@ int runRender(const RenderOptions& o) {
 
 }  // namespace
 
-Action addRenderCommand(CLI::App& app) {
+Action addRenderCommand(CLI::App& app, const std::string& commandLine) {
   auto o = std::make_shared<RenderOptions>();
+  o->commandLine = commandLine;
   auto* cmd = app.add_subcommand(
       "render",
       "Render a .scene file to an image, serially or in parallel (--workers N, or under "

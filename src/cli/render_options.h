@@ -37,6 +37,8 @@ struct RenderOptions {
   std::string reportPath;                  // --report FILE.json
   std::string tracePath;                   // --trace FILE.json
   std::string ownershipPath;               // --ownership FILE.png
+  std::string htmlPath;                    // --html FILE.html: the run's page
+  std::string commandLine;                 // as typed, recorded in the report and the page
   std::vector<std::string> faults;         // --inject-fault W:PIXELS:crash|hang
 };
 

@@ -10,7 +10,9 @@
 #include <vector>
 
 #include "cli/commands.h"
+#include "cli/run_page_output.h"
 #include "core/input_error.h"
+#include "core/machine.h"
 #include "image/atomic_file.h"
 #include "metrics/chrome_trace.h"
 #include "sim/cost_map_file.h"
@@ -44,6 +46,8 @@ struct SimulateOptions {
   double masterServiceMicroseconds = 5;
   std::string reportPath;
   std::string tracePath;
+  std::string htmlPath;     // the run's page
+  std::string commandLine;  // as typed, for the report and the page
   bool quiet = false;
 };
 
@@ -97,6 +101,7 @@ int runSimulate(const SimulateOptions& o) {
   options.network.masterServiceSeconds = o.masterServiceMicroseconds * 1e-6;
   // Cheap checks before building the map: a 4K synthetic map takes a moment.
   validateSimulationOptions(options, ~0ull);
+  checkHtmlPath(o.htmlPath);
 
   std::string source;
   const CostMap costs = loadCostMap(o, source);
@@ -105,7 +110,31 @@ int runSimulate(const SimulateOptions& o) {
   const double wall =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-  if (!o.reportPath.empty()) writeFileAtomically(o.reportPath, run.report.toJson());
+  if (!o.reportPath.empty() || !o.htmlPath.empty()) {
+    RunContext context;
+    context.commandLine = o.commandLine;
+    context.scene = source;
+    context.machine = describeMachine() + " (the simulation's; the workers are modelled)";
+    context.dateUtc = utcNow();
+    context.parameters = strategyParameters(options.strategy, options.strategyOptions);
+    context.parameters.emplace_back("batch_pixels", std::to_string(o.batchPixels));
+    context.parameters.emplace_back("batch_overhead_us",
+                                    parameterText(o.batchOverheadMicroseconds));
+    context.parameters.emplace_back("latency_us", parameterText(o.latencyMicroseconds));
+    context.parameters.emplace_back("bandwidth_mbps", parameterText(o.bandwidthMbps));
+    context.parameters.emplace_back("master_service_us",
+                                    parameterText(o.masterServiceMicroseconds));
+    for (const auto& [name, path] :
+         {std::pair<const char*, const std::string&>{"cost_map", o.costMapPath},
+          {"report", o.reportPath},
+          {"html", o.htmlPath},
+          {"trace", o.tracePath}}) {
+      if (!path.empty()) context.outputs.emplace_back(name, path);
+    }
+    writeReportAndPage(o.reportPath, o.htmlPath,
+                       reportDocument(run.report, context, run.events, run.owner),
+                       o.htmlPath.empty() ? PagePicture{} : costPicture(costs));
+  }
   if (!o.tracePath.empty()) {
     writeFileAtomically(o.tracePath,
                         chromeTraceJson(run.events, static_cast<int>(run.report.workers.size()),
@@ -122,8 +151,9 @@ int runSimulate(const SimulateOptions& o) {
 
 }  // namespace
 
-Action addSimulateCommand(CLI::App& app) {
+Action addSimulateCommand(CLI::App& app, const std::string& commandLine) {
   auto o = std::make_shared<SimulateOptions>();
+  o->commandLine = commandLine;
   auto* cmd = app.add_subcommand(
       "simulate",
       "Simulate a parallel render in virtual time: the real master, workers and strategies "
@@ -210,6 +240,9 @@ Action addSimulateCommand(CLI::App& app) {
 
   cmd->add_option("--report", o->reportPath, "Write the run report as JSON");
   cmd->add_option("--trace", o->tracePath, "Write a Chrome trace-event timeline (Perfetto)");
+  cmd->add_option("--html", o->htmlPath,
+                  "Write the run's page: one self-contained HTML file with the cost map, the "
+                  "ownership map, the timeline and the measures");
   cmd->add_flag("-q,--quiet", o->quiet, "No report table");
   return [o] { return runSimulate(*o); };
 }

@@ -20,6 +20,10 @@ namespace prt {
 // I/O failure ("cannot write 'out/x.png': No such file or directory").
 void writeImage(const Image& image, const std::string& path);
 
+// The bytes of `image` as a PNG file (8-bit sRGB, as writeImage writes .png), for embedding
+// an image in another document. Throws std::runtime_error if libpng fails.
+std::string encodePng(const Image& image);
+
 // Reads a .png, .ppm (P6 or P3) or .pfm (PF or Pf) file into linear RGB. 8-bit files are
 // decoded from sRGB. Throws InputError naming the file when it cannot be read, has an
 // unsupported extension, or is malformed (wrong magic number, truncated, bad header).

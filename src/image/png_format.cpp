@@ -4,20 +4,27 @@
 #include <png.h>
 
 #include <cerrno>
+#include <stdexcept>
 #include <system_error>
 #include <vector>
 
 #include "core/input_error.h"
 #include "image/image_formats.h"
+#include "image/image_io.h"
 #include "image/srgb.h"
 
 namespace prt {
 
-void writePng(const Image& image, std::FILE* file, const std::string& path) {
+namespace {
+
+std::vector<png_byte> srgbSamples(const Image& image) {
   const std::span<const float> samples = image.data();
   std::vector<png_byte> encoded(samples.size());
   for (size_t i = 0; i < samples.size(); ++i) encoded[i] = linearToSrgb8(samples[i]);
+  return encoded;
+}
 
+png_image pngHeader(const Image& image) {
   png_image png{};  // value-initialised: the zeroed struct libpng requires
   png.version = PNG_IMAGE_VERSION;
   png.width = static_cast<png_uint_32>(image.width());
@@ -26,6 +33,29 @@ void writePng(const Image& image, std::FILE* file, const std::string& path) {
   // No PNG_IMAGE_FLAG_COLORSPACE_NOT_sRGB: libpng then writes an sRGB chunk, telling viewers
   // the samples are sRGB-encoded. PNG_IMAGE_FLAG_FAST: zlib's fast settings.
   png.flags = PNG_IMAGE_FLAG_FAST;
+  return png;
+}
+
+}  // namespace
+
+std::string encodePng(const Image& image) {
+  const std::vector<png_byte> encoded = srgbSamples(image);
+  png_image png = pngHeader(image);
+  png_alloc_size_t size = 0;  // first call: the size needed
+  if (png_image_write_to_memory(&png, nullptr, &size, 0, encoded.data(), 0, nullptr) == 0) {
+    throw std::runtime_error(std::string("PNG encoding failed: ") + png.message);
+  }
+  std::string bytes(size, '\0');
+  if (png_image_write_to_memory(&png, bytes.data(), &size, 0, encoded.data(), 0, nullptr) == 0) {
+    throw std::runtime_error(std::string("PNG encoding failed: ") + png.message);
+  }
+  bytes.resize(size);
+  return bytes;
+}
+
+void writePng(const Image& image, std::FILE* file, const std::string& path) {
+  const std::vector<png_byte> encoded = srgbSamples(image);
+  png_image png = pngHeader(image);
   if (png_image_write_to_stdio(&png, file, 0, encoded.data(), 0, nullptr) == 0) {
     // A failed fwrite is the likely cause; prefer its errno text to libpng's "Write Error".
     const std::string reason =

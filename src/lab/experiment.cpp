@@ -5,14 +5,15 @@
 #include <cstdlib>
 #include <ctime>
 #include <filesystem>
-#include <fstream>
 
 #include "balance/strategy.h"
 #include "core/input_error.h"
+#include "core/machine.h"
 #include "core/parallel.h"
 #include "image/atomic_file.h"
 #include "lab/context.h"
 #include "lab/experiments.h"
+#include "lab/index_page.h"
 
 namespace prt {
 namespace {
@@ -41,18 +42,6 @@ const Entry& find(const std::string& name) {
   std::string list;
   for (const Entry& e : kExperiments) list += (list.empty() ? "" : ", ") + std::string(e.name);
   throw InputError("unknown experiment '" + name + "'; valid: " + list);
-}
-
-std::string cpuModel() {
-  std::ifstream in("/proc/cpuinfo");
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.rfind("model name", 0) == 0) {
-      const size_t colon = line.find(':');
-      if (colon != std::string::npos) return line.substr(colon + 2);
-    }
-  }
-  return "unknown CPU";
 }
 
 // The 1-minute load average, as a reminder of how busy the machine was; negative if unknown.
@@ -136,6 +125,8 @@ ExperimentOutput runExperiment(const std::string& name, const ExperimentOptions&
   const std::string md = (std::filesystem::path(options.outDir) / (name + ".md")).string();
   writeFileAtomically(md, out.summary);
   out.files.push_back(name + ".md");
+  writeExperimentIndex(options.outDir);  // gathers every summary in the folder, this one too
+  out.files.push_back("index.html");
   return out;
 }
 

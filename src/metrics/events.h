@@ -28,6 +28,19 @@ struct Event {
   std::string label;    // messages: the message type ("Tasks", "Results", ...)
 };
 
+// The kind's name in reports and pages ("compute", "worker_lost"). No default case: a new
+// kind fails to compile (-Wswitch) until it is named here.
+inline const char* eventKindName(EventKind kind) {
+  switch (kind) {
+    case EventKind::Setup: return "setup";
+    case EventKind::Compute: return "compute";
+    case EventKind::MessageSent: return "message_sent";
+    case EventKind::MessageReceived: return "message_received";
+    case EventKind::WorkerLost: return "worker_lost";
+  }
+  return "unknown";
+}
+
 // Collects events from one thread; drivers keep one log per thread and merge at the end.
 struct EventLog {
   std::vector<Event> events;

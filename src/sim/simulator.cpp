@@ -185,6 +185,7 @@ class Simulation {
       send(id, w.machine.setupDone(w.speedIndex));
     } else {
       log_.add({EventKind::Compute, id, w.workStart, now_, w.batch.size(), 0, 0, ""});
+      w.batch.forEach([&](uint64_t pixel) { owner_[pixel] = id; });
       send(id, w.machine.batchDone(w.batch));
     }
     advance(id);
@@ -207,6 +208,7 @@ class Simulation {
     run.report = makeReport(info, log_.events, now_);
     run.events = std::move(log_.events);
     run.simulationEvents = queue_.scheduled();
+    run.owner = std::move(owner_);
     return run;
   }
 
@@ -217,6 +219,7 @@ class Simulation {
   EventLog log_;
   Master master_;
   std::vector<SimWorker> workers_;
+  std::vector<int32_t> owner_ = std::vector<int32_t>(costs_.pixelCount(), -1);
   std::deque<Mail> masterInbox_;
   bool masterBusy_ = false;
   Outbox masterOut_;

@@ -52,6 +52,7 @@ struct SimulatedRun {
   std::vector<Event> events;      // the run's event stream, virtual seconds
   RunReport report;               // driver "simulated"; serial time = the map's total
   uint64_t simulationEvents = 0;  // discrete events processed (a measure of the work done)
+  std::vector<int32_t> owner;     // per pixel: the worker that rendered it (the ownership map)
 };
 
 // Throws InputError for options no run could use: no workers, more workers than pixels, a
