@@ -149,6 +149,7 @@ ParallelOptions toParallelOptions(const RenderOptions& o, int workers) {
   p.slowdowns = o.slowdowns;
   p.speedIndexKind = parseSpeedIndexKind(o.speedIndex);
   p.batchPixels = o.batchPixels;
+  p.threads = o.threads;
   p.workerTimeoutSeconds = o.workerTimeoutSeconds;
   p.endgame = o.endgame == "on";
   p.checkpointPath = o.checkpointPath;
@@ -191,6 +192,8 @@ RunRequest makeRunRequest(const RenderOptions& o, const Scene& scene, const Rend
 
 int renderParallelLocal(const RenderOptions& o, const Scene& scene, const RenderSettings& s) {
   RunRequest request = makeRunRequest(o, scene, s, o.workers.value_or(4));
+  // Each emulated worker is one core unless told otherwise.
+  if (request.options.threads == 0) request.options.threads = 1;
   request.serialSeconds = serialSeconds(o, scene, s);
   request.masterSpeedIndexSeconds =
       serialSpeedIndexSeconds(request.options.speedIndexKind, scene, s);

@@ -132,7 +132,9 @@ Action addRenderCommand(CLI::App& app, const std::string& commandLine) {
                   "--spp and --drt override")
       ->check(CLI::IsMember({"A", "B", "C", "D"}));
   cmd->add_option("--threads", o->threads,
-                  "Rendering threads of a serial render (0: all cores)")
+                  "Rendering threads: of a serial render (0: all cores), or of each worker of a "
+                  "parallel one (0: one for each local worker; under mpirun, every CPU the "
+                  "rank may use, as --bind-to sets it)")
       ->check(CLI::Range(0, 1024))
       ->capture_default_str();
   cmd->add_flag("-q,--quiet", o->quiet, "No progress bar, summary or report table");

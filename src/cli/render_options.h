@@ -15,7 +15,7 @@ struct RenderOptions {
   std::optional<int> spp;     // SS: samples per pixel
   std::optional<int> drt;     // DRT rate
   std::string testCase;       // A|B|C|D: sets DRT and SS as in the paper's Table III
-  int threads = 0;            // serial render threads, 0: all cores
+  int threads = 0;            // serial: render threads (0: all cores); parallel: per worker
   bool quiet = false;
   std::string costMapPath;    // serial: also write each pixel's render seconds (for simulate)
 

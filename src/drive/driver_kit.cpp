@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "cluster/master.h"
+#include "core/cpu_time.h"
 #include "drive/master_loop.h"
 #include "drive/parallel_run.h"
 #include "drive/worker_engine.h"
@@ -100,6 +101,7 @@ ParallelRun runMasterSide(Transport& net, const RunRequest& request, const std::
     if (!summary) {
       if (master.isLive(w)) info.faults.missingSummaries.push_back(w);
       info.tasksReceived.push_back(0);
+      info.threads.push_back(0);  // unknown
       continue;
     }
     const double offset = net.sharedClock() ? 0.0 : workerClockOffset(masterEvents, summary->events, w);
@@ -109,6 +111,7 @@ ParallelRun runMasterSide(Transport& net, const RunRequest& request, const std::
       run.events.push_back(std::move(e));
     }
     info.tasksReceived.push_back(summary->tasksReceived);
+    info.threads.push_back(summary->threads);
     info.rays += summary->rays;
   }
   const Ledger& ledger = master.ledger();
@@ -129,7 +132,9 @@ ParallelRun runMasterSide(Transport& net, const RunRequest& request, const std::
 
 WorkerExit runWorkerSide(Transport& net, int id, const ParallelOptions& options,
                          const WorkerFaultActions& faults) {
-  WorkerEngine engine(options.slowdownOf(id), options.speedIndexKind, options.speedIndexDiscs);
+  const int threads = options.threads > 0 ? options.threads : affinityCpuCount();
+  WorkerEngine engine(options.slowdownOf(id), options.speedIndexKind, options.speedIndexDiscs,
+                      threads);
   WorkerLoopOptions loop;
   loop.batchPixels = options.batchPixels;
   loop.heartbeatSeconds = heartbeatSecondsFor(options.workerTimeoutSeconds);

@@ -147,6 +147,15 @@ TEST_P(LocalDriverTest, ResumedRunRendersOnlyTheMissingPixels) {
   c.done.forEach([&](uint64_t p) { ASSERT_EQ(run.owner[p], 7); });
 }
 
+// Workers of several threads each, as machines of several cores: the same image.
+TEST_P(LocalDriverTest, MultiThreadedWorkersKeepTheImage) {
+  LocalRunRequest r = request(GetParam(), 2);
+  r.options.threads = 2;
+  const ParallelRun run = renderLocal(r);
+  EXPECT_TRUE(run.image == serialReference());
+  for (const WorkerReport& w : run.report.workers) EXPECT_EQ(w.threads, 2);
+}
+
 INSTANTIATE_TEST_SUITE_P(AllStrategies, LocalDriverTest, ::testing::ValuesIn(strategyNames()));
 
 TEST(LocalDriverFaultTest, HungWorkerIsDetectedByTimeout) {

@@ -24,7 +24,9 @@ struct ParallelOptions {
   std::string strategy = "reservoir";  // see strategyNames()
   StrategyOptions strategyOptions;
   std::vector<double> slowdowns;       // per worker, each >= 1; empty: all 1
-  uint64_t batchPixels = 128;          // pixels per returned batch of results
+  uint64_t batchPixels = 128;          // pixels per returned batch of results, per thread
+  int threads = 1;                     // rendering threads of each worker; 0: all the CPUs
+                                       // its affinity allows (mpirun --bind-to sets it)
   double workerTimeoutSeconds = 5;     // the lease: silence (not even a heartbeat) after which
                                        // a worker is lost; also the master's, for the workers
   SpeedIndexKind speedIndexKind = SpeedIndexKind::Hanoi;  // what each worker measures

@@ -30,7 +30,10 @@ double fastestOf(int repeats, Measure&& seconds) {
 double measureProbeSeconds(const Renderer& renderer, int repeats) {
   Throttle plain;  // k = 1: times the probe, waits for nothing
   return fastestOf(repeats, [&] {
-    return probeSeconds(renderer, 1, [&](auto&& render) { return plain.run(render); });
+    std::vector<Color> colors;
+    return probeSeconds(renderer, 1, [&](const TaskSet& piece) {
+      return plain.run([&] { renderTasks(renderer, piece, 1, colors); });
+    });
   });
 }
 

@@ -26,20 +26,16 @@ inline constexpr uint64_t kProbePixels = 4096;
 // [min(pixelCount, 64), kProbePixels].
 TaskSet probePixels(uint64_t pixelCount);
 
-// Renders the probe on this thread, `pieces` equal parts one after the other, calling
-// runPiece(render) for each part; runPiece must call render() once and return its seconds
-// (a Throttle's run() does). Returns the total. The split lets a throttled worker's waits
-// interleave with other workers' computing, as its rendering does.
-template <typename RunPiece>
-double probeSeconds(const Renderer& renderer, int pieces, RunPiece&& runPiece) {
+// Renders the probe in `pieces` equal parts one after the other, calling renderPiece(part)
+// for each; it renders the part and returns its seconds (through a Throttle, for a worker).
+// Returns the total. The split lets a throttled worker's waits interleave with other workers'
+// computing, as its rendering does.
+template <typename RenderPiece>
+double probeSeconds(const Renderer& renderer, int pieces, RenderPiece&& renderPiece) {
   TaskSet remaining = probePixels(renderer.pixelCount());
   const uint64_t perPiece = (remaining.size() + pieces - 1) / static_cast<uint64_t>(pieces);
   double seconds = 0;
-  std::vector<Color> colors;
-  while (!remaining.empty()) {
-    const TaskSet piece = remaining.takeFront(perPiece);
-    seconds += runPiece([&] { renderTasks(renderer, piece, 1, colors); });
-  }
+  while (!remaining.empty()) seconds += renderPiece(remaining.takeFront(perPiece));
   return seconds;
 }
 

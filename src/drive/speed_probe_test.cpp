@@ -38,12 +38,14 @@ TEST(SpeedProbe, RendersTheProbeInTheRequestedPieces) {
   const World world(scene);
   const Renderer renderer(world, RenderSettings{});
   int pieces = 0;
-  const double seconds = probeSeconds(renderer, 5, [&](auto&& render) {
+  uint64_t pixels = 0;
+  const double seconds = probeSeconds(renderer, 5, [&](const TaskSet& piece) {
     ++pieces;
-    render();
+    pixels += piece.size();
     return 0.25;
   });
   EXPECT_EQ(pieces, 5);
+  EXPECT_EQ(pixels, probePixels(renderer.pixelCount()).size());
   EXPECT_DOUBLE_EQ(seconds, 1.25);
   EXPECT_GT(measureProbeSeconds(renderer, 1), 0.0);
 }

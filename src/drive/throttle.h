@@ -29,14 +29,16 @@
 // once on too few cores does not make them look slower than they are; rendering is timed by
 // the wall clock, since the image really waits for it. Without a slowdown (k = 1) the worker
 // is the machine itself, and its wall time is what it measures, other load included.
-// Reads clocks: used by drivers only. One per worker thread; not thread-safe.
-
-#include <time.h>
+// A worker that renders with several threads is paced by the CPU time of all of them
+// (measureParallel): the emulated machine has as many cores, each k times slower.
+// Reads clocks: used by drivers only. One per worker; called from one thread at a time.
 
 #include <algorithm>
 #include <chrono>
 #include <thread>
 #include <utility>
+
+#include "core/cpu_time.h"
 
 namespace prt {
 
@@ -67,7 +69,28 @@ class Throttle {
     const auto start = std::chrono::steady_clock::now();
     const double cpuStart = threadCpuSeconds();
     fn();
-    const double cpu = threadCpuSeconds() - cpuStart;
+    return finish(start, threadCpuSeconds() - cpuStart, 1);
+  }
+
+  // A stretch computed by `threads` threads at once: fn returns the CPU seconds all of them
+  // used. The emulated machine has as many cores, each k times slower, so the stretch lasts
+  // k times the CPU time per thread, k * cpu / threads.
+  template <typename F>
+  Stretch measureParallel(F&& fn, int threads) {
+    const auto start = std::chrono::steady_clock::now();
+    const double cpu = fn();
+    return finish(start, cpu, std::max(1, threads));
+  }
+
+  // measure(fn), returning the wall seconds.
+  template <typename F>
+  double run(F&& fn) {
+    return measure(std::forward<F>(fn)).wallSeconds;
+  }
+
+ private:
+  Stretch finish(std::chrono::steady_clock::time_point start, double totalCpu, int threads) {
+    const double cpu = totalCpu / threads;
     // Before the first stretch lastEnd_ is the clock's epoch: never back to back.
     const bool backToBack =
         std::chrono::duration<double>(start - lastEnd_).count() < kBackToBackSeconds;
@@ -81,21 +104,8 @@ class Throttle {
     if (slowdown_ > 1.0) lagSeconds_ = std::max(0.0, wall - (slowdown_ * cpu - lag));
     return {wall, slowdown_ > 1.0 ? slowdown_ * cpu : wall};
   }
-
-  // measure(fn), returning the wall seconds.
-  template <typename F>
-  double run(F&& fn) {
-    return measure(std::forward<F>(fn)).wallSeconds;
-  }
-
- private:
   static double secondsSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  }
-  static double threadCpuSeconds() {
-    timespec ts{};
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-    return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
   }
 
   static constexpr double kBackToBackSeconds = 1e-3;

@@ -80,3 +80,21 @@ TEST(Throttle, EmulatedTimeIsKTimesTheCpuTimeAndWallTimeWithoutSlowdown) {
 
 }  // namespace
 }  // namespace prt
+
+namespace prt {
+namespace {
+
+TEST(Throttle, AMultiThreadedStretchIsPacedByTheCpuTimeOfEveryThread) {
+  // Two threads used 40 ms of CPU in all: the emulated machine's two cores, each three times
+  // slower, take 3 * 40 / 2 = 60 ms.
+  Throttle throttle(3.0);
+  const Stretch s = throttle.measureParallel([] { return 0.040; }, 2);
+  EXPECT_DOUBLE_EQ(s.emulatedSeconds, 0.060);
+  EXPECT_GE(s.wallSeconds, 0.060 * 0.999);
+  // Unthrottled, the stretch is what it took.
+  Throttle plain;
+  EXPECT_LT(plain.measureParallel([] { return 0.040; }, 2).wallSeconds, 0.030);
+}
+
+}  // namespace
+}  // namespace prt

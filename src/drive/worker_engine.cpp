@@ -3,6 +3,8 @@
 #include <algorithm>
 
 #include "core/check.h"
+#include "core/cpu_time.h"
+#include "core/parallel.h"
 #include "core/speed_index.h"
 #include "drive/speed_probe.h"
 #include "scene/scene_file.h"
@@ -33,15 +35,44 @@ double WorkerEngine::measureSpeedIndex() {
     PRT_CHECK(renderer_ != nullptr);
     // As many stretches as the Hanoi run of the default disc count.
     constexpr int kProbePieces = 1 << (kSpeedIndexDiscs - kStretchDiscs);
-    return probeSeconds(*renderer_, kProbePieces, [this](auto&& render) {
-      return throttle_.measure(render).emulatedSeconds;
+    std::vector<Color> colors;
+    return probeSeconds(*renderer_, kProbePieces, [&](const TaskSet& piece) {
+      return throttle_
+          .measureParallel(
+              [&] {
+                double cpu = 0;
+                renderTasks(*renderer_, piece, threads_, colors, &cpu);
+                return cpu;
+              },
+              threads_)
+          .emulatedSeconds;
     });
   }
   const int discs = std::min(speedIndexDiscs_, kStretchDiscs);
   const uint64_t stretches = 1ull << std::max(0, speedIndexDiscs_ - kStretchDiscs);
   double seconds = 0;
   for (uint64_t i = 0; i < stretches; ++i) {
-    seconds += throttle_.measure([discs] { solveHanoiOnce(discs); }).emulatedSeconds;
+    if (threads_ == 1) {
+      seconds += throttle_.measure([discs] { solveHanoiOnce(discs); }).emulatedSeconds;
+      continue;
+    }
+    // One puzzle per thread at once: the machine's time per puzzle is the stretch over N.
+    seconds += throttle_
+                   .measureParallel(
+                       [&] {
+                         std::vector<double> cpu(static_cast<size_t>(threads_), 0.0);
+                         parallelFor(static_cast<uint64_t>(threads_), threads_, [&](uint64_t t) {
+                           const double start = threadCpuSeconds();
+                           solveHanoiOnce(discs);
+                           cpu[t] = threadCpuSeconds() - start;
+                         });
+                         double total = 0;
+                         for (double c : cpu) total += c;
+                         return total;
+                       },
+                       threads_)
+                   .emulatedSeconds /
+               threads_;
   }
   return seconds;
 }
@@ -49,7 +80,19 @@ double WorkerEngine::measureSpeedIndex() {
 std::vector<float> WorkerEngine::render(const TaskSet& batch, double& seconds, uint64_t& rays) {
   PRT_CHECK(renderer_ != nullptr);
   std::vector<Color> colors;
-  seconds = throttle_.run([&] { rays += renderTasks(*renderer_, batch, 1, colors); });
+  if (threads_ == 1) {
+    seconds = throttle_.run([&] { rays += renderTasks(*renderer_, batch, 1, colors); });
+  } else {
+    seconds = throttle_
+                  .measureParallel(
+                      [&] {
+                        double cpu = 0;
+                        rays += renderTasks(*renderer_, batch, threads_, colors, &cpu);
+                        return cpu;
+                      },
+                      threads_)
+                  .wallSeconds;
+  }
   std::vector<float> rgb(3 * colors.size());
   for (size_t i = 0; i < colors.size(); ++i) {
     rgb[3 * i] = static_cast<float>(colors[i].x);

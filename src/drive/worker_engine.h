@@ -1,7 +1,8 @@
 #pragma once
 // WorkerEngine: the effects a worker state machine asks its driver for, shared by the thread
 // and MPI drivers: build the renderer from the scene the master sent, measure the speed index,
-// render a batch — all under the worker's slowdown. One engine per worker; not shared.
+// render a batch — all under the worker's slowdown, on `threads` threads (a machine's cores).
+// One engine per worker; not shared.
 
 #include <memory>
 #include <vector>
@@ -15,15 +16,24 @@ namespace prt {
 
 class WorkerEngine {
  public:
-  WorkerEngine(double slowdown, SpeedIndexKind speedIndexKind, int speedIndexDiscs)
-      : throttle_(slowdown), speedIndexKind_(speedIndexKind), speedIndexDiscs_(speedIndexDiscs) {}
+  WorkerEngine(double slowdown, SpeedIndexKind speedIndexKind, int speedIndexDiscs,
+               int threads = 1)
+      : throttle_(slowdown),
+        speedIndexKind_(speedIndexKind),
+        speedIndexDiscs_(speedIndexDiscs),
+        threads_(threads < 1 ? 1 : threads) {}
+
+  int threads() const { return threads_; }
 
   // Parses the scene text (the master already validated it) and prepares the renderer.
   void load(const SceneMsg& scene);
   // The speed index (Towers of Hanoi time, or the ray-tracing probe's on the loaded scene),
-  // slowed down like everything else this worker computes.
+  // slowed down like everything else this worker computes, for the worker as it renders: the
+  // probe renders with all its threads; the Hanoi run solves one puzzle on each thread at
+  // once and reports the time per puzzle (the wall time over the thread count), so a worker
+  // of N cores has 1/N of one core's index.
   double measureSpeedIndex();
-  // Renders `batch` on one thread; returns 3 floats per pixel. `seconds` receives the wall
+  // Renders `batch` on the worker's threads; returns 3 floats per pixel. `seconds` receives the wall
   // time including the slowdown wait, `rays` the rays traced.
   std::vector<float> render(const TaskSet& batch, double& seconds, uint64_t& rays);
 
@@ -32,6 +42,7 @@ class WorkerEngine {
   Throttle throttle_;
   SpeedIndexKind speedIndexKind_;
   int speedIndexDiscs_;
+  int threads_;
   std::unique_ptr<World> world_;
   std::unique_ptr<Renderer> renderer_;
 };

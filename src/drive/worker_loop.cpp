@@ -22,7 +22,8 @@ class WorkerLoop {
         engine_(engine),
         options_(options),
         faults_(faults),
-        worker_(id, WorkerOptions{options.batchPixels}) {}
+        // A batch keeps every thread busy: batchPixels for each of them.
+        worker_(id, WorkerOptions{options.batchPixels * static_cast<uint64_t>(engine.threads())}) {}
 
   WorkerExit run() {
     lastFromMaster_ = net_.now();
@@ -60,7 +61,8 @@ class WorkerLoop {
         startBatch();
       }
     }
-    WorkerSummary summary{rays_, worker_.tasksReceived(), std::move(log_.events)};
+    WorkerSummary summary{rays_, worker_.tasksReceived(), engine_.threads(),
+                          std::move(log_.events)};
     net_.send(kMaster, Channel::Summary, encodeSummary(summary));
     net_.flush(options_.masterTimeoutSeconds);
     return WorkerExit::Stopped;

@@ -9,7 +9,7 @@
 namespace prt {
 namespace {
 
-constexpr uint8_t kVersion = 1;
+constexpr uint8_t kVersion = 2;  // 2: the thread count
 
 constexpr size_t kMinEventBytes = 1 + 4 + 8 + 8 + 8 + 8 + 4 + 2;
 
@@ -20,6 +20,7 @@ Bytes encodeSummary(const WorkerSummary& summary) {
   w.pod(kVersion);
   w.pod(summary.rays);
   w.pod(summary.tasksReceived);
+  w.pod(static_cast<int32_t>(summary.threads));
   w.pod(static_cast<uint64_t>(summary.events.size()));
   for (const Event& e : summary.events) {
     w.pod(static_cast<uint8_t>(e.kind));
@@ -40,6 +41,8 @@ WorkerSummary decodeSummary(const uint8_t* data, size_t size) {
   WorkerSummary s;
   s.rays = r.pod<uint64_t>();
   s.tasksReceived = r.pod<uint64_t>();
+  s.threads = r.pod<int32_t>();
+  if (s.threads < 1) throw std::runtime_error("malformed worker summary: thread count");
   const auto count = r.pod<uint64_t>();
   if (count > size / kMinEventBytes) throw std::runtime_error("malformed worker summary: count");
   s.events.reserve(count);

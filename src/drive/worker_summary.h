@@ -24,6 +24,7 @@ namespace prt {
 struct WorkerSummary {
   uint64_t rays = 0;           // rays traced by the worker
   uint64_t tasksReceived = 0;  // task messages received (assignments and transfers)
+  int threads = 1;             // threads the worker rendered with
   std::vector<Event> events;   // seconds since the worker received the scene
   bool operator==(const WorkerSummary&) const = default;
 };

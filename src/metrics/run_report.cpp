@@ -27,6 +27,7 @@ RunReport makeReport(const RunInfo& info, const std::vector<Event>& events,
     wr.speedIndexSeconds = info.workerSpeedIndexSeconds[w];
     wr.slowdown = w < info.slowdowns.size() ? info.slowdowns[w] : 1.0;
     wr.tasks = w < info.tasksReceived.size() ? info.tasksReceived[w] : 0;
+    wr.threads = w < info.threads.size() ? info.threads[w] : 1;
   }
   for (const Event& e : events) {
     if (e.kind == EventKind::WorkerLost) {
@@ -98,6 +99,7 @@ std::string RunReport::toJson() const {
                   {"speed_index_s", w.speedIndexSeconds},
                   {"slowdown", w.slowdown},
                   {"tasks", w.tasks},
+                  {"threads", w.threads},
                   {"pixels", w.pixels},
                   {"busy_s", w.busySeconds},
                   {"idle_s", w.idleSeconds},

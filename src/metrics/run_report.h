@@ -22,6 +22,7 @@ struct WorkerReport {
   double speedIndexSeconds = 0;
   double slowdown = 1;
   uint64_t tasks = 0;   // task messages received (assignments and transfers)
+  int threads = 1;      // rendering threads (0: unknown, its summary never came)
   uint64_t pixels = 0;  // pixels rendered
   double busySeconds = 0;
   double idleSeconds = 0;
@@ -59,6 +60,7 @@ struct RunInfo {
   std::vector<double> workerSpeedIndexSeconds;
   std::vector<double> slowdowns;        // per worker, 1 = full speed
   std::vector<uint64_t> tasksReceived;  // per worker
+  std::vector<int> threads;             // per worker: rendering threads (0: unknown)
   std::optional<double> serialSeconds;  // for speed-up; absent: speed-up not reported
   uint64_t rays = 0;
   FaultInfo faults;

@@ -6,6 +6,7 @@
 #include <mutex>
 #include <vector>
 
+#include "core/cpu_time.h"
 #include "core/parallel.h"
 #include "trace/sampling.h"
 
@@ -46,11 +47,6 @@ namespace {
 constexpr int kTileSize = 16;
 
 // --- per-pixel cost recording (renderImage's pixelSeconds) ---------------------------------
-double threadCpuSeconds() {
-  timespec ts{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
-}
 
 // A pixel's wall time includes any time its thread was preempted: on a busy machine, spikes
 // of milliseconds on a few pixels that would dwarf the real costs. Reading the thread's CPU
@@ -142,22 +138,32 @@ Image renderImage(const Renderer& renderer, int threads, RenderStats* stats,
 }
 
 uint64_t renderTasks(const Renderer& renderer, const TaskSet& tasks, int threads,
-                     std::vector<Color>& colors) {
+                     std::vector<Color>& colors, double* cpuSeconds) {
   colors.resize(tasks.size());
-  constexpr uint64_t kPiece = 256;
-  const uint64_t pieces = (tasks.size() + kPiece - 1) / kPiece;
+  // About four pieces per thread, between 8 and 256 pixels: enough to even out pixels of
+  // different cost, few enough that a piece is more work than taking it.
+  const uint64_t threadCount = static_cast<uint64_t>(threads <= 0 ? hardwareThreads() : threads);
+  const uint64_t piece =
+      std::clamp<uint64_t>((tasks.size() + 4 * threadCount - 1) / (4 * threadCount), 8, 256);
+  const uint64_t pieces = (tasks.size() + piece - 1) / piece;
   std::atomic<uint64_t> rays{0};
+  std::vector<double> pieceCpu(cpuSeconds != nullptr ? pieces : 0, 0.0);
   // Flatten once so pieces can be addressed by position; a task set here is at most a
   // worker's batch, not the whole image of a huge render.
   const std::vector<uint64_t> pixels = tasks.toVector();
-  parallelFor(pieces, threads, [&](uint64_t piece) {
+  parallelFor(pieces, threads, [&](uint64_t p) {
+    const double cpuStart = cpuSeconds != nullptr ? threadCpuSeconds() : 0.0;
     uint64_t pieceRays = 0;
-    const uint64_t end = std::min(pixels.size(), (piece + 1) * kPiece);
-    for (uint64_t i = piece * kPiece; i < end; ++i) {
+    const uint64_t end = std::min(pixels.size(), (p + 1) * piece);
+    for (uint64_t i = p * piece; i < end; ++i) {
       colors[i] = renderer.renderPixel(pixels[i], pieceRays);
     }
     rays += pieceRays;
+    if (cpuSeconds != nullptr) pieceCpu[p] = threadCpuSeconds() - cpuStart;
   });
+  if (cpuSeconds != nullptr) {
+    for (double c : pieceCpu) *cpuSeconds += c;
+  }
   return rays.load();
 }
 

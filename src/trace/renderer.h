@@ -56,8 +56,10 @@ Image renderImage(const Renderer& renderer, int threads, RenderStats* stats = nu
                   const ProgressFn& progress = {}, std::vector<float>* pixelSeconds = nullptr);
 
 // Renders the given pixels, in parallel over pieces of the set, storing colour i of
-// `colors` for task i of `tasks` (colors.size() == tasks.size()). Returns rays traced.
+// `colors` for task i of `tasks` (colors.size() == tasks.size()). Returns rays traced. With
+// `cpuSeconds`, also adds the CPU time every rendering thread spent on them (for a throttle
+// that paces a multi-threaded worker); the pieces are small enough to keep `threads` busy.
 uint64_t renderTasks(const Renderer& renderer, const TaskSet& tasks, int threads,
-                     std::vector<Color>& colors);
+                     std::vector<Color>& colors, double* cpuSeconds = nullptr);
 
 }  // namespace prt

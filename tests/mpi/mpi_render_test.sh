@@ -15,6 +15,9 @@
 #                   the serial image; mpirun ends within the grace period
 #   resume          SIGKILL of the whole job (mpirun and every rank) mid-render; --resume
 #                   under mpirun gives the serial image
+#   threads STRATEGY  ranks rendering with 1 and 2 threads mixed (mpirun's MPMD form):
+#                   byte-identical to the serial render, and the report gives each worker's
+#                   thread count
 #   singleton       one rank is refused with a clear message
 #   slowdown        a --slowdown list not matching the worker count is refused
 set -eu
@@ -191,7 +194,9 @@ PY
     cmp serial.pfm mpi.pfm || fail "the resumed image differs from the serial one"
     [ ! -f ck ] || fail "the checkpoint was not removed after the image was written"
     ;;
-  kill|stop)
+  kill|stop|kill-threaded)
+    threads=
+    if [ "$mode" = kill-threaded ]; then threads="--threads 2"; mode=kill; fi
     # shellcheck disable=SC2086
     "$prt" render "$scene" $slow -q -o serial.pfm
     start=$(date +%s)
@@ -199,7 +204,7 @@ PY
     mpi_prt_background --enable-recovery -np "$np" "$prt" render "$scene" $slow -q \
       --strategy "${arg:-reservoir}" --slowdown "$(slowdowns)" \
       --batch 8 -o mpi.pfm --worker-timeout 2 --report report.json --checkpoint ck \
-      --checkpoint-every 0.1
+      --checkpoint-every 0.1 $threads
     victim=$(rank_pid 2) || { kill_job; fail "worker rank 2 never started"; }
     wait_for_progress ck 200 || { kill_job; fail "no progress within 20 s"; }
     if [ "$mode" = kill ]; then kill -9 "$victim"; else kill -STOP "$victim"; fi
@@ -238,6 +243,28 @@ import json
 r = json.load(open("r.json"))
 assert r["resumed_pixels"] > 0, r["resumed_pixels"]
 assert sum(w["pixels"] for w in r["workers"]) == 64 * 48 - r["resumed_pixels"]
+PY
+    ;;
+  threads)
+    # shellcheck disable=SC2086
+    "$prt" render "$scene" $size -q -o serial.pfm
+    # Rank 0 (the master) and the first worker with one thread, the others with two.
+    set -- "$prt" render "$scene" $size -q --strategy "$arg" --batch 8 -o mpi.pfm \
+      --report report.json
+    set +e
+    # shellcheck disable=SC2086
+    timeout -k 5 90 "$mpiexec" $launcher_flags -np 2 "$@" --threads 1 : -np $((np - 2)) "$@" \
+      --threads 2 >out.txt 2>err.txt
+    status=$?
+    set -e
+    cat err.txt >&2
+    [ "$status" -eq 0 ] || fail "mpirun exited with $status"
+    cmp serial.pfm mpi.pfm || fail "the image with mixed thread counts differs from the serial one"
+    python3 - "$((np - 1))" <<'PY'
+import json, sys
+r = json.load(open("report.json"))
+threads = [w["threads"] for w in r["workers"]]
+assert threads == [1] + [2] * (int(sys.argv[1]) - 1), threads
 PY
     ;;
   singleton)
