@@ -48,7 +48,7 @@ class Lexer {
   int column() const { return static_cast<int>(pos_ - lineStart_) + 1; }
 
   void advance() {
-    if (text_[pos_] == '\n') {
+    if (endsLine(text_, pos_)) {
       ++line_;
       lineStart_ = pos_ + 1;
     }
@@ -60,7 +60,7 @@ class Lexer {
     while (pos_ < text_.size()) {
       const char c = text_[pos_];
       if (c == '#') {
-        while (pos_ < text_.size() && text_[pos_] != '\n') advance();
+        while (pos_ < text_.size() && text_[pos_] != '\n' && text_[pos_] != '\r') advance();
       } else if (c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\v') {
         advance();
       } else {
