@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "cli/commands.h"
+#include "cli/flag_checks.h"
 #include "core/input_error.h"
 #include "image/atomic_file.h"
 #include "metrics/chrome_trace.h"
@@ -177,7 +178,7 @@ Action addSimulateCommand(CLI::App& app) {
   cmd->add_option("--serial-seconds", o->serialSeconds,
                   "Scale the map to this serial time, seconds (synthetic default 60; a "
                   "recorded map keeps its own total)")
-      ->check(CLI::PositiveNumber)
+      ->check(positiveUpTo(1e9, "seconds"))
       ->group(model);
   cmd->add_option("--batch", o->batchPixels, "Pixels a worker renders between returning results")
       ->capture_default_str()
@@ -208,8 +209,9 @@ Action addSimulateCommand(CLI::App& app) {
       ->capture_default_str()
       ->group(model);
 
-  cmd->add_option("--report", o->reportPath, "Write the run report as JSON");
-  cmd->add_option("--trace", o->tracePath, "Write a Chrome trace-event timeline (Perfetto)");
+  cmd->add_option("--report", o->reportPath, "Write the run report as JSON")->check(fileName());
+  cmd->add_option("--trace", o->tracePath, "Write a Chrome trace-event timeline (Perfetto)")
+      ->check(fileName());
   cmd->add_flag("-q,--quiet", o->quiet, "No report table");
   return [o] { return runSimulate(*o); };
 }

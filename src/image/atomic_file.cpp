@@ -5,6 +5,7 @@
 #include <atomic>
 #include <cerrno>
 #include <cstdint>
+#include <filesystem>
 #include <system_error>
 
 #include "core/input_error.h"
@@ -81,6 +82,16 @@ void writeFileAtomically(const std::string& path,
     discard();
     throwCannotWrite(path, err);
   }
+}
+
+void checkWritable(const std::string& path) {
+  if (path.empty()) throw InputError("cannot write '': no file name given");
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error)) throwCannotWrite(path, EISDIR);
+  std::string tempPath;
+  std::FILE* file = openTemporary(path, tempPath);
+  std::fclose(file);
+  std::remove(tempPath.c_str());
 }
 
 void writeFileAtomically(const std::string& path, std::string_view contents) {

@@ -26,6 +26,11 @@ namespace prt {
 void writeFileAtomically(const std::string& path,
                          const std::function<void(std::FILE*)>& writeContents);
 
+// Throws the InputError writeFileAtomically would throw for `path` if it cannot be written:
+// creates, and removes at once, a temporary file beside it, and refuses a directory. For
+// checking every output of a run before the run starts. Leaves `path` itself untouched.
+void checkWritable(const std::string& path);
+
 // The same, with the whole contents in hand (text or bytes).
 void writeFileAtomically(const std::string& path, std::string_view contents);
 
