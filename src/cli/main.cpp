@@ -7,9 +7,12 @@
 
 #include "cli/commands.h"
 #include "core/input_error.h"
+#include "image/atomic_file.h"
 #include "trace/isa_level.h"
 
 int main(int argc, char** argv) {
+  // A render stopped by Ctrl-C, kill or a closed terminal leaves no half-written file behind.
+  prt::removeTemporaryFilesOnSignals();
   CLI::App app{"PRT: a ray tracer for networks of computers of different speeds"};
   app.require_subcommand(1);
   // The trace library's build in use, as the loader picked it for this processor.
