@@ -3,10 +3,12 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <exception>
+#include <new>
 #include <string>
 
 #include "cli/commands.h"
 #include "core/input_error.h"
+#include "core/thread_failures.h"
 #include "image/atomic_file.h"
 #include "trace/isa_level.h"
 
@@ -44,6 +46,9 @@ int main(int argc, char** argv) {
   } catch (const prt::InputError& e) {
     std::fprintf(stderr, "%s\n", e.format().c_str());
     return 2;
+  } catch (const std::bad_alloc&) {
+    std::fprintf(stderr, "prt: error: %s\n", prt::outOfMemoryMessage().c_str());
+    return 1;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "prt: error: %s\n", e.what());
     return 1;

@@ -8,6 +8,7 @@
 
 #include "cluster/master.h"
 #include "cluster/worker.h"
+#include "core/thread_failures.h"
 #include "drive/mailbox.h"
 #include "drive/worker_engine.h"
 
@@ -108,11 +109,30 @@ ParallelRun renderLocal(const LocalRunRequest& request) {
   EventLog masterLog;
   std::vector<WorkerOutcome> outcomes(static_cast<size_t>(n));
   std::vector<std::thread> threads;
+  // --- Thread failures (out of memory and any other exception in a worker thread): kept in
+  // `failures` instead of ending the process, the run stopped at once, the first rethrown after
+  // the joins. `joinAll` also joins if the master's loop throws: a joinable std::thread's
+  // destructor would end the process.
+  ThreadFailures failures;
+  const auto joinAll = [&] {
+    net.shutdown = true;
+    for (std::thread& t : threads) {
+      if (t.joinable()) t.join();
+    }
+  };
+  struct JoinOnExit {
+    const decltype(joinAll)& join;
+    ~JoinOnExit() { join(); }
+  } joinOnExit{joinAll};
   net.start = Clock::now();
   for (int w = 0; w < n; ++w) {
-    threads.emplace_back(runWorker, w, std::cref(options), std::ref(net),
-                         std::ref(outcomes[static_cast<size_t>(w)]));
+    threads.emplace_back([&, w] {
+      if (!failures.run([&] { runWorker(w, options, net, outcomes[static_cast<size_t>(w)]); })) {
+        net.shutdown = true;
+      }
+    });
   }
+  // --- end thread failures
   // Silence is counted from the last exchange either way: a worker just handed new tasks after
   // a long wait owes nothing yet.
   std::vector<double> lastContact(static_cast<size_t>(n), 0.0);
@@ -128,6 +148,7 @@ ParallelRun renderLocal(const LocalRunRequest& request) {
   sendFromMaster(master.start());
   std::string failure;
   while (!master.complete()) {
+    if (failures.any()) break;  // thread failures: rethrown below
     if (master.failed()) {
       failure = "every worker was lost; the image cannot be finished";
       break;
@@ -153,8 +174,8 @@ ParallelRun renderLocal(const LocalRunRequest& request) {
     }
   }
   const double elapsed = net.now();
-  net.shutdown = true;
-  for (std::thread& t : threads) t.join();
+  joinAll();
+  failures.rethrowFirst();  // thread failures
   if (!failure.empty()) throw std::runtime_error(failure);
 
   ParallelRun run;
