@@ -10,6 +10,7 @@ packages=(
   openmpi-bin libopenmpi-dev
   povray
   python3 gnuplot-nox hyperfine
+  clang libclang-rt-14-dev   # libFuzzer and the sanitizers, for scripts/fuzz.sh
 )
 
 missing=()
