@@ -158,6 +158,29 @@ TEST_F(Robustness, FlagsOutOfRangeAreRefusedWithReadableMessages) {
   EXPECT_FALSE(fs::exists(path("out.png")));
 }
 
+// Found by a hostile pass over the other subcommands.
+TEST_F(Robustness, OtherCommandsRefuseAbsurdValuesAndReportFailuresPlainly) {
+  const auto refused = [&](const std::string& args, const std::string& fragment) {
+    const Result r = run(args);
+    EXPECT_EQ(r.exitCode, 2) << args << "\n" << r.output;
+    EXPECT_NE(r.output.find(fragment), std::string::npos) << args << "\n" << r.output;
+    EXPECT_LT(r.output.size(), 400u) << r.output;
+  };
+  // A synthetic map of 2^30 pixels took gigabytes and ran for minutes.
+  refused("simulate --width 32768 --height 32768", "image too large");
+  // Simulated times of 1e301 seconds, printed in 300 digits.
+  refused("simulate --latency-us 1e300", "--latency-us must be in [0, 1e9]");
+  refused("simulate --bandwidth-mbps 1e-300", "--bandwidth-mbps must be in [0.001, 1e10]");
+  refused("simulate --master-service-us 1e300", "--master-service-us must be in [0, 1e9]");
+  const std::string scene = write("ok.scene", kSmallScene);
+  refused("compare " + scene + " --diff-scale nan --out " + path("cmp"), "--diff-scale");
+  refused("render " + scene + " --workers 2 --batch -1 -o " + path("o.png"), "--batch");
+  // A POV-Ray that prints nothing and fails: its exit code, not a std::string exception.
+  const Result r = run("compare " + scene + " --povray /bin/false --out " + path("cmp"));
+  EXPECT_EQ(r.exitCode, 1) << r.output;
+  EXPECT_NE(r.output.find("povray exited with code 1"), std::string::npos) << r.output;
+}
+
 // Starts a render of the benchmark scene (seconds long), sends `signal` after a moment and
 // returns the exit code the shell saw.
 int renderKilledBy(const std::string& signal, const std::string& flags, const std::string& out) {

@@ -103,6 +103,7 @@ void addParallelOptions(CLI::App& cmd, RenderOptions& o) {
       ->capture_default_str()
       ->group(parallel);
   cmd.add_option("--batch", o.batchPixels, "Pixels a worker renders between returning results")
+      ->check(CLI::Range(1ull, 1ull << 28))  // no image has more pixels; "-1" would wrap
       ->capture_default_str()
       ->group(parallel);
   cmd.add_option("--worker-timeout", o.workerTimeoutSeconds,

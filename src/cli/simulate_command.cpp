@@ -54,6 +54,11 @@ CostMap loadCostMap(const SimulateOptions& o, std::string& source) {
   if (o.costMapPath.empty()) {
     const int width = o.width.value_or(640);
     const int height = o.height.value_or(480);
+    // As prt render: beyond 2^28 pixels the map alone takes gigabytes and the run hours.
+    if (static_cast<uint64_t>(width) * static_cast<uint64_t>(height) > (uint64_t{1} << 28)) {
+      throw InputError("image too large: " + std::to_string(width) + "x" +
+                       std::to_string(height) + " exceeds 2^28 pixels");
+    }
     source = "synthetic complex-scene cost map";
     return complexSceneCostMap(width, height, o.serialSeconds.value_or(kDefaultSerialSeconds));
   }
