@@ -147,13 +147,21 @@ class Lexer {
 }  // namespace
 
 std::string describe(const Token& token) {
+  // A token of thousands of characters (a run-away name, a generated line) is shown cut.
+  constexpr size_t kShown = 60;
+  std::string text = token.text;
+  if (text.size() > kShown) {
+    size_t cut = kShown;
+    while (cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80) --cut;
+    text = text.substr(0, cut) + "... (" + std::to_string(token.text.size()) + " characters)";
+  }
   switch (token.kind) {
     case TokenKind::String:
-      return "the string \"" + token.text + "\"";
+      return "the string \"" + text + "\"";
     case TokenKind::End:
       return "the end of the file";
     default:
-      return "'" + token.text + "'";
+      return "'" + text + "'";
   }
 }
 

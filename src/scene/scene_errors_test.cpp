@@ -321,5 +321,23 @@ TEST(SceneErrors, FormatShowsTheLineAndACaret) {
             "                                 ^");
 }
 
+TEST(SceneErrors, LongLinesAndTokensAreShownCutAroundTheCulprit) {
+  const std::string padding(5000, ' ');
+  const std::string name(3000, 'x');
+  const InputError error =
+      errorOf(kPreamble + "sphere {" + padding + name + " radius 1 }" + padding + "# end");
+  const std::string text = error.format();
+  EXPECT_LT(text.size(), 600u) << text;
+  EXPECT_NE(text.find("unknown parameter 'xxxxxxxxxx"), std::string::npos) << text;
+  EXPECT_NE(text.find("... (3000 characters)"), std::string::npos) << text;
+  // The shown piece of the line starts with "..." and the caret stands under the name.
+  const size_t lineStart = text.find("\n  ...") + 1;
+  const size_t caretLine = text.find('\n', lineStart) + 1;
+  const size_t caret = text.find('^', caretLine);
+  ASSERT_NE(caret, std::string::npos) << text;
+  EXPECT_EQ(text[lineStart + (caret - caretLine)], 'x') << text;
+  EXPECT_EQ(text[lineStart + (caret - caretLine) - 1], ' ') << text;
+}
+
 }  // namespace
 }  // namespace prt

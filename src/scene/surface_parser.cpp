@@ -12,14 +12,14 @@ const Material& lookUp(const TokenStream& in, const Token& name, const MaterialT
   const auto found = materials.find(name.text);
   if (found != materials.end()) return found->second.material;
   if (materials.empty()) {
-    in.fail(name, "unknown material '" + name.text +
-                      "'; no materials are defined yet (define one first with material NAME "
+    in.fail(name, "unknown material " + describe(name) +
+                      "; no materials are defined yet (define one first with material NAME "
                       "{ ... })");
   }
   std::vector<std::string_view> names;
   for (const auto& entry : materials) names.push_back(entry.first);
   const std::string message =
-      "unknown material '" + name.text + "'" + didYouMean(name.text, names) +
+      "unknown material " + describe(name) + didYouMean(name.text, names) +
       "; defined materials: " + joinNames(names) + " (a material must be defined before its use)";
   in.fail(name, message);
 }
