@@ -11,6 +11,7 @@ packages=(
   povray
   python3 gnuplot-nox hyperfine
   chromium  # headless, for the test that opens the run page in a browser
+  clang libclang-rt-14-dev   # libFuzzer and the sanitizers, for scripts/fuzz.sh
 )
 
 missing=()

@@ -12,6 +12,7 @@
 #include <variant>
 
 #include "cli/commands.h"
+#include "cli/flag_checks.h"
 #include "core/input_error.h"
 #include "export/box_blur.h"
 #include "export/pov_exporter.h"
@@ -179,7 +180,7 @@ Action addCompareCommand(CLI::App& app) {
       ->check(CLI::Range(0, 255))
       ->capture_default_str();
   cmd->add_option("--diff-scale", o->diffScale, "Gain of the difference image")
-      ->check(CLI::Range(0.0, 255.0))
+      ->check(finiteIn(0, 255))
       ->capture_default_str();
   cmd->add_option("--out", o->outDir,
                   "Directory for SCENE.prt.png, SCENE.pov.png, SCENE.compare.png (PRT | POV-Ray "

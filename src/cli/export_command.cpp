@@ -8,6 +8,7 @@
 #include <string>
 
 #include "cli/commands.h"
+#include "cli/flag_checks.h"
 #include "core/input_error.h"
 #include "export/pov_exporter.h"
 #include "image/atomic_file.h"
@@ -64,7 +65,9 @@ Action addExportCommand(CLI::App& app) {
   cmd->add_option("--format", o->format, "Output format")
       ->check(CLI::IsMember({"pov"}))
       ->capture_default_str();
-  cmd->add_option("-o,--output", o->output, "Output file (.pov); written atomically")->required();
+  cmd->add_option("-o,--output", o->output, "Output file (.pov); written atomically")
+      ->required()
+      ->check(fileName());
   cmd->add_option("--width", o->width, "Image width in pixels (the camera depends on it)")
       ->check(CLI::Range(1, 32768));
   cmd->add_option("--height", o->height, "Image height in pixels")->check(CLI::Range(1, 32768));

@@ -3,13 +3,18 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <exception>
+#include <new>
 #include <string>
 
 #include "cli/commands.h"
 #include "core/input_error.h"
+#include "core/thread_failures.h"
+#include "image/atomic_file.h"
 #include "trace/isa_level.h"
 
 int main(int argc, char** argv) {
+  // A render stopped by Ctrl-C, kill or a closed terminal leaves no half-written file behind.
+  prt::removeTemporaryFilesOnSignals();
   CLI::App app{"PRT: a ray tracer for networks of computers of different speeds"};
   app.require_subcommand(1);
   // The trace library's build in use, as the loader picked it for this processor.
@@ -43,6 +48,9 @@ int main(int argc, char** argv) {
   } catch (const prt::InputError& e) {
     std::fprintf(stderr, "%s\n", e.format().c_str());
     return 2;
+  } catch (const std::bad_alloc&) {
+    std::fprintf(stderr, "prt: error: %s\n", prt::outOfMemoryMessage().c_str());
+    return 1;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "prt: error: %s\n", e.what());
     return 1;

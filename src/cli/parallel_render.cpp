@@ -1,8 +1,12 @@
 #include "cli/parallel_render.h"
 
+#include "cli/flag_checks.h"
 #include "cli/run_page_output.h"
+
 #include <cstdio>
 #include <cstdlib>
+#include <optional>
+#include <string_view>
 #include <tuple>
 
 #include "cli/checkpointing.h"
@@ -20,19 +24,39 @@
 namespace prt::cli {
 namespace {
 
+// Digits only (no sign, no space), at most `max`: sscanf's %llu would take "-5" as 2^64 - 5.
+std::optional<uint64_t> parseCount(std::string_view text, uint64_t max) {
+  if (text.empty() || text.size() > 19) return std::nullopt;
+  uint64_t value = 0;
+  for (const char c : text) {
+    if (c < '0' || c > '9') return std::nullopt;
+    value = value * 10 + static_cast<uint64_t>(c - '0');
+  }
+  if (value > max) return std::nullopt;
+  return value;
+}
+
 std::vector<FaultInjection> parseFaults(const std::vector<std::string>& specs) {
   std::vector<FaultInjection> faults;
   for (const std::string& spec : specs) {
+    const size_t first = spec.find(':');
+    const size_t second = first == std::string::npos ? first : spec.find(':', first + 1);
+    const auto fail = [&](const std::string& why) {
+      throw InputError("--inject-fault '" + spec + "': " + why +
+                       "; expected WORKER:PIXELS:crash|hang, e.g. 1:500:crash");
+    };
+    if (second == std::string::npos) fail("three fields separated by ':' needed");
+    const std::string_view text(spec);
+    const auto worker = parseCount(text.substr(0, first), 1u << 20);
+    if (!worker) fail("WORKER must be a worker number, 0 or more");
+    const auto pixels = parseCount(text.substr(first + 1, second - first - 1), 1ull << 28);
+    if (!pixels) fail("PIXELS must be a whole number of pixels from 0 to 2^28");
+    const std::string_view kind = text.substr(second + 1);
+    if (kind != "crash" && kind != "hang") fail("the fault must be crash or hang");
     FaultInjection f;
-    char kind[16] = {};
-    unsigned long long pixels = 0;
-    if (std::sscanf(spec.c_str(), "%d:%llu:%15s", &f.worker, &pixels, kind) != 3 ||
-        (std::string(kind) != "crash" && std::string(kind) != "hang")) {
-      throw InputError("--inject-fault '" + spec + "': expected WORKER:PIXELS:crash|hang");
-    }
-    f.afterPixels = pixels;
-    f.kind = std::string(kind) == "crash" ? FaultInjection::Kind::Crash
-                                          : FaultInjection::Kind::Hang;
+    f.worker = static_cast<int>(*worker);
+    f.afterPixels = *pixels;
+    f.kind = kind == "crash" ? FaultInjection::Kind::Crash : FaultInjection::Kind::Hang;
     faults.push_back(f);
   }
   return faults;
@@ -81,6 +105,7 @@ void addParallelOptions(CLI::App& cmd, RenderOptions& o) {
       ->capture_default_str()
       ->group(parallel);
   cmd.add_option("--batch", o.batchPixels, "Pixels a worker renders between returning results")
+      ->check(CLI::Range(1ull, 1ull << 28))  // no image has more pixels; "-1" would wrap
       ->capture_default_str()
       ->group(parallel);
   cmd.add_option("--worker-timeout", o.workerTimeoutSeconds,
@@ -96,7 +121,7 @@ void addParallelOptions(CLI::App& cmd, RenderOptions& o) {
       ->group(parallel);
   cmd.add_option("--serial-seconds", o.serialSeconds,
                  "The serial render time, for speed-up and ASU")
-      ->check(CLI::PositiveNumber)
+      ->check(positiveUpTo(1e9, "seconds"))
       ->group(parallel);
   cmd.add_flag("--measure-serial", o.measureSerial,
                "Render serially on one thread first to measure the serial time")
@@ -116,9 +141,11 @@ void addParallelOptions(CLI::App& cmd, RenderOptions& o) {
                "is the same as an uninterrupted render's)")
       ->group(checkpoints);
   cmd.add_option("--report", o.reportPath, "Write the load-balancing report as JSON")
+      ->check(fileName())
       ->group(parallel);
   cmd.add_option("--trace", o.tracePath,
                  "Write a Chrome trace-event timeline (open in Perfetto)")
+      ->check(fileName())
       ->group(parallel);
   cmd.add_option("--html", o.htmlPath,
                  "Write the run's page: one self-contained HTML file with the image, the "
@@ -126,6 +153,7 @@ void addParallelOptions(CLI::App& cmd, RenderOptions& o) {
       ->group(parallel);
   cmd.add_option("--ownership", o.ownershipPath,
                  "Write the image coloured by the worker that rendered each pixel")
+      ->check(fileName())
       ->group(parallel);
   cmd.add_option("--inject-fault", o.faults,
                  "Testing: WORKER:PIXELS:crash|hang makes worker WORKER (rank WORKER+1 under "

@@ -1,5 +1,6 @@
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
@@ -8,10 +9,12 @@
 
 #include "cli/checkpointing.h"
 #include "cli/commands.h"
+#include "cli/flag_checks.h"
 #include "cli/parallel_render.h"
 #include "cli/progress_bar.h"
 #include "cli/run_page_output.h"
 #include "core/input_error.h"
+#include "image/atomic_file.h"
 #include "image/image_io.h"
 #include "scene/scene_file.h"
 #include "sim/cost_map_file.h"
@@ -42,6 +45,34 @@ RenderSettings resolveSettings(const RenderOptions& o, Scene& scene) {
     throw InputError("image file '" + path + "' has an unsupported extension; use " + list);
   }
   return s;
+}
+
+// Every file the run will write, checked before any rendering: a render may take hours, and
+// failing only at its end (or writing the image and then failing) wastes them. Two outputs
+// naming one file would overwrite each other.
+void checkOutputs(const RenderOptions& o, const Scene& scene) {
+  namespace fs = std::filesystem;
+  const std::pair<const char*, std::string> outputs[] = {{"-o", scene.image.output},
+                                                         {"--cost-map", o.costMapPath},
+                                                         {"--report", o.reportPath},
+                                                         {"--trace", o.tracePath},
+                                                         {"--ownership", o.ownershipPath},
+                                                         {"--html", o.htmlPath},
+                                                         {"--checkpoint", o.checkpointPath}};
+  std::vector<std::pair<const char*, fs::path>> seen;
+  for (const auto& [flag, path] : outputs) {
+    if (path.empty()) continue;
+    std::error_code error;
+    const fs::path resolved = fs::weakly_canonical(fs::absolute(path), error);
+    for (const auto& [otherFlag, otherPath] : seen) {
+      if (!error && resolved == otherPath) {
+        throw InputError(std::string(flag) + " and " + otherFlag + " name the same file '" +
+                         path + "'; each output needs its own");
+      }
+    }
+    if (!error) seen.emplace_back(flag, resolved);
+    checkWritable(path);
+  }
 }
 
 int renderSerial(const RenderOptions& o, const Scene& scene, const RenderSettings& settings) {
@@ -86,21 +117,25 @@ int runRender(const RenderOptions& o) {
     return renderParallelMpi(o, [&] {
       Scene scene = loadSceneFile(o.scenePath);
       const RenderSettings settings = resolveSettings(o, scene);
+      checkOutputs(o, scene);
       return std::pair{std::move(scene), settings};
     });
   }
   // --- end MPI hook
   Scene scene = loadSceneFile(o.scenePath);
   const RenderSettings settings = resolveSettings(o, scene);
-  if (o.workers || o.strategy) return renderParallelLocal(o, scene, settings);
+  const bool parallel = o.workers || o.strategy;
   for (const bool parallelOnly : {!o.reportPath.empty(), !o.tracePath.empty(),
                                   !o.ownershipPath.empty(), !o.htmlPath.empty(),
-                                  !o.slowdowns.empty()}) {
-    if (parallelOnly) {
-      throw InputError("--report, --trace, --ownership, --html and --slowdown describe a "
-                       "parallel run; add --workers N (and optionally --strategy NAME)");
+                                  !o.slowdowns.empty(), !o.faults.empty()}) {
+    if (parallelOnly && !parallel) {
+      throw InputError("--report, --trace, --ownership, --html, --slowdown and --inject-fault "
+                       "describe a parallel run; add --workers N (and optionally --strategy "
+                       "NAME)");
     }
   }
+  checkOutputs(o, scene);
+  if (parallel) return renderParallelLocal(o, scene, settings);
   if (!o.checkpointPath.empty()) return renderSerialWithCheckpoint(o, scene, settings);
   if (o.resume) throw InputError("--resume needs --checkpoint FILE: the checkpoint to resume");
   return renderSerial(o, scene, settings);
@@ -118,7 +153,8 @@ Action addRenderCommand(CLI::App& app, const std::string& commandLine) {
   cmd->add_option("scene", o->scenePath, "Scene file (.scene)")->required();
   cmd->add_option("-o,--output", o->output,
                   "Output image; the extension picks the format (.png, .ppm, .pfm). "
-                  "Default: the scene's output file");
+                  "Default: the scene's output file")
+      ->check(fileName());
   cmd->add_option("--width", o->width, "Image width in pixels")->check(CLI::Range(1, 32768));
   cmd->add_option("--height", o->height, "Image height in pixels")->check(CLI::Range(1, 32768));
   cmd->add_option("--spp", o->spp, "Supersampling: samples per pixel (SS)")
@@ -140,7 +176,8 @@ Action addRenderCommand(CLI::App& app, const std::string& commandLine) {
   cmd->add_flag("-q,--quiet", o->quiet, "No progress bar, summary or report table");
   cmd->add_option("--cost-map", o->costMapPath,
                   "Serial render: also write each pixel's render time to FILE, the cost map "
-                  "prt simulate replays (use --threads 1 for times free of contention)");
+                  "prt simulate replays (use --threads 1 for times free of contention)")
+      ->check(fileName());
   addParallelOptions(*cmd, *o);
   return [o] { return runRender(*o); };
 }

@@ -11,6 +11,7 @@
 
 #include "cli/commands.h"
 #include "cli/run_page_output.h"
+#include "cli/flag_checks.h"
 #include "core/input_error.h"
 #include "core/machine.h"
 #include "image/atomic_file.h"
@@ -57,6 +58,11 @@ CostMap loadCostMap(const SimulateOptions& o, std::string& source) {
   if (o.costMapPath.empty()) {
     const int width = o.width.value_or(640);
     const int height = o.height.value_or(480);
+    // As prt render: beyond 2^28 pixels the map alone takes gigabytes and the run hours.
+    if (static_cast<uint64_t>(width) * static_cast<uint64_t>(height) > (uint64_t{1} << 28)) {
+      throw InputError("image too large: " + std::to_string(width) + "x" +
+                       std::to_string(height) + " exceeds 2^28 pixels");
+    }
     source = "synthetic complex-scene cost map";
     return complexSceneCostMap(width, height, o.serialSeconds.value_or(kDefaultSerialSeconds));
   }
@@ -207,7 +213,7 @@ Action addSimulateCommand(CLI::App& app, const std::string& commandLine) {
   cmd->add_option("--serial-seconds", o->serialSeconds,
                   "Scale the map to this serial time, seconds (synthetic default 60; a "
                   "recorded map keeps its own total)")
-      ->check(CLI::PositiveNumber)
+      ->check(positiveUpTo(1e9, "seconds"))
       ->group(model);
   cmd->add_option("--batch", o->batchPixels, "Pixels a worker renders between returning results")
       ->capture_default_str()
@@ -238,11 +244,13 @@ Action addSimulateCommand(CLI::App& app, const std::string& commandLine) {
       ->capture_default_str()
       ->group(model);
 
-  cmd->add_option("--report", o->reportPath, "Write the run report as JSON");
-  cmd->add_option("--trace", o->tracePath, "Write a Chrome trace-event timeline (Perfetto)");
+  cmd->add_option("--report", o->reportPath, "Write the run report as JSON")->check(fileName());
+  cmd->add_option("--trace", o->tracePath, "Write a Chrome trace-event timeline (Perfetto)")
+      ->check(fileName());
   cmd->add_option("--html", o->htmlPath,
                   "Write the run's page: one self-contained HTML file with the cost map, the "
-                  "ownership map, the timeline and the measures");
+                  "ownership map, the timeline and the measures")
+      ->check(fileName());
   cmd->add_flag("-q,--quiet", o->quiet, "No report table");
   return [o] { return runSimulate(*o); };
 }

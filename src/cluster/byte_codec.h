@@ -53,6 +53,7 @@ class ByteReader {
   }
   void raw(void* dest, size_t n) {
     need(n);
+    if (n == 0) return;  // dest may be null then (an empty vector's data()): memcpy forbids it
     std::memcpy(dest, data_ + pos_, n);
     pos_ += n;
   }
@@ -65,6 +66,11 @@ class ByteReader {
   }
   void need(uint64_t n) const {
     if (n > size_ - pos_) fail("truncated");
+  }
+  // That `count` items of `itemBytes` each remain, without the product overflowing (a
+  // corrupt count must not pass as a small one and then size a huge allocation).
+  void needItems(uint64_t count, uint64_t itemBytes) const {
+    if (count > (size_ - pos_) / itemBytes) fail("truncated");
   }
   void finish() const {
     if (pos_ != size_) fail("trailing bytes");

@@ -18,15 +18,26 @@ void writeTasks(ByteWriter& w, const TaskSet& s) {
   }
 }
 
+constexpr uint64_t kMaxTaskIndex = uint64_t{1} << 40;
+
 TaskSet readTasks(ByteReader& r) {
   const auto runs = r.pod<uint64_t>();
-  r.need(runs * 24);
+  r.needItems(runs, 24);
   TaskSet s;
+  uint64_t total = 0;
   for (uint64_t i = 0; i < runs; ++i) {
     TaskRun run;
     run.first = r.pod<uint64_t>();
     run.count = r.pod<uint64_t>();
     run.stride = r.pod<uint64_t>();
+    // No image has 2^40 pixels: larger indices or counts are corruption, and would overflow
+    // the task set's arithmetic (its last index, its size).
+    const bool beyond =
+        run.first > kMaxTaskIndex || run.count > kMaxTaskIndex - total ||
+        (run.count > 1 && run.stride > 0 &&
+         run.count - 1 > (kMaxTaskIndex - run.first) / run.stride);
+    if (beyond) r.fail("task run beyond 2^40 pixels");
+    total += run.count;
     s.append(run);
   }
   return s;
@@ -93,7 +104,7 @@ Message decode(const uint8_t* data, size_t size) {
       ResultsMsg res;
       res.tasks = readTasks(r);
       const auto n = r.pod<uint64_t>();
-      r.need(n * sizeof(float));
+      r.needItems(n, sizeof(float));
       res.rgb.resize(n);
       r.raw(res.rgb.data(), n * sizeof(float));
       if (res.rgb.size() != 3 * res.tasks.size()) {

@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cstring>
+#include <stdexcept>
+
 namespace prt {
 namespace {
 
@@ -40,6 +43,26 @@ TEST(MessagesTest, MalformedBuffersAreRejected) {
   Bytes extra = encode(StopMsg{});
   extra.push_back(0);
   EXPECT_THROW(decode(extra), std::runtime_error);
+}
+
+// Found by the message fuzzer (tests/fuzz): counts whose byte size overflows, and task runs
+// whose indices or total overflow the task set's arithmetic, are refused.
+TEST(MessagesTest, CorruptCountsAreRejectedNotTrusted) {
+  const auto withWord = [](Bytes bytes, size_t at, uint64_t value) {
+    std::memcpy(bytes.data() + at, &value, sizeof value);
+    return bytes;
+  };
+  // Results: tag, 1 run (first, count, stride), then the float count.
+  const Bytes results = encode(ResultsMsg{TaskSet::range(10, 1), {1, 2, 3}});
+  // 2^62 floats are 2^64 bytes: "need" of the wrapped product would have passed.
+  EXPECT_THROW(decode(withWord(results, 1 + 8 + 24, uint64_t{1} << 62)), std::runtime_error);
+  EXPECT_THROW(decode(withWord(results, 1, uint64_t{1} << 62)), std::runtime_error);  // runs
+  const Bytes tasks = encode(TasksMsg{TaskSet::range(5, 3)});
+  EXPECT_THROW(decode(withWord(tasks, 1 + 8, ~uint64_t{0})), std::runtime_error);       // first
+  EXPECT_THROW(decode(withWord(tasks, 1 + 16, ~uint64_t{0})), std::runtime_error);      // count
+  EXPECT_THROW(decode(withWord(tasks, 1 + 24, uint64_t{1} << 40)), std::runtime_error);  // stride
+  // An empty result (no tasks, no colours) is well formed.
+  EXPECT_EQ(decode(encode(ResultsMsg{})), Message(ResultsMsg{}));
 }
 
 }  // namespace

@@ -111,7 +111,7 @@ std::string readWholeFile(const fs::path& path) {
 std::string lastLines(const std::string& text, int count) {
   size_t pos = text.size();
   while (pos > 0 && text[pos - 1] == '\n') --pos;
-  if (pos == 0) return "";  // nothing but line ends
+  if (pos == 0) return {};  // nothing but line ends (a program that printed nothing)
   for (int n = 0; n < count && pos > 0; ++n) {
     pos = text.rfind('\n', pos - 1);
     if (pos == std::string::npos) return text;

@@ -21,7 +21,8 @@ std::string percent(uint64_t part, uint64_t whole) {
 
 }  // namespace
 
-ParallelRun runMasterSide(Transport& net, const RunRequest& request, const std::string& driver) {
+ParallelRun runMasterSide(Transport& net, const RunRequest& request, const std::string& driver,
+                          std::function<bool()> abandoned) {
   const Scene& scene = request.scene;
   const ParallelOptions& options = request.options;
   const uint64_t pixels = static_cast<uint64_t>(scene.image.width) * scene.image.height;
@@ -46,6 +47,7 @@ ParallelRun runMasterSide(Transport& net, const RunRequest& request, const std::
   loop.heartbeatSeconds = heartbeatSecondsFor(options.workerTimeoutSeconds);
   loop.checkpointEverySeconds = options.checkpointEverySeconds;
   loop.interrupted = request.interrupted;
+  loop.abandoned = std::move(abandoned);
   const CheckpointKey key = checkpointKey(scene, request.settings);
   bool warned = false;
   auto saveCheckpoint = [&](const std::string& why) {

@@ -1,32 +1,32 @@
 #include "drive/local_driver.h"
 
 #include <chrono>
-#include <cstdio>
 #include <memory>
 #include <thread>
 
+#include "core/thread_failures.h"
 #include "drive/local_transport.h"
 
 namespace prt {
 namespace {
 
-void runWorkerThread(LocalNetwork& net, int id, const ParallelOptions& options) {
+void runWorkerThread(LocalNetwork& net, int id, const ParallelOptions& options,
+                     ThreadFailures& failures) {
   LocalTransport transport(net, id);
   WorkerFaultActions faults;
   faults.crash = [&] { transport.dropConnection(); };
   faults.hang = [&] {
     while (!net.isShutDown()) std::this_thread::sleep_for(std::chrono::milliseconds(5));
   };
-  try {
-    const WorkerExit exit = runWorkerSide(transport, id, options, faults);
-    if (exit == WorkerExit::MasterLost) transport.dropConnection();
-  } catch (const std::bad_alloc&) {
-    std::fprintf(stderr, "prt: worker %d: out of memory; its tasks go to the others\n", id);
-    transport.dropConnection();
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "prt: worker %d failed: %s; its tasks go to the others\n", id, e.what());
-    transport.dropConnection();
-  }
+  // An exception (out of memory above all) is kept for the caller, which stops the run and
+  // reports it once: every worker shares this process's memory, so the others would not fare
+  // better. A thread's exception must never reach std::terminate.
+  const bool ran = failures.run([&] {
+    if (runWorkerSide(transport, id, options, faults) == WorkerExit::MasterLost) {
+      transport.dropConnection();
+    }
+  });
+  if (!ran) transport.dropConnection();
 }
 
 }  // namespace
@@ -37,21 +37,34 @@ ParallelRun renderLocal(const RunRequest& request) {
                                        request.scene.image.height);
   const int n = options.workers;
   LocalNetwork net(n);
+  ThreadFailures failures;
   std::vector<std::thread> threads;
-  struct Joiner {
-    LocalNetwork& net;
-    std::vector<std::thread>& threads;
-    ~Joiner() {
-      net.shutDown();
-      for (std::thread& t : threads) t.join();
+  const auto joinAll = [&] {
+    net.shutDown();
+    for (std::thread& t : threads) {
+      if (t.joinable()) t.join();
     }
-  } joiner{net, threads};
+  };
+  struct JoinOnExit {
+    const decltype(joinAll)& join;
+    ~JoinOnExit() { join(); }
+  } joinOnExit{joinAll};
   net.restartClock();
   for (int w = 0; w < n; ++w) {
-    threads.emplace_back(runWorkerThread, std::ref(net), w, std::cref(options));
+    threads.emplace_back(runWorkerThread, std::ref(net), w, std::cref(options),
+                         std::ref(failures));
   }
   LocalTransport master(net, kMaster);
-  return runMasterSide(master, request, "local");
+  try {
+    ParallelRun run = runMasterSide(master, request, "local", [&] { return failures.any(); });
+    joinAll();
+    failures.rethrowFirst();
+    return run;
+  } catch (const RunFailed&) {
+    joinAll();
+    failures.rethrowFirst();  // what made the run stop, rather than its consequence
+    throw;
+  }
 }
 
 }  // namespace prt

@@ -24,6 +24,10 @@ class MasterLoop {
         result_.failure = "every worker was lost; the image cannot be finished";
         break;
       }
+      if (options_.abandoned && options_.abandoned()) {
+        result_.failure = "the run was stopped";
+        break;
+      }
       if (options_.interrupted) {
         if (const int sig = options_.interrupted()) {
           result_.interruptSignal = sig;

@@ -32,6 +32,7 @@ struct MasterLoopOptions {
   double checkpointEverySeconds = 10; // --checkpoint-every
   std::function<void(const std::string& why)> checkpoint;  // null: no checkpoints
   std::function<int()> interrupted;   // a pending stop signal (0: none); null: never
+  std::function<bool()> abandoned;    // true: stop now (the driver reports why); null: never
 };
 
 struct MasterLoopResult {

@@ -2,12 +2,25 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "core/check.h"
 #include "core/input_error.h"
 #include "scene/scene_file.h"
 
 namespace prt {
+namespace {
+
+constexpr double kMaxSlowdown = 1000;
+
+// A number as a user would write it ("1e+300", "-1", "0.5"), not std::to_string's 300 digits.
+std::string formatNumber(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", value);
+  return text;
+}
+
+}  // namespace
 
 void validateParallelOptions(const ParallelOptions& o, uint64_t pixelCount) {
   if (o.workers < 1) throw InputError("--workers must be at least 1");
@@ -22,18 +35,28 @@ void validateParallelOptions(const ParallelOptions& o, uint64_t pixelCount) {
                        " workers; give one per worker");
     }
     for (double k : o.slowdowns) {
-      if (!(k >= 1.0) || !std::isfinite(k)) {
-        throw InputError("--slowdown values must be finite and at least 1 (got " +
-                         std::to_string(k) + ")");
+      // Beyond a thousand an emulated worker would take hours for a render of seconds, and
+      // huge factors overflow the pacing's clock arithmetic.
+      if (!(k >= 1.0 && k <= kMaxSlowdown)) {
+        throw InputError("--slowdown values must be in [1, " + formatNumber(kMaxSlowdown) + "] (got " + formatNumber(k) + ")");
       }
+    }
+  }
+  for (const FaultInjection& f : o.faults) {
+    if (f.worker < 0 || f.worker >= o.workers) {
+      throw InputError("--inject-fault names worker " + std::to_string(f.worker) + ", but the " +
+                       std::to_string(o.workers) + " workers are numbered 0 to " +
+                       std::to_string(o.workers - 1));
     }
   }
   if (o.batchPixels < 1) throw InputError("--batch must be at least 1");
   if (!(o.workerTimeoutSeconds >= 0.1) || !(o.workerTimeoutSeconds <= 86400)) {
-    throw InputError("--worker-timeout must be between 0.1 and 86400 seconds");
+    throw InputError("--worker-timeout must be between 0.1 and 86400 seconds (got " +
+                     formatNumber(o.workerTimeoutSeconds) + ")");
   }
   if (!(o.checkpointEverySeconds >= 0.01) || !(o.checkpointEverySeconds <= 86400)) {
-    throw InputError("--checkpoint-every must be between 0.01 and 86400 seconds");
+    throw InputError("--checkpoint-every must be between 0.01 and 86400 seconds (got " +
+                     formatNumber(o.checkpointEverySeconds) + ")");
   }
   makeStrategy(o.strategy, o.strategyOptions);  // throws for unknown names and bad options
 }

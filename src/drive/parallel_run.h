@@ -55,8 +55,10 @@ class RunFailed : public std::runtime_error {
 
 // The master's side of a parallel render over `net`, the same for every transport: the
 // Master and its strategy, the MasterLoop (leases, heartbeats, reissue), checkpoints, the
-// image and the report (`driver` names the transport in it). Throws RunFailed.
-ParallelRun runMasterSide(Transport& net, const RunRequest& request, const std::string& driver);
+// image and the report (`driver` names the transport in it). `abandoned`, if given, is polled
+// by the loop: true stops the run (a failure the driver reports itself). Throws RunFailed.
+ParallelRun runMasterSide(Transport& net, const RunRequest& request, const std::string& driver,
+                          std::function<bool()> abandoned = nullptr);
 
 // A worker's side over `net`: its engine (slowdown, speed index) and the WorkerLoop, with
 // this transport's way of failing for an injected fault.

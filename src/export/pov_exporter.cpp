@@ -88,7 +88,7 @@ void writeGlobalSettings(std::string& out, const Scene& scene) {
   line(out, 1,
        "max_trace_level " + std::to_string(povMaxTraceLevel(env.maxDepth)) + "  // PRT max_depth " +
            std::to_string(env.maxDepth) + " traces generations 0.." + std::to_string(env.maxDepth));
-  line(out, 1, "adc_bailout 0  // PRT never drops a ray for its low weight");
+  line(out, 1, "adc_bailout 0  // PRT drops only rays below 2^-16 of a pixel, which change no 8-bit pixel");
   line(out, 0, "}");
   line(out, 0, "background { " + rgb(env.background) + " }");
   out += '\n';

@@ -1,10 +1,13 @@
 #include "image/atomic_file.h"
 
+#include <signal.h>
 #include <unistd.h>
 
 #include <atomic>
 #include <cerrno>
 #include <cstdint>
+#include <cstring>
+#include <filesystem>
 #include <system_error>
 
 #include "core/input_error.h"
@@ -21,15 +24,84 @@ std::string errnoText(int err) {
   throw InputError("cannot write '" + path + "': " + errnoText(err));
 }
 
+// The temporary files this process has open, for the signal handler to remove: a fixed table
+// of lock-free slots, as a handler may not allocate or lock. A slot is claimed (Writing), its
+// path copied in, then published (Ready); only Ready slots are read by the handler.
+enum SlotState : int { kFree, kWriting, kReady };
+constexpr int kSlots = 64;
+constexpr size_t kPathBytes = 4096;
+std::atomic<int> slotState[kSlots];
+char slotPath[kSlots][kPathBytes];
+static_assert(std::atomic<int>::is_always_lock_free);
+
+// Returns the slot holding `path`, or -1 if the table is full or the path too long (the file
+// is then merely not removed on a signal).
+int registerTemporary(const std::string& path) {
+  if (path.size() >= kPathBytes) return -1;
+  for (int i = 0; i < kSlots; ++i) {
+    int expected = kFree;
+    if (slotState[i].compare_exchange_strong(expected, kWriting)) {
+      std::memcpy(slotPath[i], path.c_str(), path.size() + 1);
+      slotState[i].store(kReady);
+      return i;
+    }
+  }
+  return -1;
+}
+
+void unregisterTemporary(int slot) {
+  if (slot >= 0) slotState[slot].store(kFree);
+}
+
+extern "C" void removeTemporariesAndExit(int signal) {
+  for (int i = 0; i < kSlots; ++i) {
+    if (slotState[i].load() == kReady) ::unlink(slotPath[i]);
+  }
+  ::_exit(128 + signal);
+}
+
+// Removes `name.tmp-PID-N` files beside `path` whose process PID is gone: a run killed by
+// SIGKILL (or a crash) could not remove its own. A live process's files, ours included, are
+// left alone; pids are those of this machine.
+void removeStaleTemporaries(const std::string& path) {
+  namespace fs = std::filesystem;
+  const fs::path target(path);
+  const std::string prefix = target.filename().string() + ".tmp-";
+  const fs::path folder = target.has_parent_path() ? target.parent_path() : fs::path(".");
+  std::error_code error;
+  fs::directory_iterator entries(folder, error);
+  if (error) return;  // a missing folder is reported by the write itself
+  for (const fs::directory_entry& entry : entries) {
+    const std::string name = entry.path().filename().string();
+    if (!name.starts_with(prefix)) continue;
+    const std::string rest = name.substr(prefix.size());
+    const size_t dash = rest.find('-');
+    if (dash == 0 || dash == std::string::npos || dash > 9 ||
+        rest.find_first_not_of("0123456789-") != std::string::npos) {
+      continue;
+    }
+    const auto pid = static_cast<pid_t>(std::stol(rest.substr(0, dash)));
+    if (pid <= 0 || ::kill(pid, 0) == 0 || errno != ESRCH) continue;
+    std::error_code ignored;
+    fs::remove(entry.path(), ignored);
+  }
+}
+
 // Creates the temporary file exclusively ("x"), so a stale file of the same name left by a
 // crashed process with a recycled pid is never reused: we just move on to the next name.
-std::FILE* openTemporary(const std::string& path, std::string& tempPath) {
+// `slot` is its entry in the table of files to remove on a signal.
+std::FILE* openTemporary(const std::string& path, std::string& tempPath, int& slot) {
   static std::atomic<uint64_t> counter{0};
+  removeStaleTemporaries(path);
   const std::string prefix = path + ".tmp-" + std::to_string(::getpid()) + "-";
   for (int attempt = 0; attempt < 100; ++attempt) {
     tempPath = prefix + std::to_string(counter.fetch_add(1, std::memory_order_relaxed));
+    // Registered before it exists, so that no signal can leave it behind.
+    slot = registerTemporary(tempPath);
     if (std::FILE* f = std::fopen(tempPath.c_str(), "wbx")) return f;
-    if (errno != EEXIST) throwCannotWrite(path, errno);
+    const int err = errno;
+    unregisterTemporary(slot);
+    if (err != EEXIST) throwCannotWrite(path, err);
   }
   throwCannotWrite(path, EEXIST);
 }
@@ -39,13 +111,15 @@ std::FILE* openTemporary(const std::string& path, std::string& tempPath) {
 void writeFileAtomically(const std::string& path,
                          const std::function<void(std::FILE*)>& writeContents) {
   std::string tempPath;
-  std::FILE* file = openTemporary(path, tempPath);
+  int slot = -1;
+  std::FILE* file = openTemporary(path, tempPath, slot);
 
   // Closes (if still open) and deletes the temporary file; used on every failure path.
   auto discard = [&] {
     if (file != nullptr) std::fclose(file);
     file = nullptr;
     std::remove(tempPath.c_str());
+    unregisterTemporary(slot);
   };
 
   try {
@@ -81,6 +155,31 @@ void writeFileAtomically(const std::string& path,
     discard();
     throwCannotWrite(path, err);
   }
+  unregisterTemporary(slot);
+}
+
+void checkWritable(const std::string& path) {
+  if (path.empty()) throw InputError("cannot write '': no file name given");
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error)) throwCannotWrite(path, EISDIR);
+  std::string tempPath;
+  int slot = -1;
+  std::FILE* file = openTemporary(path, tempPath, slot);
+  std::fclose(file);
+  std::remove(tempPath.c_str());
+  unregisterTemporary(slot);
+}
+
+void removeTemporaryFilesOnSignals() {
+  struct sigaction action {};
+  action.sa_handler = removeTemporariesAndExit;
+  sigemptyset(&action.sa_mask);
+  for (const int signal : {SIGTERM, SIGINT, SIGHUP}) {
+    // Block the others while one is handled: two handlers at once would be harmless, but the
+    // exit code should name the first signal.
+    sigaddset(&action.sa_mask, signal);
+  }
+  for (const int signal : {SIGTERM, SIGINT, SIGHUP}) sigaction(signal, &action, nullptr);
 }
 
 void writeFileAtomically(const std::string& path, std::string_view contents) {

@@ -10,6 +10,12 @@
 //
 // Thread-safe: concurrent calls use distinct temporary names. Two concurrent writers to the
 // same `path` both succeed and one of the complete files wins.
+//
+// Nothing is left behind: with removeTemporaryFilesOnSignals() installed, SIGTERM, SIGINT and
+// SIGHUP remove the temporary files being written and end the process with exit code
+// 128 + signal; and each write first removes the temporary files beside `path` of processes
+// that are gone (killed by SIGKILL, or crashed). Only pids of this machine are known: a folder
+// shared by machines that write the same file at once is not supported.
 
 #include <cstdio>
 #include <functional>
@@ -25,6 +31,15 @@ namespace prt {
 // throws, unchanged.
 void writeFileAtomically(const std::string& path,
                          const std::function<void(std::FILE*)>& writeContents);
+
+// Throws the InputError writeFileAtomically would throw for `path` if it cannot be written:
+// creates, and removes at once, a temporary file beside it, and refuses a directory. For
+// checking every output of a run before the run starts. Leaves `path` itself untouched.
+void checkWritable(const std::string& path);
+
+// Installs handlers for SIGTERM, SIGINT and SIGHUP that remove this process's temporary files
+// and _exit(128 + signal). For a program's main(), once, before any thread starts.
+void removeTemporaryFilesOnSignals();
 
 // The same, with the whole contents in hand (text or bytes).
 void writeFileAtomically(const std::string& path, std::string_view contents);

@@ -55,7 +55,7 @@ const Token* BlockReader::next() {
 
   const auto known = std::find(params_.begin(), params_.end(), token.text);
   if (known == params_.end()) {
-    std::string message = "unknown parameter '" + token.text + "' in the '" + title_ + "' block" +
+    std::string message = "unknown parameter " + describe(token) + " in the '" + title_ + "' block" +
                           didYouMean(token.text, params_) +
                           "; valid parameters: " + joinNames(params_);
     if (isDirective(token.text)) {

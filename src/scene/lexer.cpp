@@ -48,7 +48,7 @@ class Lexer {
   int column() const { return static_cast<int>(pos_ - lineStart_) + 1; }
 
   void advance() {
-    if (text_[pos_] == '\n') {
+    if (endsLine(text_, pos_)) {
       ++line_;
       lineStart_ = pos_ + 1;
     }
@@ -60,7 +60,7 @@ class Lexer {
     while (pos_ < text_.size()) {
       const char c = text_[pos_];
       if (c == '#') {
-        while (pos_ < text_.size() && text_[pos_] != '\n') advance();
+        while (pos_ < text_.size() && text_[pos_] != '\n' && text_[pos_] != '\r') advance();
       } else if (c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\v') {
         advance();
       } else {
@@ -147,13 +147,21 @@ class Lexer {
 }  // namespace
 
 std::string describe(const Token& token) {
+  // A token of thousands of characters (a run-away name, a generated line) is shown cut.
+  constexpr size_t kShown = 60;
+  std::string text = token.text;
+  if (text.size() > kShown) {
+    size_t cut = kShown;
+    while (cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80) --cut;
+    text = text.substr(0, cut) + "... (" + std::to_string(token.text.size()) + " characters)";
+  }
   switch (token.kind) {
     case TokenKind::String:
-      return "the string \"" + token.text + "\"";
+      return "the string \"" + text + "\"";
     case TokenKind::End:
       return "the end of the file";
     default:
-      return "'" + token.text + "'";
+      return "'" + text + "'";
   }
 }
 

@@ -129,5 +129,21 @@ TEST(Lexer, ErrorLineTextHasNoCarriageReturn) {
   EXPECT_EQ(error.where().lineText, "box = ");
 }
 
+TEST(Lexer, CarriageReturnAloneEndsALineAndAComment) {
+  // Old Mac OS files end lines with '\r' alone; mixed with the other two, each is one line end.
+  const std::vector<Token> tokens = lex("box # comment\r{\r\n} \n\r  sphere");
+  ASSERT_EQ(tokens.size(), 5u);
+  EXPECT_EQ(tokens[1].text, "{");
+  EXPECT_EQ(tokens[1].line, 2);
+  EXPECT_EQ(tokens[2].line, 3);
+  EXPECT_EQ(tokens[3].text, "sphere");
+  EXPECT_EQ(tokens[3].line, 5);
+  EXPECT_EQ(tokens[3].column, 3);
+  const InputError error = lexError("box {}\rbox {}\rbox = \r");
+  EXPECT_EQ(error.where().line, 3);
+  EXPECT_EQ(error.where().column, 5);
+  EXPECT_EQ(error.where().lineText, "box = ");
+}
+
 }  // namespace
 }  // namespace prt

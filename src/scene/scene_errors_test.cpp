@@ -146,10 +146,33 @@ TEST(SceneErrors, WrongKindOfValue) {
               33, {"'output' needs a quoted string"});
 }
 
-TEST(SceneErrors, NegativeColours) {
+TEST(SceneErrors, ColoursOutsideTheirRange) {
   expectBodyError("light point { position 0 0 0 color 1 -0.5 1 }", 38,
-                  {"'color' (g) must be >= 0, found -0.5"});
-  expectBodyError("environment { background 0 0 -1 }", 30, {"'background' (b) must be >= 0"});
+                  {"'color' (g) must be in [0, 1e+06], found -0.5"});
+  expectBodyError("environment { background 0 0 -1 }", 30,
+                  {"'background' (b) must be in [0, 1e+06]"});
+  // Huge values would make pixels infinite.
+  expectBodyError("light point { position 0 0 0 color 1e300 1 1 }", 36,
+                  {"'color' (r) must be in [0, 1e+06], found 1e+300"});
+  expectBodyError("environment { ambient 1 1000001 1 }", 25, {"'ambient' (g) must be in [0, 1e+06]"});
+  expectBodyError("sphere { center 0 0 0 radius 1 surface { color 2e6 0 0 } }", 48,
+                  {"'color' (r) must be in [0, 1e+06]"});
+  expectBodyError("light rect { corner 0 0 0 edge1 1 0 0 edge2 0 1 0 color 0 0 1e7 }", 61,
+                  {"'color' (b)"});
+}
+
+TEST(SceneErrors, SurfacesThatSendOnMoreLightThanReachesThem) {
+  const std::string sphere = "sphere { center 0 0 0 radius 1 surface { ";
+  const int column = static_cast<int>(sphere.size()) + 1;
+  // Reported at the later of the two.
+  expectBodyError(sphere + "reflect 1 transmit 1 } }", column + 19,
+                  {"'reflect' + 'transmit' must be at most 1", "found 1 + 1"});
+  expectBodyError(sphere + "transmit 0.6 reflect 0.5 } }", column + 21,
+                  {"'reflect' + 'transmit' must be at most 1", "found 0.5 + 0.6"});
+  // Inherited from a material: reported where this block adds the excess.
+  const std::string glassSphere = "sphere { center 0 0 0 radius 1 surface glass { reflect 0.2 } }";
+  expectError(kPreamble + "material glass { transmit 0.9 }\n" + glassSphere, 4,
+              static_cast<int>(glassSphere.find("0.2")) + 1, {"found 0.2 + 0.9"});
 }
 
 TEST(SceneErrors, SurfaceValueRanges) {
@@ -296,6 +319,24 @@ TEST(SceneErrors, FormatShowsTheLineAndACaret) {
             "bad.scene:3:32: error: 'radius' must be in (0, 1e+09], found -1\n"
             "    sphere { center 0 0 0 radius -1 }\n"
             "                                 ^");
+}
+
+TEST(SceneErrors, LongLinesAndTokensAreShownCutAroundTheCulprit) {
+  const std::string padding(5000, ' ');
+  const std::string name(3000, 'x');
+  const InputError error =
+      errorOf(kPreamble + "sphere {" + padding + name + " radius 1 }" + padding + "# end");
+  const std::string text = error.format();
+  EXPECT_LT(text.size(), 600u) << text;
+  EXPECT_NE(text.find("unknown parameter 'xxxxxxxxxx"), std::string::npos) << text;
+  EXPECT_NE(text.find("... (3000 characters)"), std::string::npos) << text;
+  // The shown piece of the line starts with "..." and the caret stands under the name.
+  const size_t lineStart = text.find("\n  ...") + 1;
+  const size_t caretLine = text.find('\n', lineStart) + 1;
+  const size_t caret = text.find('^', caretLine);
+  ASSERT_NE(caret, std::string::npos) << text;
+  EXPECT_EQ(text[lineStart + (caret - caretLine)], 'x') << text;
+  EXPECT_EQ(text[lineStart + (caret - caretLine) - 1], ' ') << text;
 }
 
 }  // namespace

@@ -9,6 +9,8 @@
 #include <filesystem>
 #include <memory>
 
+#include "scene/source_text.h"
+
 namespace prt {
 namespace {
 
@@ -17,6 +19,24 @@ constexpr size_t kMaxSceneFileBytes = size_t{64} << 20;
 
 std::string quoted(const std::string& path) {
   return "'" + path + "'";
+}
+
+// What a file that is neither regular nor a directory is; empty for the others (a file whose
+// status cannot be read is left to fopen, which says why).
+std::string specialFileKind(std::filesystem::file_type type) {
+  using std::filesystem::file_type;
+  switch (type) {
+    case file_type::fifo:
+      return "a FIFO (named pipe)";
+    case file_type::character:
+      return "a character device";
+    case file_type::block:
+      return "a block device";
+    case file_type::socket:
+      return "a socket";
+    default:
+      return {};
+  }
 }
 
 std::string readWholeFile(const std::string& path) {
@@ -29,6 +49,11 @@ std::string readWholeFile(const std::string& path) {
   }
   if (status.type() == fs::file_type::directory) {
     throw InputError(quoted(path) + " is a directory, not a scene file");
+  }
+  // A FIFO would block until some writer comes, a device may never end (/dev/zero) or wait
+  // for input (a terminal): only regular files are read.
+  if (const std::string kind = specialFileKind(status.type()); !kind.empty()) {
+    throw InputError(quoted(path) + " is " + kind + ", not a regular file; give a scene file");
   }
 
   const std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"),
@@ -100,7 +125,7 @@ void checkIsText(std::string_view text, const std::string& path) {
     if (length == 0) {
       throw InputError(quoted(path) + " is not a text scene file: it is not valid UTF-8" + where);
     }
-    if (c == '\n') ++line;
+    if (endsLine(text, i)) ++line;
     i += length;
   }
 }
@@ -109,7 +134,7 @@ void checkIsText(std::string_view text, const std::string& path) {
 bool hasContent(std::string_view text) {
   bool inComment = false;
   for (const char c : text) {
-    if (c == '\n') {
+    if (c == '\n' || c == '\r') {
       inComment = false;
     } else if (c == '#') {
       inComment = true;

@@ -1,6 +1,7 @@
 #include "scene/scene_file.h"
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <filesystem>
@@ -79,6 +80,28 @@ TEST_F(SceneFile, MissingFile) {
 
 TEST_F(SceneFile, Directory) {
   EXPECT_TRUE(contains(loadError(dir_.string()), "is a directory"));
+}
+
+TEST_F(SceneFile, FifoAndDevicesAreRefusedWithoutReading) {
+  // Opening a FIFO would wait for a writer forever; /dev/zero would never end.
+  const fs::path fifo = dir_ / "pipe.scene";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  EXPECT_TRUE(contains(loadError(fifo.string()), "is a FIFO (named pipe), not a regular file"));
+  EXPECT_TRUE(contains(loadError("/dev/zero"), "is a character device, not a regular file"));
+}
+
+TEST_F(SceneFile, CarriageReturnLineEndsCountLines) {
+  const std::string path =
+      write("mac.scene", "camera { eye 0 0 -5 look_at 0 0 0 }\rimage { width 4 height 3 }\r"
+                         "sphere { radius -1 }\r");
+  try {
+    loadSceneFile(path);
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& error) {
+    EXPECT_EQ(error.where().line, 3);
+    EXPECT_EQ(error.where().column, 17);
+    EXPECT_EQ(error.where().lineText, "sphere { radius -1 }");
+  }
 }
 
 TEST_F(SceneFile, EmptyFile) {

@@ -74,7 +74,7 @@ class SceneParser {
       if (name == "plane") return plane(keyword);
       const std::vector<std::string_view> directives(std::begin(kDirectives),
                                                      std::end(kDirectives));
-      in_.fail(keyword, "unknown directive '" + name + "'" + didYouMean(name, directives) +
+      in_.fail(keyword, "unknown directive " + describe(keyword) + didYouMean(name, directives) +
                             "; valid directives: " + joinNames(kDirectives));
     }
     if (keyword.kind == TokenKind::RightBrace) {
@@ -193,8 +193,8 @@ class SceneParser {
       in_.fail(name, "expected a material name after 'material', found " + describe(name));
     }
     if (!isName(name.text)) {
-      in_.fail(name, "malformed material name '" + name.text +
-                         "'; names consist of letters, digits and '_' and start with a letter "
+      in_.fail(name, "malformed material name " + describe(name) +
+                         "; names consist of letters, digits and '_' and start with a letter "
                          "or '_'");
     }
     if (const auto found = materials_.find(name.text); found != materials_.end()) {
@@ -237,7 +237,7 @@ class SceneParser {
     } else if (kind.text == "rect") {
       light.shape = rectLight(kind, light.color);
     } else {
-      in_.fail(kind, "unknown kind of light '" + kind.text + "'" +
+      in_.fail(kind, "unknown kind of light " + describe(kind) +
                          didYouMean(kind.text, {"point", "sphere", "rect"}) +
                          "; valid kinds: " + kinds);
     }

@@ -11,6 +11,10 @@
 
 namespace prt {
 
+// Whether text[i] is the last character of a line end: "\n", the "\n" of "\r\n", or a "\r"
+// alone (old Mac OS files). All three end a line, for line numbers and for comments.
+bool endsLine(std::string_view text, size_t i);
+
 class SourceText {
  public:
   // `text` must outlive this object; it is viewed, not copied.

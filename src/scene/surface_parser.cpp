@@ -2,6 +2,7 @@
 
 #include "scene/block_reader.h"
 #include "scene/keywords.h"
+#include "scene/number_text.h"
 #include "scene/value_reader.h"
 
 namespace prt {
@@ -11,14 +12,14 @@ const Material& lookUp(const TokenStream& in, const Token& name, const MaterialT
   const auto found = materials.find(name.text);
   if (found != materials.end()) return found->second.material;
   if (materials.empty()) {
-    in.fail(name, "unknown material '" + name.text +
-                      "'; no materials are defined yet (define one first with material NAME "
+    in.fail(name, "unknown material " + describe(name) +
+                      "; no materials are defined yet (define one first with material NAME "
                       "{ ... })");
   }
   std::vector<std::string_view> names;
   for (const auto& entry : materials) names.push_back(entry.first);
   const std::string message =
-      "unknown material '" + name.text + "'" + didYouMean(name.text, names) +
+      "unknown material " + describe(name) + didYouMean(name.text, names) +
       "; defined materials: " + joinNames(names) + " (a material must be defined before its use)";
   in.fail(name, message);
 }
@@ -54,6 +55,19 @@ void readSurfaceBlock(TokenStream& in, const Token& keyword, const std::string& 
     } else {
       material.translucencyDegrees = readNumber(in, name, Range::closedOpen(0, 90));
     }
+  }
+  // A surface that sends on more light than reaches it makes every bounce multiply the
+  // light: the image grows without bound with max_depth, and so does the cost, the path
+  // weights never falling below the shader's cut-off (its bound needs reflect + transmit <= 1).
+  if (material.reflectivity + material.transmissivity > 1 &&
+      (block.has("reflect") || block.has("transmit"))) {
+    const bool reflectLast =
+        block.has("reflect") &&
+        (!block.has("transmit") || block.valueIndex("reflect") > block.valueIndex("transmit"));
+    in.fail(block.valueToken(reflectLast ? "reflect" : "transmit"),
+            "'reflect' + 'transmit' must be at most 1 (a surface cannot send on more light than "
+            "reaches it), found " + formatDouble(material.reflectivity) + " + " +
+                formatDouble(material.transmissivity));
   }
 }
 

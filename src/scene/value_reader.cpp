@@ -143,7 +143,7 @@ Vec3 readVector(TokenStream& in, std::string_view param, Range componentRange) {
 }
 
 Vec3 readColor(TokenStream& in, std::string_view param) {
-  return readTriple(in, param, Range::atLeast(0), kColorAxes);
+  return readTriple(in, param, Range::closed(0, kMaxColorComponent), kColorAxes);
 }
 
 std::string readString(TokenStream& in, std::string_view param) {

@@ -35,7 +35,11 @@ struct Range {
 double readNumber(TokenStream& in, std::string_view param, Range range);
 int readInteger(TokenStream& in, std::string_view param, int min, int max);
 Vec3 readVector(TokenStream& in, std::string_view param, Range componentRange = Range::any());
-Color readColor(TokenStream& in, std::string_view param);  // components >= 0
+// The largest component of any colour (a surface's, a light's intensity, the background, the
+// ambient light). Far beyond any real scene, and low enough that no sum or product of colours
+// a render forms can overflow a float: an image never holds an infinity.
+inline constexpr double kMaxColorComponent = 1e6;
+Color readColor(TokenStream& in, std::string_view param);  // components in [0, 1e6]
 std::string readString(TokenStream& in, std::string_view param);
 
 }  // namespace prt

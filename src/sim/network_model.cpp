@@ -9,15 +9,17 @@
 
 namespace prt {
 
+// Bounds far beyond any network (a latency of 1000 s, 1 kbit/s), within which no simulated
+// time overflows into numbers that mean nothing.
 void validateNetworkOptions(const NetworkOptions& o) {
-  if (!(o.latencySeconds >= 0) || !std::isfinite(o.latencySeconds)) {
-    throw InputError("--latency-us must be finite and >= 0");
+  if (!(o.latencySeconds >= 0 && o.latencySeconds <= 1e3)) {
+    throw InputError("--latency-us must be in [0, 1e9]");
   }
-  if (!(o.bandwidthBytesPerSecond > 0) || !std::isfinite(o.bandwidthBytesPerSecond)) {
-    throw InputError("--bandwidth-mbps must be finite and positive");
+  if (!(o.bandwidthBytesPerSecond >= 125 && o.bandwidthBytesPerSecond <= 1.25e15)) {
+    throw InputError("--bandwidth-mbps must be in [0.001, 1e10]");
   }
-  if (!(o.masterServiceSeconds >= 0) || !std::isfinite(o.masterServiceSeconds)) {
-    throw InputError("--master-service-us must be finite and >= 0");
+  if (!(o.masterServiceSeconds >= 0 && o.masterServiceSeconds <= 1e3)) {
+    throw InputError("--master-service-us must be in [0, 1e9]");
   }
 }
 

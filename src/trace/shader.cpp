@@ -138,46 +138,60 @@ Color Shader::direct(const Hit& hit, const Vec3& n, const Vec3& toEye, double ep
 }
 
 Color Shader::spawn(uint32_t inside, const Vec3& origin, const Vec3& direction,
-                    const Spread& spread, const Vec3& normal, bool above, int depth, Rng rng,
-                    uint64_t& rays) const {
-  if (spread.radians <= 0) {
-    return traceFrom(inside, Ray{origin, direction}, depth, rng.child(0), rays);
+                    const Spread& spread, const Vec3& normal, bool above, PathState path,
+                    Rng rng, uint64_t& rays) const {
+  const int n = settings_.drtRate;
+  const double branchWeight = path.weight / n;
+  // One ray when the surface spreads none, or when each of n rays would weigh too little to
+  // be traced: then one ray of the cone carries the whole weight.
+  if (spread.radians <= 0 || branchWeight < kMinPathWeight) {
+    Rng branch = rng.child(0);
+    Vec3 d = direction;
+    if (spread.radians > 0) {
+      d = sampleCone(direction, spread.cosine, branch.uniform(), branch.uniform());
+      if ((dot(d, normal) > 0) != above) d = direction;
+    }
+    return traceFrom(inside, Ray{origin, d}, path, branch, rays);
   }
   Color sum;
-  const int n = settings_.drtRate;
   for (int i = 0; i < n; ++i) {
     Rng branch = rng.child(static_cast<uint64_t>(i));
     const double u1 = stratum(i, n, branch.uniform());  // stratified in the cone's polar angle
     Vec3 d = sampleCone(direction, spread.cosine, u1, branch.uniform());
     // A perturbed ray must stay on the side of the surface it was meant for.
     if ((dot(d, normal) > 0) != above) d = direction;
-    sum += traceFrom(inside, Ray{origin, d}, depth, branch, rays);
+    sum += traceFrom(inside, Ray{origin, d}, {path.depth, branchWeight}, branch, rays);
   }
   return meanOf(sum, n);
 }
 
 // One ray: counted, met by `intersect` (the way the ray's origin allows), shaded.
 template <typename Intersect>
-Color Shader::traceWith(Intersect&& intersect, const Ray& ray, int depth, Rng rng,
+Color Shader::traceWith(Intersect&& intersect, const Ray& ray, PathState path, Rng rng,
                         uint64_t& rays) const {
   ++rays;
   Hit hit;
   if (!intersect(hit)) return world_.scene().environment.background;
-  return shade(ray, hit, depth, rng, rays);
+  return shade(ray, hit, path, rng, rays);
 }
 
 Color Shader::trace(const Ray& ray, int depth, Rng rng, uint64_t& rays) const {
+  return traceAt(ray, {depth, 1.0}, rng, rays);
+}
+
+Color Shader::traceAt(const Ray& ray, PathState path, Rng rng, uint64_t& rays) const {
   return traceWith(
       [&](Hit& hit) {
         return world_.intersect(ray, 0.0, std::numeric_limits<double>::infinity(), hit);
       },
-      ray, depth, rng, rays);
+      ray, path, rng, rays);
 }
 
-Color Shader::traceFrom(uint32_t inside, const Ray& ray, int depth, Rng rng, uint64_t& rays) const {
-  if (inside == kOutside) return trace(ray, depth, rng, rays);
+Color Shader::traceFrom(uint32_t inside, const Ray& ray, PathState path, Rng rng,
+                        uint64_t& rays) const {
+  if (inside == kOutside) return traceAt(ray, path, rng, rays);
   return traceWith([&](Hit& hit) { return world_.intersectFromInside(inside, ray, hit); }, ray,
-                   depth, rng, rays);
+                   path, rng, rays);
 }
 
 Color Shader::traceAmong(std::span<const uint32_t> candidates, const Ray& ray, Rng rng,
@@ -187,10 +201,11 @@ Color Shader::traceAmong(std::span<const uint32_t> candidates, const Ray& ray, R
         return world_.intersectAmong(candidates, ray, 0.0, std::numeric_limits<double>::infinity(),
                                      hit);
       },
-      ray, 0, rng, rays);
+      ray, PathState{}, rng, rays);
 }
 
-Color Shader::shade(const Ray& ray, const Hit& hit, int depth, Rng rng, uint64_t& rays) const {
+Color Shader::shade(const Ray& ray, const Hit& hit, PathState path, Rng rng,
+                    uint64_t& rays) const {
   const Scene& scene = world_.scene();
   const Material& m = world_.material(hit.object);
   const bool entering = dot(ray.direction, hit.normal) < 0;
@@ -199,28 +214,31 @@ Color Shader::shade(const Ray& ray, const Hit& hit, int depth, Rng rng, uint64_t
 
   const double eps = surfaceEpsilon(hit.point);
   Color color = direct(hit, n, toEye, eps, rng, rays);
-  if (depth >= scene.environment.maxDepth) return color;
+  if (path.depth >= scene.environment.maxDepth) return color;
   const Surface& surface = surfaces_[hit.object];
   // Rays spawned back to the side the ray came from, and through to the other side: one of the
   // two is inside the object (a convex one: a sphere or a box; World knows which it is).
   const uint32_t sameSide = entering ? kOutside : hit.object;
   const uint32_t otherSide = entering ? hit.object : kOutside;
 
-  if (m.reflectivity > 0) {
+  // A spawned ray too light to change the pixel is not traced (see kMinPathWeight).
+  const PathState reflected{path.depth + 1, path.weight * m.reflectivity};
+  if (m.reflectivity > 0 && reflected.weight >= kMinPathWeight) {
     const Vec3 r = reflect(ray.direction, n);
     color += m.reflectivity * spawn(sameSide, hit.point + eps * n, r, surface.reflection, n, true,
-                                    depth + 1, rng.child(1000), rays);
+                                    reflected, rng.child(1000), rays);
   }
-  if (m.transmissivity > 0) {
+  const PathState transmitted{path.depth + 1, path.weight * m.transmissivity};
+  if (m.transmissivity > 0 && transmitted.weight >= kMinPathWeight) {
     const double eta = entering ? surface.inverseIor : m.ior;
     Vec3 t;
     if (refract(ray.direction, n, eta, t)) {
       color += m.transmissivity * spawn(otherSide, hit.point - eps * n, t, surface.transmission, n,
-                                        false, depth + 1, rng.child(2000), rays);
+                                        false, transmitted, rng.child(2000), rays);
     } else {  // total internal reflection: the transmitted light is reflected back inside
-      color +=
-          m.transmissivity * spawn(sameSide, hit.point + eps * n, reflect(ray.direction, n),
-                                   surface.transmission, n, true, depth + 1, rng.child(2000), rays);
+      color += m.transmissivity * spawn(sameSide, hit.point + eps * n, reflect(ray.direction, n),
+                                        surface.transmission, n, true, transmitted,
+                                        rng.child(2000), rays);
     }
   }
   return color;

@@ -209,6 +209,64 @@ TEST(ShaderTest, GlossyReflectionSpawnsDrtRays) {
   expectColorNear(c, Color(0.25, 0.5, 0.75));  // every perturbed ray sees the background
 }
 
+// Two mirrors facing each other across y in [0, 2]: a ray between them never escapes.
+Scene mirrorCorridor(double reflectivity, double glossDegrees) {
+  Material mirror;
+  mirror.ambient = 0;
+  mirror.diffuse = 0;
+  mirror.reflectivity = reflectivity;
+  mirror.glossDegrees = glossDegrees;
+  Scene scene;
+  scene.environment.maxDepth = 64;
+  scene.objects.push_back({PlaneShape{{0, 0, 0}, {0, 1, 0}}, mirror});
+  scene.objects.push_back({PlaneShape{{0, 2, 0}, {0, -1, 0}}, mirror});
+  return scene;
+}
+
+TEST(ShaderTest, RecursionStopsWhenThePathWeightFallsBelowTheCutoff) {
+  ASSERT_EQ(kMinPathWeight, 1.0 / 65536);
+  const World world(mirrorCorridor(0.5, 0));
+  uint64_t rays = 0;
+  Shader(world, {}).trace(Ray{{0, 1, 0}, normalize(Vec3(1, -1, 0))}, 0, Rng(3), rays);
+  // The reflection of depth d weighs 2^-d: depths 1 to 16 are traced, not 17, though
+  // max_depth is 64.
+  EXPECT_EQ(rays, 17u);
+}
+
+TEST(ShaderTest, GlassInGlassTreeOfRaysIsBounded) {
+  // Each hit spawns a reflected and a transmitted ray: 2^64 rays at max_depth 64 without the
+  // cut-off, 2^d rays of weight 2^-d at depth d with it.
+  Material glass;
+  glass.reflectivity = 0.5;
+  glass.transmissivity = 0.5;
+  glass.ior = 1.5;
+  Scene scene;
+  scene.environment.maxDepth = 64;
+  scene.objects.push_back({SphereShape{{0, 0, 0}, 1}, glass});
+  glass.ior = 1.3;
+  scene.objects.push_back({BoxShape{{-3, -3, -3}, {3, 3, 3}}, glass});
+  scene.lights.push_back({PointLight{{2, 2, -2}}, Color(1)});
+  const World world(scene);
+  uint64_t rays = 0;
+  const Color c =
+      Shader(world, {}).trace(Ray{{0.3, 0.2, -5}, normalize(Vec3(0, 0, 1))}, 0, Rng(3), rays);
+  EXPECT_GT(rays, 1000u);            // it did branch deep
+  EXPECT_LT(rays, 2u * (2u << 16));  // at most 2^17 rays and one shadow ray each
+  EXPECT_TRUE(std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z));
+}
+
+TEST(ShaderTest, ConeOfTooLightRaysIsSampledByOne) {
+  // Glossy mirrors at DRT 64: 64^64 rays without the cut-off. Depth 1 has 64 rays of weight
+  // 1/64, depth 2 has 4096 of weight 1/4096; below that each cone is one ray of its whole
+  // weight: 4096 chains to depth 64.
+  const World world(mirrorCorridor(1, 5));
+  RenderSettings settings;
+  settings.drtRate = 64;
+  uint64_t rays = 0;
+  Shader(world, settings).trace(Ray{{0, 1, 0}, normalize(Vec3(1, -1, 0))}, 0, Rng(3), rays);
+  EXPECT_EQ(rays, 1u + 64u + 4096u * 63u);
+}
+
 TEST(ShaderTest, NegligibleSpecularTermChangesNoBit) {
   Rng rng(17);
   int negligible = 0;

@@ -1,0 +1,40 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer targets (CMake preset `fuzz`, in build-fuzz/) and runs each for SECONDS
+# (default 60): the scene parser, seeded with the example scenes and the malformed corpus, and
+# the message decoder, seeded with one message of each kind. Fails (non-zero exit) on any crash,
+# sanitizer report, leak or input slower than 10 s; the input that failed is left in
+# build-fuzz/fuzz/ as crash-*, leak-* or timeout-*, to replay with
+# `build-fuzz/fuzz/prt_fuzz_scene_parser FILE`. The corpora grow in build-fuzz/corpus/.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+seconds=${1:-60}
+if ! [[ $seconds =~ ^[0-9]+$ ]] || ((seconds < 1)); then
+  echo "usage: scripts/fuzz.sh [SECONDS per target, default 60]" >&2
+  exit 2
+fi
+cmake --preset fuzz >/dev/null
+cmake --build --preset fuzz -- -j"$(nproc)" >/dev/null
+
+corpus=build-fuzz/corpus
+mkdir -p "$corpus/scene" "$corpus/message"
+cp scenes/*.scene tests/malformed/*.scene "$corpus/scene/"
+build-fuzz/fuzz/prt_fuzz_message_seeds "$corpus/message" scenes/fig08-basic-features.scene
+
+# -rss_limit_mb and -malloc_limit_mb: an input must not make the code take gigabytes;
+# -max_len: scenes of up to 64 kB (the parser's cost is linear; longer inputs only slow it).
+run() {
+  local target=$1 dir=$2
+  echo "fuzz: $target for ${seconds} s"
+  (cd build-fuzz/fuzz && ASAN_OPTIONS=detect_leaks=1 ./"$target" -max_total_time="$seconds" \
+     -timeout=10 -rss_limit_mb=2048 -malloc_limit_mb=1024 -max_len=65536 -print_final_stats=1 \
+     "../../$dir" 2>"$target.log") || {
+    echo "fuzz: $target FAILED; see build-fuzz/fuzz/$target.log:" >&2
+    grep -E "ERROR|SUMMARY|Test unit written" "build-fuzz/fuzz/$target.log" >&2 || tail -20 "build-fuzz/fuzz/$target.log" >&2
+    return 1
+  }
+  grep -E "stat::number_of_executed_units|stat::new_units_added" "build-fuzz/fuzz/$target.log" | sed "s/^/fuzz: $target /"
+}
+status=0
+run prt_fuzz_scene_parser "$corpus/scene" || status=1
+run prt_fuzz_message_decoder "$corpus/message" || status=1
+exit $status
