@@ -154,7 +154,7 @@ TEST_F(Robustness, FlagsOutOfRangeAreRefusedWithReadableMessages) {
   refused("--workers 2 --report ''", "needs a file name");
   refused("--workers 2 --serial-seconds -1", "must be a positive number of seconds, at most");
   refused("--workers 2 --serial-seconds inf", "must be a positive number of seconds");
-  refused("--workers 2 --worker-timeout 1e300", "--worker-timeout must be a positive number");
+  refused("--workers 2 --worker-timeout 1e300", "--worker-timeout must be between 0.1 and 86400");
   EXPECT_FALSE(fs::exists(path("out.png")));
 }
 

@@ -5,6 +5,7 @@
 #include <exception>
 #include <new>
 #include <string>
+#include <system_error>
 
 #include "cli/commands.h"
 #include "core/input_error.h"
@@ -50,6 +51,15 @@ int main(int argc, char** argv) {
     return 2;
   } catch (const std::bad_alloc&) {
     std::fprintf(stderr, "prt: error: %s\n", prt::outOfMemoryMessage().c_str());
+    return 1;
+  } catch (const std::system_error& e) {
+    // A thread that cannot start for want of memory (its stack counts against ulimit -v) is
+    // the same shortage.
+    if (e.code() == std::errc::resource_unavailable_try_again) {
+      std::fprintf(stderr, "prt: error: %s\n", prt::outOfMemoryMessage().c_str());
+    } else {
+      std::fprintf(stderr, "prt: error: %s\n", e.what());
+    }
     return 1;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "prt: error: %s\n", e.what());
