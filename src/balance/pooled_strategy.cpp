@@ -12,6 +12,7 @@ Decisions PooledStrategy::start(const StartInfo& info) {
   const int workerCount = static_cast<int>(info.speedIndexSeconds.size());
   pool_ = initialPool(info);
   workers_.reset(workerCount);
+  throughput_.reset(workerCount);
   idle_.assign(static_cast<size_t>(workerCount), false);
   speedIndexSeconds_ = info.speedIndexSeconds;
   prepare(info);
@@ -26,7 +27,15 @@ Decisions PooledStrategy::start(const StartInfo& info) {
 
 Decisions PooledStrategy::onRequest(int worker) {
   if (!workers_.isLive(worker)) return {NoMoreWork{worker}};
+  throughput_.chunkDone(worker);
   if (pool_.empty()) {
+    if (std::optional<Transfer> steal = stealFor(worker)) {
+      PRT_CHECK(steal->to == worker && steal->from != worker && workers_.isLive(steal->from) &&
+                steal->count >= 1);
+      throughput_.moved(steal->from, worker, steal->count);
+      idle_[static_cast<size_t>(worker)] = false;
+      return {*steal};
+    }
     idle_[static_cast<size_t>(worker)] = true;
     return {NoMoreWork{worker}};
   }
@@ -35,6 +44,7 @@ Decisions PooledStrategy::onRequest(int worker) {
 
 Decisions PooledStrategy::onWorkerLost(int worker, const TaskSet& unfinished) {
   workers_.markLost(worker);
+  if (worker >= 0 && worker < workers_.workerCount()) throughput_.lost(worker);
   TaskSet pool = unfinished;
   pool.append(pool_);
   pool_ = std::move(pool);
@@ -47,6 +57,10 @@ Decisions PooledStrategy::onWorkerLost(int worker, const TaskSet& unfinished) {
     if (idle_[static_cast<size_t>(w)]) out.push_back(give(w, handOutSize(w)));
   }
   return out;
+}
+
+void PooledStrategy::onResults(int worker, const TaskSet& tasks, double computeSeconds) {
+  if (workers_.isLive(worker)) throughput_.returned(worker, tasks.size(), computeSeconds);
 }
 
 std::vector<double> PooledStrategy::liveDivisionOfLabor() const {
@@ -67,6 +81,7 @@ Decision PooledStrategy::give(int worker, uint64_t count) {
   PRT_CHECK(workers_.isLive(worker) && !pool_.empty());
   count = std::clamp<uint64_t>(count, 1, pool_.size());
   idle_[static_cast<size_t>(worker)] = false;
+  throughput_.given(worker, count);
   return Assign{worker, pool_.takeFront(count)};
 }
 

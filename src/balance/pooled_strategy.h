@@ -4,16 +4,23 @@
 // worker order from the front of the pool, and every request takes the next tasks from the
 // front. Subclasses only say how many tasks each hand-out holds.
 //
+// Once the pool is empty, a request is answered by stealFrom(): a subclass may have the
+// requester take tasks from a peer's queue (a Transfer); otherwise it gets NoMoreWork.
+// Every strategy built on the pool also follows what each worker holds and how fast it
+// returns results (throughput.h), from its own hand-outs and onResults().
+//
 // Lost workers: their unfinished tasks go back to the FRONT of the pool (so they go out
 // first) and every live worker that was told NoMoreWork, and so would never ask again, is
 // served at once as if it had just asked. A request from a lost worker gets NoMoreWork.
 // Not thread-safe.
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "balance/strategy.h"
 #include "balance/task_split.h"
+#include "balance/throughput.h"
 
 namespace prt {
 
@@ -22,6 +29,7 @@ class PooledStrategy : public Strategy {
   Decisions start(const StartInfo& info) final;
   Decisions onRequest(int worker) final;
   Decisions onWorkerLost(int worker, const TaskSet& unfinished) final;
+  void onResults(int worker, const TaskSet& tasks, double computeSeconds) final;
 
  protected:
   // The order in which tasks sit in the pool; hand-outs take its front. Called first by
@@ -38,9 +46,13 @@ class PooledStrategy : public Strategy {
   virtual uint64_t handOutSize(int worker) = 0;
   // Called after a worker is marked lost and its tasks are back in the pool.
   virtual void onLiveWorkersChanged() {}
+  // The pool is empty and live `worker` asks: a Transfer of tasks from a live peer's queue to
+  // it, with count >= 1, or nothing (NoMoreWork). Defaults to nothing.
+  virtual std::optional<Transfer> stealFor(int /*worker*/) { return std::nullopt; }
 
   uint64_t remaining() const { return pool_.size(); }
   const LiveWorkers& workers() const { return workers_; }
+  const Throughput& throughput() const { return throughput_; }
   // The reservoir's division of labour over the live workers; 0 for lost workers.
   std::vector<double> liveDivisionOfLabor() const;
 
@@ -49,6 +61,7 @@ class PooledStrategy : public Strategy {
 
   TaskSet pool_;
   LiveWorkers workers_;
+  Throughput throughput_;
   std::vector<bool> idle_;  // told NoMoreWork and given nothing since
   std::vector<double> speedIndexSeconds_;
 };

@@ -6,4 +6,6 @@ Decisions Strategy::onQueueLengths(const std::vector<uint64_t>& /*lengths*/) {
   return {};
 }
 
+void Strategy::onResults(int /*worker*/, const TaskSet& /*tasks*/, double /*computeSeconds*/) {}
+
 }  // namespace prt

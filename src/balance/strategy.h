@@ -49,9 +49,15 @@ struct Transfer {
 using Decision = std::variant<Assign, NoMoreWork, QueryQueues, Transfer>;
 using Decisions = std::vector<Decision>;
 
+// The strategies' parameters. Which strategy reads which field, its range and its help text
+// are declared by the strategy's registry row (registry.h); the defaults are these.
 struct StrategyOptions {
   double initialPercent = 80;  // reservoir: share of tasks handed out at the start, (0, 100]
   uint64_t chunk = 64;         // self: tasks per hand-out, >= 1
+  uint64_t minChunk = 16;      // AWF, AF, adaptive: the smallest hand-out, >= 1
+  double firstPercent = 10;    // adaptive: share of the image handed out at the start, (0, 100]
+  double reservePercent = 50;  // adaptive: share of the expected remaining time each hand-out
+                               // leaves in the reserve, [0, 100)
 };
 
 struct StartInfo {
@@ -76,6 +82,12 @@ class Strategy {
   // workers). Only strategies that emit QueryQueues receive this; the default ignores it.
   virtual Decisions onQueueLengths(const std::vector<uint64_t>& lengths);
 
+  // `worker` returned `tasks`, which took it `computeSeconds` to render (measured by the
+  // worker, so the strategy never reads a clock; 0 when unmeasured). Adaptive strategies
+  // learn speeds from it; the default ignores it. Called for every batch of results, before
+  // the request that may follow it from the same worker.
+  virtual void onResults(int worker, const TaskSet& tasks, double computeSeconds);
+
   // `worker` is gone; `unfinished` are the tasks it held and had not returned. The strategy
   // must see that they are rendered by live workers, and never give `worker` anything again
   // (a later request from it is answered with NoMoreWork). Two policies exist:
@@ -90,8 +102,8 @@ class Strategy {
   virtual Decisions onWorkerLost(int worker, const TaskSet& unfinished) = 0;
 };
 
-// Creates a strategy by name; an unknown name or an invalid option (initialPercent outside
-// (0, 100], chunk 0) throws InputError listing the valid names or the valid range.
+// Creates a strategy by name (registry.h lists the rows); an unknown name or an option outside
+// its declared range throws InputError listing the valid names or the valid range.
 std::unique_ptr<Strategy> makeStrategy(const std::string& name, const StrategyOptions& options);
 std::vector<std::string> strategyNames();  // in the order the help text lists them
 

@@ -70,7 +70,7 @@ int renderSerial(const RenderOptions& o, const Scene& scene, const RenderSetting
 
 int runRender(const RenderOptions& o) {
   const bool mpi = launchedByMpirun();
-  if ((mpi || o.workers || o.strategy) && !o.costMapPath.empty()) {
+  if ((mpi || o.workers || o.strategyFlags.strategy) && !o.costMapPath.empty()) {
     throw InputError("--cost-map records a serial render; drop --workers and --strategy (and "
                      "run without mpirun)");
   }
@@ -89,7 +89,7 @@ int runRender(const RenderOptions& o) {
   // --- end MPI hook
   Scene scene = loadSceneFile(o.scenePath);
   const RenderSettings settings = resolveSettings(o, scene);
-  if (o.workers || o.strategy) return renderParallelLocal(o, scene, settings);
+  if (o.workers || o.strategyFlags.strategy) return renderParallelLocal(o, scene, settings);
   for (const bool parallelOnly : {!o.reportPath.empty(), !o.tracePath.empty(),
                                   !o.ownershipPath.empty(), !o.slowdowns.empty()}) {
     if (parallelOnly) {

@@ -44,7 +44,8 @@ struct WorkerOutcome {
 
 void runWorker(int id, const ParallelOptions& options, Network& net, WorkerOutcome& outcome) {
   Worker worker(id, WorkerOptions{options.batchPixels});
-  WorkerEngine engine(options.slowdownOf(id), options.speedIndexKind, options.speedIndexDiscs);
+  WorkerEngine engine(options.slowdownOf(id), options.speedIndexKind, options.speedIndexDiscs,
+                      options.slowdownChangesOf(id));
   Mailbox& box = *net.workers[static_cast<size_t>(id)];
   const FaultInjection* fault = nullptr;
   for (const FaultInjection& f : options.faults) {
@@ -82,7 +83,7 @@ void runWorker(int id, const ParallelOptions& options, Network& net, WorkerOutco
       std::vector<float> rgb = engine.render(batch, seconds, outcome.rays);
       outcome.log.add({EventKind::Compute, id, t0, t0 + seconds, batch.size(), 0, 0, ""});
       rendered += batch.size();
-      net.send(id, worker.batchDone(batch, std::move(rgb)), outcome.log);
+      net.send(id, worker.batchDone(batch, std::move(rgb), seconds), outcome.log);
     }
   }
   outcome.tasksReceived = worker.tasksReceived();
@@ -169,6 +170,7 @@ ParallelRun renderLocal(const LocalRunRequest& request) {
   info.masterSpeedIndexSeconds = request.masterSpeedIndexSeconds;
   info.workerSpeedIndexSeconds = master.speedIndices();
   info.serialSeconds = request.serialSeconds;
+  info.speedIndexRun = options.speedIndexKind != SpeedIndexKind::None;
   for (int w = 0; w < n; ++w) {
     const WorkerOutcome& o = outcomes[static_cast<size_t>(w)];
     run.events.insert(run.events.end(), o.log.events.begin(), o.log.events.end());

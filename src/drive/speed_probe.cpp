@@ -37,6 +37,7 @@ double measureProbeSeconds(const Renderer& renderer, int repeats) {
 double serialSpeedIndexSeconds(SpeedIndexKind kind, const Scene& scene,
                                const RenderSettings& settings) {
   constexpr int kRepeats = 5;
+  if (kind == SpeedIndexKind::None) return 1.0;  // the workers' placeholder
   if (kind == SpeedIndexKind::Hanoi) {
     return fastestOf(kRepeats, [] { return measureSpeedIndexSeconds(kSpeedIndexDiscs, 1); });
   }

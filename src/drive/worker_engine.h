@@ -4,6 +4,7 @@
 // render a batch — all under the worker's slowdown. One engine per worker; not shared.
 
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "cluster/messages.h"
@@ -15,8 +16,12 @@ namespace prt {
 
 class WorkerEngine {
  public:
-  WorkerEngine(double slowdown, SpeedIndexKind speedIndexKind, int speedIndexDiscs)
-      : throttle_(slowdown), speedIndexKind_(speedIndexKind), speedIndexDiscs_(speedIndexDiscs) {}
+  // slowdownChanges: this worker's --slowdown-at changes, sorted (changesOf()).
+  WorkerEngine(double slowdown, SpeedIndexKind speedIndexKind, int speedIndexDiscs,
+               std::vector<SpeedChange> slowdownChanges = {})
+      : throttle_(slowdown, std::move(slowdownChanges)),
+        speedIndexKind_(speedIndexKind),
+        speedIndexDiscs_(speedIndexDiscs) {}
 
   // Parses the scene text (the master already validated it) and prepares the renderer.
   void load(const SceneMsg& scene);

@@ -203,6 +203,7 @@ class MasterRank {
     info.masterSpeedIndexSeconds = request_.masterSpeedIndexSeconds;
     info.workerSpeedIndexSeconds = master_.speedIndices();
     info.serialSeconds = request_.serialSeconds;
+    info.speedIndexRun = options.speedIndexKind != SpeedIndexKind::None;
     for (int w = 0; w < n_; ++w) {
       const WorkerSummary& s = *summaries_[static_cast<size_t>(w)];
       const double offset = workerClockOffset(log_.events, s.events, w);
@@ -257,7 +258,8 @@ class WorkerRank {
         engine_(options.slowdowns.size() == static_cast<size_t>(session.workerCount())
                     ? options.slowdownOf(id_)
                     : 1.0,
-                options.speedIndexKind, options.speedIndexDiscs) {
+                options.speedIndexKind, options.speedIndexDiscs,
+                options.slowdownChangesOf(id_)) {
     for (const FaultInjection& f : options.faults) {
       if (f.worker == id_) fault_ = &f;
     }
@@ -325,7 +327,7 @@ class WorkerRank {
     std::vector<float> rgb = engine_.render(batch, computeSeconds, rays_);
     log_.add({EventKind::Compute, id_, t0, t0 + computeSeconds, batch.size(), 0, 0, ""});
     rendered_ += batch.size();
-    send(worker_.batchDone(batch, std::move(rgb)));
+    send(worker_.batchDone(batch, std::move(rgb), computeSeconds));
   }
 
   const int id_;
