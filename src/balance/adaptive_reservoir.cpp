@@ -98,7 +98,7 @@ std::optional<Transfer> AdaptiveReservoirStrategy::stealFor(int worker) {
   int victim = -1;
   double latest = 0;
   for (int w : workers().liveList()) {
-    if (w == worker || rate[static_cast<size_t>(w)] <= 0) continue;
+    if (w == worker || rate[static_cast<size_t>(w)] <= 0 || awaitingSteal(w)) continue;
     const double finish =
         static_cast<double>(throughput().held(w)) / rate[static_cast<size_t>(w)];
     if (finish > latest) {
@@ -108,8 +108,17 @@ std::optional<Transfer> AdaptiveReservoirStrategy::stealFor(int worker) {
   }
   if (victim < 0) return std::nullopt;
   const double theirs = rate[static_cast<size_t>(victim)];
-  const auto count = static_cast<uint64_t>(static_cast<double>(throughput().held(victim)) *
-                                           mine / (theirs + mine));
+  const double held = static_cast<double>(throughput().held(victim));
+  // The thief's part of what everyone holds were it shared so that all finish together: the
+  // other idle workers will take their parts from the same victim.
+  double heldSum = 0;
+  double rateSum = 0;
+  for (int w : workers().liveList()) {
+    heldSum += static_cast<double>(throughput().held(w));
+    rateSum += rate[static_cast<size_t>(w)];
+  }
+  const double fair = mine * heldSum / rateSum;
+  const auto count = static_cast<uint64_t>(std::min(held * mine / (theirs + mine), fair));
   if (count < minChunk_) return std::nullopt;
   return Transfer{victim, worker, count};
 }

@@ -19,8 +19,13 @@
 //    time rather than tasks, weighted by measured speed).
 //  - The end: once the reserve is empty, a requester steals from the worker expected to
 //    finish last (h_v / r_v largest), taking h_v r_w / (r_v + r_w) tasks so that both finish
-//    together — at least minChunk, else NoMoreWork. A worker that slows down after its last
-//    hand-out is thus relieved by the others instead of finishing alone.
+//    together, but no more than its own part r_w H / sum_i r_i of the H tasks all hold,
+//    since the other idle workers will take theirs — at least
+//    minChunk; a worker with tasks stolen for it on their way is no
+//    victim. A requester with nothing worth stealing waits, and every later result looks
+//    again (PooledStrategy::waitsForSteals), so the fast workers stay available to the end.
+//    A worker that slows down after its last hand-out is thus relieved by the others
+//    instead of finishing alone.
 //
 // Lost workers: see PooledStrategy.
 
@@ -50,6 +55,7 @@ class AdaptiveReservoirStrategy final : public PooledStrategy {
   uint64_t initialSize(int worker) override;
   uint64_t handOutSize(int worker) override;
   std::optional<Transfer> stealFor(int worker) override;
+  bool waitsForSteals() const override { return true; }
 
  private:
   // Measured rates of the live workers, the unmeasured at the mean measured rate; 0 for lost

@@ -138,16 +138,23 @@ TEST(StealingTest, IdleWorkerTakesHalfOfTheFullestQueue) {
   stealing.onResults(1, TaskSet::range(0, 20), 1.0);  // holds 10
   stealing.onResults(2, TaskSet::range(0, 4), 1.0);   // holds 26: the fullest
   EXPECT_EQ(stealing.onRequest(0), (Decisions{Transfer{2, 0, 13}}));
-  // Workers 0 and 2 now count 13 each: worker 1's next request robs the lower index.
+  // Workers 0 and 2 now count 13 each, but worker 0's may still be on their way to it: it is
+  // no victim until it has rendered some of them.
   stealing.onResults(1, TaskSet::range(20, 10), 1.0);
-  EXPECT_EQ(stealing.onRequest(1), (Decisions{Transfer{0, 1, 6}}));
+  EXPECT_EQ(stealing.onRequest(1), (Decisions{Transfer{2, 1, 6}}));
+  stealing.onResults(0, TaskSet::range(0, 1), 1.0);  // 12 left at worker 0, 7 at worker 2
+  stealing.onResults(2, TaskSet::range(0, 7), 1.0);  // worker 2 done: 0 left
+  EXPECT_EQ(stealing.onRequest(2), (Decisions{Transfer{0, 2, 6}}));
 }
 
-TEST(StealingTest, NoStealBelowTheMinimum) {
+TEST(StealingTest, NoStealBelowTheMinimumTheThiefWaitsForTheEnd) {
   StealingStrategy stealing(8);
   const Decisions start = stealing.start(StartInfo{30, {1, 1}});  // 15 each
   stealing.onResults(0, std::get<Assign>(start[0]).tasks, 1.0);
-  EXPECT_EQ(stealing.onRequest(0), (Decisions{NoMoreWork{0}}));  // half of 15 is 7 < 8
+  EXPECT_EQ(stealing.onRequest(0), Decisions{});  // half of 15 is 7 < 8: it waits
+  EXPECT_EQ(stealing.onResults(1, TaskSet::range(15, 10), 1.0), Decisions{});
+  // The last results: nothing will ever be worth stealing, the waiting thief is let go.
+  EXPECT_EQ(stealing.onResults(1, TaskSet::range(25, 5), 1.0), (Decisions{NoMoreWork{0}}));
 }
 
 TEST(WeightedScatterTest, SharesFollowTheDivisionOfLabourAndCoverEveryTask) {

@@ -157,8 +157,8 @@ class FakeMaster {
     if (!done.empty()) {
       result_.lastBusyRound[static_cast<size_t>(index)] = result_.rounds;
       // A round is one second; a worker that ran out part-way used a share of it.
-      strategy_.onResults(index, done,
-                          static_cast<double>(done.size()) / static_cast<double>(rate));
+      apply(strategy_.onResults(index, done,
+                                static_cast<double>(done.size()) / static_cast<double>(rate)));
     }
     if (w.queue.empty() && w.needsRequest && !w.outstanding) {
       w.needsRequest = false;

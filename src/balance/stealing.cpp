@@ -31,7 +31,8 @@ uint64_t StealingStrategy::handOutSize(int /*worker*/) {
 std::optional<Transfer> StealingStrategy::stealFor(int worker) {
   int victim = -1;
   for (int w : workers().liveList()) {
-    if (w != worker && (victim < 0 || throughput().held(w) > throughput().held(victim))) victim = w;
+    if (w == worker || awaitingSteal(w)) continue;
+    if (victim < 0 || throughput().held(w) > throughput().held(victim)) victim = w;
   }
   if (victim < 0) return std::nullopt;
   const uint64_t half = throughput().held(victim) / 2;

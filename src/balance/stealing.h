@@ -7,10 +7,12 @@
 // The victim is the live worker that holds the most tasks by the master's count (given and
 // transferred in, less returned and transferred out; throughput.h), ties to the lower index:
 // no queue query and no random probing, as the master already knows who holds the most. A
-// victim is only robbed while half its count is at least minChunk tasks; otherwise the thief
-// gets NoMoreWork. The count includes the batch the victim is rendering, so the transfer may
-// move fewer tasks than ordered (the worker sends what its queue holds); an empty transfer
-// makes the thief ask again, and it then steals from the next fullest worker.
+// victim is only robbed while half its count is at least minChunk tasks, and not while tasks
+// stolen for it may still be on their way (PooledStrategy::awaitingSteal). A thief that finds
+// no victim waits (PooledStrategy::waitsForSteals): each later result looks again, and once
+// every task is back it gets NoMoreWork. The count includes the batch the victim is
+// rendering, so the transfer may move fewer tasks than ordered (the worker sends what its
+// queue holds); an empty transfer makes the thief ask again.
 //
 // Lost workers: see PooledStrategy (their tasks go to the pool, which serves requests before
 // any stealing, each hand-out ceil(R / P)).
@@ -34,6 +36,7 @@ class StealingStrategy final : public PooledStrategy {
   uint64_t initialSize(int worker) override;
   uint64_t handOutSize(int worker) override;
   std::optional<Transfer> stealFor(int worker) override;
+  bool waitsForSteals() const override { return true; }
 
  private:
   uint64_t minChunk_;

@@ -54,7 +54,7 @@ using Decisions = std::vector<Decision>;
 struct StrategyOptions {
   double initialPercent = 80;  // reservoir: share of tasks handed out at the start, (0, 100]
   uint64_t chunk = 64;         // self: tasks per hand-out, >= 1
-  uint64_t minChunk = 16;      // AWF, AF, adaptive: the smallest hand-out, >= 1
+  uint64_t minChunk = 8;       // AWF, AF, stealing, adaptive: the smallest hand-out, >= 1
   double firstPercent = 10;    // adaptive: share of the image handed out at the start, (0, 100]
   double reservePercent = 50;  // adaptive: share of the expected remaining time each hand-out
                                // leaves in the reserve, [0, 100)
@@ -75,7 +75,9 @@ class Strategy {
   virtual Decisions start(const StartInfo& info) = 0;
 
   // `worker` has an empty queue and asks for more. The answer must contain, for this worker,
-  // an Assign, a NoMoreWork, or (diffusion) a QueryQueues whose outcome answers it later.
+  // an Assign, a NoMoreWork, or (diffusion) a QueryQueues whose outcome answers it later; or
+  // nothing, if the strategy answers it later from onResults() (a thief waiting for a queue
+  // worth robbing), and by NoMoreWork at the latest once every task has come back.
   virtual Decisions onRequest(int worker) = 0;
 
   // Answers to the last QueryQueues: lengths[w] is worker w's queue length (0 for lost
@@ -84,9 +86,10 @@ class Strategy {
 
   // `worker` returned `tasks`, which took it `computeSeconds` to render (measured by the
   // worker, so the strategy never reads a clock; 0 when unmeasured). Adaptive strategies
-  // learn speeds from it; the default ignores it. Called for every batch of results, before
-  // the request that may follow it from the same worker.
-  virtual void onResults(int worker, const TaskSet& tasks, double computeSeconds);
+  // learn speeds from it, and may answer requests they left waiting; the default ignores it
+  // and returns nothing. Called for every batch of results, before the request that may
+  // follow it from the same worker.
+  virtual Decisions onResults(int worker, const TaskSet& tasks, double computeSeconds);
 
   // `worker` is gone; `unfinished` are the tasks it held and had not returned. The strategy
   // must see that they are rendered by live workers, and never give `worker` anything again

@@ -70,8 +70,9 @@ void addParallelOptions(CLI::App& cmd, RenderOptions& o) {
   cmd.add_option("--speed-index", o.speedIndex,
                  "Speed index the workers measure: hanoi (the paper's Towers of Hanoi run), "
                  "probe (rendering a fixed sample of the image's pixels), none (start at once; "
-                 "MASU and ASU then come from measured throughput) or auto (none for the "
-                 "adaptive strategies, hanoi for the rest)")
+                 "MASU and ASU then come from measured throughput), slowdown (an oracle: each "
+                 "worker reports its --slowdown factor, its true emulated speed) or auto (none "
+                 "for the adaptive strategies, hanoi for the rest)")
       ->capture_default_str()
       ->group(parallel);
   cmd.add_option("--batch", o.batchPixels, "Pixels a worker renders between returning results")

@@ -127,7 +127,7 @@ Outbox Master::onMessage(int from, const Message& message) {
   } else if (const auto* r = std::get_if<ResultsMsg>(&message)) {
     PRT_CHECK(r->rgb.size() == 3 * r->tasks.size() || r->rgb.empty());  // empty: simulated
     returned_[w] += r->tasks.size();
-    strategy_->onResults(from, r->tasks, r->computeSeconds);
+    apply(strategy_->onResults(from, r->tasks, r->computeSeconds), out);
     r->tasks.forEach([&](uint64_t task) {
       PRT_CHECK(task < taskCount_);
       if (!done_[task]) {

@@ -15,6 +15,8 @@ enum class SpeedIndexKind {
   RenderProbe,  // render probePixels() of the scene with the run's settings
   None,         // measure nothing: every worker reports 1 at once (for strategies that
                 // learn speeds as they go; MASU then comes from measured throughput)
+  Slowdown,     // measure nothing: every worker reports its --slowdown factor, its true
+                // emulated speed (an oracle, for the emulation's own ceiling)
 };
 
 namespace speed_index_kind_detail {
@@ -23,7 +25,8 @@ inline constexpr struct {
   SpeedIndexKind kind;
 } kKinds[] = {{"hanoi", SpeedIndexKind::Hanoi},
                  {"probe", SpeedIndexKind::RenderProbe},
-                 {"none", SpeedIndexKind::None}};
+                 {"none", SpeedIndexKind::None},
+                 {"slowdown", SpeedIndexKind::Slowdown}};
 }  // namespace speed_index_kind_detail
 
 inline std::vector<std::string> speedIndexKindNames() {

@@ -37,7 +37,8 @@ double measureProbeSeconds(const Renderer& renderer, int repeats) {
 double serialSpeedIndexSeconds(SpeedIndexKind kind, const Scene& scene,
                                const RenderSettings& settings) {
   constexpr int kRepeats = 5;
-  if (kind == SpeedIndexKind::None) return 1.0;  // the workers' placeholder
+  // The workers' placeholder, or the factor of a machine that is not slowed down.
+  if (kind == SpeedIndexKind::None || kind == SpeedIndexKind::Slowdown) return 1.0;
   if (kind == SpeedIndexKind::Hanoi) {
     return fastestOf(kRepeats, [] { return measureSpeedIndexSeconds(kSpeedIndexDiscs, 1); });
   }

@@ -205,6 +205,7 @@ class Simulation {
     info.masterSpeedIndexSeconds = options_.baseSpeedIndexSeconds;
     info.workerSpeedIndexSeconds = master_.speedIndices();
     info.serialSeconds = costs_.totalSeconds();
+    info.speedIndexRun = options_.speedIndexRun;
     for (const SimWorker& w : workers_) {
       info.slowdowns.push_back(1.0 / w.speed);
       info.tasksReceived.push_back(w.machine.tasksReceived());
