@@ -184,6 +184,10 @@ std::vector<std::string> strategiesTaking(const std::string& flag) {
   return names;
 }
 
+bool runsSpeedIndexByDefault(const std::string& strategy) {
+  return strategyRow(strategy).kind != StrategyKind::Adaptive;
+}
+
 std::string strategyHelp() {
   std::string out;
   for (const StrategyRow& row : rows()) {

@@ -59,6 +59,10 @@ const StrategyRow& strategyRow(const std::string& name);
 std::vector<StrategyOption> strategyOptions();
 // The names of the strategies that take option `flag`, in row order.
 std::vector<std::string> strategiesTaking(const std::string& flag);
+// Whether the workers run a speed index before `strategy` starts, when the user does not say:
+// no for the adaptive strategies, which learn speeds as they go (they start at once), yes
+// for the rest, as the paper's runs do.
+bool runsSpeedIndexByDefault(const std::string& strategy);
 // "name (kind) - summary" lines for help texts.
 std::string strategyHelp();
 

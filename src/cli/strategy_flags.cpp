@@ -39,8 +39,4 @@ StrategyOptions strategyOptionsFrom(const StrategyFlags& flags) {
   return options;
 }
 
-bool runsSpeedIndexByDefault(const std::string& strategy) {
-  return strategyRow(strategy).kind != StrategyKind::Adaptive;
-}
-
 }  // namespace prt::cli

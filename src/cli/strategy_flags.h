@@ -25,8 +25,4 @@ void addStrategyFlags(CLI::App& cmd, StrategyFlags& flags, const std::string& gr
 // out of range (a fraction for a whole-number option included), and for an unknown strategy.
 StrategyOptions strategyOptionsFrom(const StrategyFlags& flags);
 
-// Whether the workers run a speed index by default: "auto" is no for the adaptive strategies,
-// which learn speeds as they go, and yes for the rest.
-bool runsSpeedIndexByDefault(const std::string& strategy);
-
 }  // namespace prt::cli

@@ -8,7 +8,7 @@
 #include <chrono>
 #include <map>
 
-#include "balance/strategy.h"
+#include "balance/registry.h"
 #include "lab/context.h"
 #include "lab/experiments.h"
 #include "lab/measure.h"
@@ -19,7 +19,7 @@ namespace prt {
 namespace {
 
 bool isStatic(const std::string& strategy) {
-  return strategy == "scatter" || strategy == "blocks";
+  return strategyRow(strategy).kind == StrategyKind::Static;
 }
 
 }  // namespace
@@ -59,6 +59,7 @@ void runScale(ExperimentContext& cx) {
         sim.strategy = strategy;
         sim.speeds = scenario == "homogeneous" ? uniformSpeeds(n) : slowShareSpeeds(n, 0.5, 4, 1);
         sim.baseSpeedIndexSeconds = speedIndex;
+        sim.speedIndexRun = runsSpeedIndexByDefault(strategy);
         const auto start = std::chrono::steady_clock::now();
         const SimulatedRun run = simulate(costs, sim);
         const double wall =
