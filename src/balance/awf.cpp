@@ -1,7 +1,6 @@
 #include "balance/awf.h"
 
 #include <algorithm>
-#include <cmath>
 
 #include "balance/interleaved_order.h"
 #include "core/check.h"

@@ -94,11 +94,12 @@ class Strategy {
   // `worker` is gone; `unfinished` are the tasks it held and had not returned. The strategy
   // must see that they are rendered by live workers, and never give `worker` anything again
   // (a later request from it is answered with NoMoreWork). Two policies exist:
-  //  - dynamic strategies (PooledStrategy: reservoir, self, guided, factoring) put the tasks
-  //    back at the front of their pool, so they go out first, and at once serve the live
-  //    workers that were told NoMoreWork and would otherwise never ask again;
-  //  - static ones (StaticStrategy: scatter, blocks; and hybrid) assign them at once to the
-  //    live workers, split evenly into contiguous pieces.
+  //  - dynamic and adaptive strategies (PooledStrategy: reservoir, adaptive, self, guided,
+  //    factoring, AWF, AF, stealing) put the tasks back at the front of their pool, so they
+  //    go out first, and at once serve the live workers that were told NoMoreWork (or left
+  //    waiting) and would otherwise never ask again;
+  //  - static ones (StaticStrategy: scatter, scatter-weighted, blocks; and both hybrids)
+  //    assign them at once to the live workers, split evenly into contiguous pieces.
   // It may be called again for a worker already lost, with tasks that reached it afterwards
   // (a transfer in flight); they are treated the same way. When no worker is left alive it
   // returns nothing: the master reports the failure.
