@@ -16,10 +16,11 @@ void addStrategyFlags(CLI::App& cmd, StrategyFlags& flags, const std::string& gr
     for (const std::string& name : strategiesTaking(option.flag)) {
       users += (users.empty() ? "" : ", ") + name;
     }
-    cmd.add_option("--" + option.flag, value,
-                   users + ": " + option.help + ", " + option.rangeText())
-        ->capture_default_str()
-        ->group(group);
+    CLI::Option* flag = cmd.add_option("--" + option.flag, value,
+                                       users + ": " + option.help + ", " + option.rangeText())
+                            ->capture_default_str()
+                            ->group(group);
+    if (option.isInteger()) flag->type_name("INT");
   }
 }
 
