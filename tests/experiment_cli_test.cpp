@@ -94,11 +94,12 @@ TEST_F(ExperimentCliTest, Scale) {
   const Result r = quick("scale");
   ASSERT_EQ(r.exitCode, 0) << r.output;
   // scenarios x worker counts x strategies
-  EXPECT_EQ(rows("scale.csv"), 2 * 5 * static_cast<int>(strategyNames().size()));
+  EXPECT_EQ(rows("scale.csv"), 3 * 5 * static_cast<int>(strategyNames().size()));
   const std::string csv = readWholeFile(dir_ / "out" / "scale.csv");
   EXPECT_EQ(csv.find(",real,"), std::string::npos) << "scale is simulated only";
   expectChart("scale-efficiency-homogeneous.png");
   expectChart("scale-asu-heterogeneous.png");
+  expectChart("scale-efficiency-changing.png");
 }
 
 TEST_F(ExperimentCliTest, BadInputIsExitCodeTwoAndWritesNothing) {
