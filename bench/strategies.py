@@ -22,8 +22,9 @@ import sys
 import tempfile
 import time
 
-STRATEGIES = ["scatter", "hybrid", "reservoir", "reservoir-scatter", "blocks", "self", "guided",
-              "factoring"]
+STRATEGIES = ["scatter", "scatter-weighted", "hybrid", "hybrid-weighted", "reservoir",
+              "reservoir-scatter", "adaptive", "blocks", "self", "guided", "factoring", "awf-b",
+              "awf-c", "af", "stealing"]
 
 
 def run(cmd):
@@ -83,7 +84,7 @@ def main():
     for s, r in results.items():
         print(f"{s:<18} {r['elapsed_s']:9.3f} {r['speedup']:8.2f} {100*r['efficiency']:6.1f}% "
               f"{r['masu']:6.2f} {100*r['asu']:5.1f}% {r['messages']:9.0f} {r['bytes']:10.0f}")
-    for mine in ("reservoir", "reservoir-scatter"):
+    for mine in ("reservoir", "reservoir-scatter", "adaptive"):
         if mine not in results:
             continue
         res = results[mine]["elapsed_s"]

@@ -1,15 +1,37 @@
 #!/usr/bin/env bash
 # Installs dependencies, builds, and runs the main job: the benchmark scene (the paper's test
 # case A) rendered by a master and four emulated workers of different speeds (two at half
-# speed, two at a quarter: 1.5 cores' worth, faithful on a 2-core machine), balanced by the
-# reservoir algorithm, with the load-balancing report. Outputs land in out/.
+# speed, two at a quarter: 1.5 cores' worth, faithful on a 2-core machine), with the
+# load-balancing report of the default strategy, then a side-by-side of what balancing buys:
+# scatter, hybrid, the paper's reservoir and the default on the same emulated cluster, against
+# the same serial time. Outputs land in out/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
 bash scripts/build.sh release
 mkdir -p out
-build/prt render scenes/complex.scene --case A --workers 4 --strategy reservoir \
-  --slowdown 2,2,4,4 --measure-serial \
+build/prt render scenes/complex.scene --case A --workers 4 --slowdown 2,2,4,4 --measure-serial \
   --report out/report.json --trace out/trace.json --ownership out/ownership.png \
   -o out/complex.png "$@"
 echo "wrote out/complex.png, out/ownership.png, out/report.json, out/trace.json (open in Perfetto)"
+
+# The side-by-side: one run each, the serial time from the run above.
+value() { grep -o "\"$1\": *[-0-9.e+]*" "$2" | head -1 | sed 's/.*: *//'; }
+serial=$(value serial_s out/report.json)
+default=$(grep -o '"strategy": *"[^"]*"' out/report.json | head -1 | sed 's/.*: *"//; s/"$//')
+echo
+echo "case A, 4 workers --slowdown 2,2,4,4 (ideal speed-up 1.5), serial ${serial} s:"
+printf '%-20s %9s %9s %11s %7s\n' strategy elapsed_s speed-up efficiency ASU
+for strategy in scatter hybrid reservoir "$default"; do
+  report=out/demo-$strategy.json
+  build/prt render scenes/complex.scene --case A --workers 4 --slowdown 2,2,4,4 \
+    --strategy "$strategy" --serial-seconds "$serial" --report "$report" \
+    -o out/demo.pfm --quiet "$@"
+  label=$strategy
+  [ "$strategy" = "$default" ] && label="$strategy (default)"
+  printf '%-20s %9.3f %9.2f %10.1f%% %6.1f%%\n' "$label" "$(value elapsed_s "$report")" \
+    "$(value speedup "$report")" "$(awk -v e="$(value efficiency "$report")" 'BEGIN{print 100*e}')" \
+    "$(awk -v a="$(value asu "$report")" 'BEGIN{print 100*a}')"
+done
+rm -f out/demo.pfm
+echo "(one run each on this machine; bench/adaptive.py gives medians and ratios)"

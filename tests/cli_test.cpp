@@ -84,6 +84,21 @@ TEST_F(CliTest, ParallelInputErrors) {
   EXPECT_EQ(r.exitCode, 2) << r.output;
   r = run("render " + scene + out + " --workers 2 --slowdown 1,0.5");
   EXPECT_EQ(r.exitCode, 2) << r.output;
+  for (const char* bad : {"3:0:2", "0:-1:2", "0:1:0.5", "0:1", "x"}) {
+    r = run("render " + scene + out + " --workers 2 --slowdown-at " + bad);
+    EXPECT_EQ(r.exitCode, 2) << bad << ": " << r.output;
+    EXPECT_NE(r.output.find("--slowdown-at"), std::string::npos) << r.output;
+  }
+  r = run("render " + scene + out + " --workers 2 --min-chunk 0");
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  r = run("render " + scene + out + " --workers 2 --chunk 1.5");
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  r = run("render " + scene + out + " --workers 2 --speed-index nonesuch");
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  r = run("simulate --workers 2 --speed-at 2:1:0.5");
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  r = run("simulate --workers 2 --speed-index-run maybe");
+  EXPECT_EQ(r.exitCode, 2) << r.output;
   r = run("render " + scene + out + " --workers 1000");
   EXPECT_EQ(r.exitCode, 2) << r.output;
   EXPECT_NE(r.output.find("pixels"), std::string::npos) << r.output;
@@ -102,6 +117,24 @@ TEST_F(CliTest, ParallelRenderWritesReportTraceAndOwnership) {
   EXPECT_TRUE(fs::exists(path("own.png")));
   EXPECT_NE(r.output.find("efficiency"), std::string::npos) << r.output;
   // Same bytes as a serial render.
+  ASSERT_EQ(run("render " + scene + " -o " + path("ser.pfm") + " --quiet").exitCode, 0);
+  std::ifstream a(path("par.pfm"), std::ios::binary), b(path("ser.pfm"), std::ios::binary);
+  const std::string sa((std::istreambuf_iterator<char>(a)), {});
+  const std::string sb((std::istreambuf_iterator<char>(b)), {});
+  EXPECT_EQ(sa, sb);
+}
+
+TEST_F(CliTest, AdaptiveRunWithAChangingSpeedMatchesTheSerialImage) {
+  const std::string scene = write("ok.scene", kValidScene);
+  const Result r = run("render " + scene + " -o " + path("par.pfm") +
+                       " --workers 2 --slowdown 1,2 --slowdown-at 0:0:3 --serial-seconds 1" +
+                       " --report " + path("r.json") + " --batch 8");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_NE(r.output.find("strategy adaptive"), std::string::npos) << "the default: " << r.output;
+  EXPECT_NE(r.output.find("measured throughput"), std::string::npos) << r.output;
+  std::ifstream report(path("r.json"));
+  const std::string json((std::istreambuf_iterator<char>(report)), {});
+  EXPECT_NE(json.find("\"masu_basis\": \"measured_throughput\""), std::string::npos) << json;
   ASSERT_EQ(run("render " + scene + " -o " + path("ser.pfm") + " --quiet").exitCode, 0);
   std::ifstream a(path("par.pfm"), std::ios::binary), b(path("ser.pfm"), std::ios::binary);
   const std::string sa((std::istreambuf_iterator<char>(a)), {});

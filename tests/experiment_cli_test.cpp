@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "balance/strategy.h"
 #include "core/subprocess.h"
 #include "prt_command.h"
 
@@ -81,7 +82,7 @@ TEST_F(ExperimentCliTest, InitialPercent) {
 TEST_F(ExperimentCliTest, Compare) {
   const Result r = quick("compare", "--cases A --strategies scatter,hybrid,reservoir");
   ASSERT_EQ(r.exitCode, 0) << r.output;
-  EXPECT_EQ(rows("compare.csv"), 3 * 2);  // strategies x sources
+  EXPECT_EQ(rows("compare.csv"), 3 * 2 * 2);  // strategies x sources x (A, A-slowing)
   expectChart("compare-speedup.png");
   expectChart("compare-efficiency.png");
   expectChart("compare-asu.png");
@@ -92,11 +93,13 @@ TEST_F(ExperimentCliTest, Compare) {
 TEST_F(ExperimentCliTest, Scale) {
   const Result r = quick("scale");
   ASSERT_EQ(r.exitCode, 0) << r.output;
-  EXPECT_EQ(rows("scale.csv"), 2 * 5 * 8);  // scenarios x worker counts x strategies
+  // scenarios x worker counts x strategies
+  EXPECT_EQ(rows("scale.csv"), 3 * 5 * static_cast<int>(strategyNames().size()));
   const std::string csv = readWholeFile(dir_ / "out" / "scale.csv");
   EXPECT_EQ(csv.find(",real,"), std::string::npos) << "scale is simulated only";
   expectChart("scale-efficiency-homogeneous.png");
   expectChart("scale-asu-heterogeneous.png");
+  expectChart("scale-efficiency-changing.png");
 }
 
 TEST_F(ExperimentCliTest, BadInputIsExitCodeTwoAndWritesNothing) {

@@ -2,8 +2,8 @@
 
 namespace prt {
 
-std::vector<TaskSet> BlocksStrategy::shares(uint64_t taskCount, int workerCount) const {
-  return splitEvenly(TaskSet::range(0, taskCount), static_cast<uint64_t>(workerCount));
+std::vector<TaskSet> BlocksStrategy::shares(const StartInfo& info) const {
+  return splitEvenly(TaskSet::range(0, info.taskCount), info.speedIndexSeconds.size());
 }
 
 }  // namespace prt

@@ -15,7 +15,7 @@ class BlocksStrategy final : public StaticStrategy {
   std::string name() const override { return "blocks"; }
 
  protected:
-  std::vector<TaskSet> shares(uint64_t taskCount, int workerCount) const override;
+  std::vector<TaskSet> shares(const StartInfo& info) const override;
 };
 
 }  // namespace prt

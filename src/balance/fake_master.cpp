@@ -32,10 +32,14 @@ class FakeMaster {
     result_.renderCount.assign(n, 0);
     result_.assignCount.assign(n, 0);
     result_.recoveredCount.assign(n, 0);
+    result_.lastBusyRound.assign(workers_.size(), 0);
   }
 
   FakeRunResult run() {
-    apply(strategy_.start(StartInfo{config_.taskCount, config_.speedIndexSeconds}));
+    const std::vector<double> told = config_.hideSpeedIndex
+                                         ? std::vector<double>(workers_.size(), 1.0)
+                                         : config_.speedIndexSeconds;
+    apply(strategy_.start(StartInfo{config_.taskCount, told}));
     const uint64_t maxRounds = config_.maxRounds ? config_.maxRounds : 2 * config_.taskCount + 100;
     while (result_.rounds < maxRounds && result_.errors.empty()) {
       ++result_.rounds;
@@ -143,9 +147,19 @@ class FakeMaster {
   void visit(int index) {
     FakeWorker& w = workers_[static_cast<size_t>(index)];
     if (w.lost) return;
-    TaskSet done = w.queue.takeFront(w.rate);
+    uint64_t rate = w.rate;
+    if (index == config_.slowedWorker && result_.rounds >= config_.slowedFromRound) {
+      rate = config_.slowedRate;
+    }
+    TaskSet done = w.queue.takeFront(rate);
     done.forEach([&](uint64_t t) { ++result_.renderCount[static_cast<size_t>(t)]; });
     rendered_ += done.size();
+    if (!done.empty()) {
+      result_.lastBusyRound[static_cast<size_t>(index)] = result_.rounds;
+      // A round is one second; a worker that ran out part-way used a share of it.
+      apply(strategy_.onResults(index, done,
+                                static_cast<double>(done.size()) / static_cast<double>(rate)));
+    }
     if (w.queue.empty() && w.needsRequest && !w.outstanding) {
       w.needsRequest = false;
       w.outstanding = true;

@@ -5,7 +5,9 @@
 // workers, with lower speed indices, render more per round) and ask for more when their
 // queue is empty. Queue-length queries are answered at the start of the next round with the
 // true lengths at that time, so answers are as stale as a real network makes them; transfers
-// move tasks from the back of the sender's queue, fewer if it holds fewer.
+// move tasks from the back of the sender's queue, fewer if it holds fewer. Every round's
+// rendering is reported to the strategy as results (onResults) taking one second per round,
+// before the request that may follow.
 
 #include <cstdint>
 #include <string>
@@ -22,6 +24,10 @@ struct FakeRunConfig {
   uint64_t loseAfterRendered = 0;         // ... once this many tasks are rendered in all
   uint64_t seed = 1;                      // the interleaving of workers
   uint64_t maxRounds = 0;                 // 0: 2 * taskCount + 100
+  bool hideSpeedIndex = false;            // the strategy is told every index is 1
+  int slowedWorker = -1;                  // this worker renders only slowedRate tasks a
+  uint64_t slowedFromRound = 0;           // round from this round on
+  uint64_t slowedRate = 1;
 };
 
 struct FakeRunResult {
@@ -33,6 +39,7 @@ struct FakeRunResult {
   std::vector<uint32_t> renderCount;     // per task
   std::vector<uint32_t> assignCount;     // per task, by Assign decisions
   std::vector<uint32_t> recoveredCount;  // per task, times it was handed back as unfinished
+  std::vector<uint64_t> lastBusyRound;   // per worker, the last round it rendered anything
   std::vector<std::string> errors;       // protocol violations, empty when all is well
 };
 

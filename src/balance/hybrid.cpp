@@ -2,7 +2,9 @@
 
 #include <algorithm>
 
+#include "balance/reservoir_math.h"
 #include "balance/scatter.h"
+#include "balance/weighted_scatter.h"
 #include "core/check.h"
 
 namespace prt {
@@ -26,7 +28,7 @@ bool before(const Share& a, const Share& b) {
 std::vector<Transfer> diffusionTransfers(const std::vector<uint64_t>& lengths,
                                          const std::vector<bool>& live,
                                          const std::vector<bool>& waiting) {
-  PRT_CHECK(lengths.size() == live.size() && live.size() == waiting.size());
+  PRT_CHECK(lengths.size() == live.size());
   uint64_t total = 0;
   uint64_t liveCount = 0;
   for (size_t w = 0; w < lengths.size(); ++w) {
@@ -36,12 +38,22 @@ std::vector<Transfer> diffusionTransfers(const std::vector<uint64_t>& lengths,
   }
   if (liveCount == 0) return {};
   const uint64_t target = (total + liveCount - 1) / liveCount;
+  return diffusionTransfersTowards(lengths, live, waiting,
+                                   std::vector<uint64_t>(lengths.size(), target));
+}
 
+std::vector<Transfer> diffusionTransfersTowards(const std::vector<uint64_t>& lengths,
+                                                const std::vector<bool>& live,
+                                                const std::vector<bool>& waiting,
+                                                const std::vector<uint64_t>& targets) {
+  PRT_CHECK(lengths.size() == live.size() && live.size() == waiting.size() &&
+            targets.size() == live.size());
   std::vector<Share> senders;
   std::vector<Share> receivers;
   for (size_t w = 0; w < lengths.size(); ++w) {
     if (!live[w]) continue;
     const int worker = static_cast<int>(w);
+    const uint64_t target = targets[w];
     if (lengths[w] > target) senders.push_back({worker, lengths[w] - target, waiting[w]});
     if (lengths[w] < target) receivers.push_back({worker, target - lengths[w], waiting[w]});
   }
@@ -62,12 +74,14 @@ std::vector<Transfer> diffusionTransfers(const std::vector<uint64_t>& lengths,
   return out;
 }
 
-std::vector<TaskSet> HybridStrategy::shares(uint64_t taskCount, int workerCount) const {
-  return scatterShares(taskCount, workerCount);
+std::vector<TaskSet> HybridStrategy::shares(const StartInfo& info) const {
+  if (speedWeighted_) return weightedScatterShares(info.taskCount, info.speedIndexSeconds);
+  return scatterShares(info.taskCount, static_cast<int>(info.speedIndexSeconds.size()));
 }
 
 Decisions HybridStrategy::start(const StartInfo& info) {
   Decisions out = StaticStrategy::start(info);
+  speedIndexSeconds_ = info.speedIndexSeconds;
   waiting_.assign(info.speedIndexSeconds.size(), false);
   queryOutstanding_ = false;
   return out;
@@ -89,9 +103,32 @@ Decisions HybridStrategy::onQueueLengths(const std::vector<uint64_t>& lengths) {
   std::vector<bool> live(static_cast<size_t>(workerCount));
   for (int w = 0; w < workerCount; ++w) live[static_cast<size_t>(w)] = workers().isLive(w);
 
+  std::vector<Transfer> transfers;
+  if (speedWeighted_) {
+    uint64_t total = 0;
+    std::vector<double> liveSpeeds;
+    for (int w = 0; w < workerCount; ++w) {
+      if (!live[static_cast<size_t>(w)]) continue;
+      total += lengths[static_cast<size_t>(w)];
+      liveSpeeds.push_back(speedIndexSeconds_[static_cast<size_t>(w)]);
+    }
+    std::vector<uint64_t> targets(static_cast<size_t>(workerCount), 0);
+    if (!liveSpeeds.empty()) {
+      const std::vector<double> division = divisionOfLabor(liveSpeeds);
+      size_t i = 0;
+      for (int w = 0; w < workerCount; ++w) {
+        if (live[static_cast<size_t>(w)]) {
+          targets[static_cast<size_t>(w)] = ceilCount(static_cast<double>(total) * division[i++]);
+        }
+      }
+    }
+    transfers = diffusionTransfersTowards(lengths, live, waiting_, targets);
+  } else {
+    transfers = diffusionTransfers(lengths, live, waiting_);
+  }
   Decisions out;
   std::vector<bool> answered(static_cast<size_t>(workerCount), false);
-  for (const Transfer& t : diffusionTransfers(lengths, live, waiting_)) {
+  for (const Transfer& t : transfers) {
     answered[static_cast<size_t>(t.to)] = true;
     out.push_back(t);
   }

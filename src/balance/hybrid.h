@@ -10,6 +10,11 @@
 // more than ceil(average), so tiny queues end the diffusion instead of looping. Requests
 // that arrive while a query is outstanding wait for that query's answer.
 //
+// Speed-weighted ("hybrid-weighted", the paper's recommendation of its speed-index bias for
+// other techniques): the start is the speed-weighted scatter (weighted_scatter.h) and each
+// diffusion round balances towards shares proportional to the live workers' division of
+// labour instead of the plain average: worker w's target is ceil(total * div_w).
+//
 // Lost workers: their tasks are assigned at once to the live workers (see StaticStrategy)
 // and they are left out of averages and transfers. Not thread-safe.
 
@@ -29,18 +34,28 @@ std::vector<Transfer> diffusionTransfers(const std::vector<uint64_t>& lengths,
                                          const std::vector<bool>& live,
                                          const std::vector<bool>& waiting);
 
+// The same towards per-worker targets (the queue length each should hold; lost workers'
+// are ignored): senders hold more than their target, receivers less.
+std::vector<Transfer> diffusionTransfersTowards(const std::vector<uint64_t>& lengths,
+                                                const std::vector<bool>& live,
+                                                const std::vector<bool>& waiting,
+                                                const std::vector<uint64_t>& targets);
+
 class HybridStrategy final : public StaticStrategy {
  public:
-  std::string name() const override { return "hybrid"; }
+  explicit HybridStrategy(bool speedWeighted = false) : speedWeighted_(speedWeighted) {}
+  std::string name() const override { return speedWeighted_ ? "hybrid-weighted" : "hybrid"; }
   Decisions start(const StartInfo& info) override;
   Decisions onRequest(int worker) override;
   Decisions onQueueLengths(const std::vector<uint64_t>& lengths) override;
   Decisions onWorkerLost(int worker, const TaskSet& unfinished) override;
 
  protected:
-  std::vector<TaskSet> shares(uint64_t taskCount, int workerCount) const override;
+  std::vector<TaskSet> shares(const StartInfo& info) const override;
 
  private:
+  bool speedWeighted_;
+  std::vector<double> speedIndexSeconds_;
   std::vector<bool> waiting_;  // asked for more, not answered yet
   bool queryOutstanding_ = false;
 };

@@ -12,7 +12,13 @@ Decisions PooledStrategy::start(const StartInfo& info) {
   const int workerCount = static_cast<int>(info.speedIndexSeconds.size());
   pool_ = initialPool(info);
   workers_.reset(workerCount);
+  throughput_.reset(workerCount);
   idle_.assign(static_cast<size_t>(workerCount), false);
+  waiting_.assign(static_cast<size_t>(workerCount), false);
+  waitingCount_ = 0;
+  inbound_.assign(static_cast<size_t>(workerCount), false);
+  taskCount_ = info.taskCount;
+  returnedCount_ = 0;
   speedIndexSeconds_ = info.speedIndexSeconds;
   prepare(info);
 
@@ -26,8 +32,15 @@ Decisions PooledStrategy::start(const StartInfo& info) {
 
 Decisions PooledStrategy::onRequest(int worker) {
   if (!workers_.isLive(worker)) return {NoMoreWork{worker}};
+  throughput_.chunkDone(worker);
+  inbound_[static_cast<size_t>(worker)] = false;
   if (pool_.empty()) {
+    if (std::optional<Decision> transfer = steal(worker)) return {*transfer};
     idle_[static_cast<size_t>(worker)] = true;
+    if (waitsForSteals() && returnedCount_ < taskCount_) {
+      setWaiting(worker, true);
+      return {};
+    }
     return {NoMoreWork{worker}};
   }
   return {give(worker, handOutSize(worker))};
@@ -35,6 +48,10 @@ Decisions PooledStrategy::onRequest(int worker) {
 
 Decisions PooledStrategy::onWorkerLost(int worker, const TaskSet& unfinished) {
   workers_.markLost(worker);
+  if (worker >= 0 && worker < workers_.workerCount()) {
+    throughput_.lost(worker);
+    setWaiting(worker, false);
+  }
   TaskSet pool = unfinished;
   pool.append(pool_);
   pool_ = std::move(pool);
@@ -47,6 +64,56 @@ Decisions PooledStrategy::onWorkerLost(int worker, const TaskSet& unfinished) {
     if (idle_[static_cast<size_t>(w)]) out.push_back(give(w, handOutSize(w)));
   }
   return out;
+}
+
+Decisions PooledStrategy::onResults(int worker, const TaskSet& tasks, double computeSeconds) {
+  if (!workers_.isLive(worker)) return {};
+  throughput_.returned(worker, tasks.size(), computeSeconds);
+  returnedCount_ += tasks.size();
+  inbound_[static_cast<size_t>(worker)] = false;
+  Decisions out;
+  if (waitingCount_ == 0) return out;
+  if (returnedCount_ >= taskCount_) {  // all back: nothing will ever be worth stealing
+    for (int w : workers_.liveList()) {
+      if (waiting_[static_cast<size_t>(w)]) out.push_back(NoMoreWork{w});
+    }
+    waiting_.assign(waiting_.size(), false);
+    waitingCount_ = 0;
+    return out;
+  }
+  // The fastest waiting worker first; once one finds nothing worth taking, the slower ones
+  // would not either (a steal's size grows with the thief's rate), so stop there.
+  std::vector<int> thieves;
+  for (int w : workers_.liveList()) {
+    if (waiting_[static_cast<size_t>(w)]) thieves.push_back(w);
+  }
+  std::stable_sort(thieves.begin(), thieves.end(), [&](int a, int b) {
+    return throughput_.rate(a) > throughput_.rate(b);
+  });
+  for (int w : thieves) {
+    std::optional<Decision> transfer = steal(w);
+    if (!transfer) break;
+    out.push_back(*transfer);
+  }
+  return out;
+}
+
+std::optional<Decision> PooledStrategy::steal(int worker) {
+  std::optional<Transfer> transfer = stealFor(worker);
+  if (!transfer) return std::nullopt;
+  PRT_CHECK(transfer->to == worker && transfer->from != worker &&
+            workers_.isLive(transfer->from) && transfer->count >= 1);
+  throughput_.moved(transfer->from, worker, transfer->count);
+  idle_[static_cast<size_t>(worker)] = false;
+  setWaiting(worker, false);
+  inbound_[static_cast<size_t>(worker)] = true;
+  return Decision{*transfer};
+}
+
+void PooledStrategy::setWaiting(int worker, bool waiting) {
+  const auto w = static_cast<size_t>(worker);
+  if (waiting_[w] != waiting) waitingCount_ += waiting ? 1 : -1;
+  waiting_[w] = waiting;
 }
 
 std::vector<double> PooledStrategy::liveDivisionOfLabor() const {
@@ -67,6 +134,8 @@ Decision PooledStrategy::give(int worker, uint64_t count) {
   PRT_CHECK(workers_.isLive(worker) && !pool_.empty());
   count = std::clamp<uint64_t>(count, 1, pool_.size());
   idle_[static_cast<size_t>(worker)] = false;
+  setWaiting(worker, false);
+  throughput_.given(worker, count);
   return Assign{worker, pool_.takeFront(count)};
 }
 

@@ -4,16 +4,27 @@
 // worker order from the front of the pool, and every request takes the next tasks from the
 // front. Subclasses only say how many tasks each hand-out holds.
 //
+// Once the pool is empty, a request is answered by stealFor(): a subclass may have the
+// requester take tasks from a peer's queue (a Transfer). Otherwise it gets NoMoreWork, or,
+// where waitsForSteals(), it waits: every later result makes the strategy look again for a
+// queue worth robbing, and once every task has come back the waiting get NoMoreWork. (A
+// worker told NoMoreWork never asks again, so a strategy that steals would otherwise lose
+// the fast workers that ran dry a moment too early.)
+// Every strategy built on the pool also follows what each worker holds and how fast it
+// returns results (throughput.h), from its own hand-outs and onResults().
+//
 // Lost workers: their unfinished tasks go back to the FRONT of the pool (so they go out
 // first) and every live worker that was told NoMoreWork, and so would never ask again, is
 // served at once as if it had just asked. A request from a lost worker gets NoMoreWork.
 // Not thread-safe.
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "balance/strategy.h"
 #include "balance/task_split.h"
+#include "balance/throughput.h"
 
 namespace prt {
 
@@ -22,6 +33,7 @@ class PooledStrategy : public Strategy {
   Decisions start(const StartInfo& info) final;
   Decisions onRequest(int worker) final;
   Decisions onWorkerLost(int worker, const TaskSet& unfinished) final;
+  Decisions onResults(int worker, const TaskSet& tasks, double computeSeconds) final;
 
  protected:
   // The order in which tasks sit in the pool; hand-outs take its front. Called first by
@@ -38,18 +50,37 @@ class PooledStrategy : public Strategy {
   virtual uint64_t handOutSize(int worker) = 0;
   // Called after a worker is marked lost and its tasks are back in the pool.
   virtual void onLiveWorkersChanged() {}
+  // The pool is empty and live `worker` asks: a Transfer of tasks from a live peer's queue to
+  // it, with count >= 1, or nothing (NoMoreWork). Defaults to nothing.
+  virtual std::optional<Transfer> stealFor(int /*worker*/) { return std::nullopt; }
+  // True: a request that finds nothing to steal waits instead of getting NoMoreWork.
+  virtual bool waitsForSteals() const { return false; }
 
   uint64_t remaining() const { return pool_.size(); }
   const LiveWorkers& workers() const { return workers_; }
+  const Throughput& throughput() const { return throughput_; }
+  // True while tasks stolen for `worker` may still be on their way to it: its count includes
+  // them, but its queue may not, so it is no victim yet.
+  bool awaitingSteal(int worker) const { return inbound_[static_cast<size_t>(worker)]; }
   // The reservoir's division of labour over the live workers; 0 for lost workers.
   std::vector<double> liveDivisionOfLabor() const;
 
  private:
   Decision give(int worker, uint64_t count);
+  // A Transfer for waiting or requesting `worker` from stealFor(), recorded; or nothing.
+  std::optional<Decision> steal(int worker);
 
   TaskSet pool_;
   LiveWorkers workers_;
-  std::vector<bool> idle_;  // told NoMoreWork and given nothing since
+  Throughput throughput_;
+  std::vector<bool> idle_;     // told NoMoreWork, or waiting, and given nothing since
+  void setWaiting(int worker, bool waiting);
+
+  std::vector<bool> waiting_;  // asked and not answered yet
+  int waitingCount_ = 0;
+  std::vector<bool> inbound_;  // a steal for it is on its way (until its next result or request)
+  uint64_t taskCount_ = 0;
+  uint64_t returnedCount_ = 0;  // tasks returned by live workers
   std::vector<double> speedIndexSeconds_;
 };
 

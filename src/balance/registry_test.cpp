@@ -10,8 +10,10 @@ namespace {
 
 TEST(StrategyRegistryTest, EveryNameMakesThatStrategy) {
   const std::vector<std::string> names = strategyNames();
-  EXPECT_EQ(names, (std::vector<std::string>{"scatter", "hybrid", "reservoir", "reservoir-scatter",
-                                             "blocks", "self", "guided", "factoring"}));
+  EXPECT_EQ(names, (std::vector<std::string>{"scatter", "scatter-weighted", "hybrid",
+                                             "hybrid-weighted", "reservoir", "reservoir-scatter",
+                                             "adaptive", "blocks", "self", "guided", "factoring",
+                                             "awf-b", "awf-c", "af", "stealing"}));
   for (const std::string& name : names) EXPECT_EQ(makeStrategy(name, {})->name(), name);
 }
 
@@ -36,6 +38,17 @@ TEST(StrategyRegistryTest, InvalidOptionsAreRejected) {
   EXPECT_THROW(makeStrategy("scatter", {.chunk = 0}), InputError);  // bad whatever the user
   EXPECT_NO_THROW(makeStrategy("reservoir", {.initialPercent = 100}));
   EXPECT_NO_THROW(makeStrategy("self", {.chunk = 1}));
+  EXPECT_THROW(makeStrategy("adaptive", {.minChunk = 0}), InputError);
+  EXPECT_THROW(makeStrategy("adaptive", {.firstPercent = 0}), InputError);
+  EXPECT_THROW(makeStrategy("adaptive", {.reservePercent = 100}), InputError);
+  EXPECT_NO_THROW(makeStrategy("adaptive", {.reservePercent = 0}));
+  try {
+    makeStrategy("adaptive", {.reservePercent = 100});
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("--reserve-percent 100 is out of range; it must be in [0, 100)"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 TEST(StrategyRegistryTest, OptionsReachTheStrategy) {

@@ -19,8 +19,8 @@ class ScatterStrategy final : public StaticStrategy {
   std::string name() const override { return "scatter"; }
 
  protected:
-  std::vector<TaskSet> shares(uint64_t taskCount, int workerCount) const override {
-    return scatterShares(taskCount, workerCount);
+  std::vector<TaskSet> shares(const StartInfo& info) const override {
+    return scatterShares(info.taskCount, static_cast<int>(info.speedIndexSeconds.size()));
   }
 };
 

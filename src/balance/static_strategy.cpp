@@ -8,7 +8,7 @@ Decisions StaticStrategy::start(const StartInfo& info) {
   validateStartInfo(info);
   const int workerCount = static_cast<int>(info.speedIndexSeconds.size());
   workers_.reset(workerCount);
-  std::vector<TaskSet> split = shares(info.taskCount, workerCount);
+  std::vector<TaskSet> split = shares(info);
   PRT_CHECK(split.size() == static_cast<size_t>(workerCount));
   Decisions out;
   for (int w = 0; w < workerCount; ++w) {

@@ -20,8 +20,8 @@ class StaticStrategy : public Strategy {
   Decisions onWorkerLost(int worker, const TaskSet& unfinished) override;
 
  protected:
-  // Every task, split over the workers: element w goes to worker w.
-  virtual std::vector<TaskSet> shares(uint64_t taskCount, int workerCount) const = 0;
+  // Every task, split over the workers (one per speed index): element w goes to worker w.
+  virtual std::vector<TaskSet> shares(const StartInfo& info) const = 0;
   const LiveWorkers& workers() const { return workers_; }
 
  private:

@@ -6,4 +6,9 @@ Decisions Strategy::onQueueLengths(const std::vector<uint64_t>& /*lengths*/) {
   return {};
 }
 
+Decisions Strategy::onResults(int /*worker*/, const TaskSet& /*tasks*/,
+                              double /*computeSeconds*/) {
+  return {};
+}
+
 }  // namespace prt

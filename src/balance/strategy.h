@@ -49,9 +49,15 @@ struct Transfer {
 using Decision = std::variant<Assign, NoMoreWork, QueryQueues, Transfer>;
 using Decisions = std::vector<Decision>;
 
+// The strategies' parameters. Which strategy reads which field, its range and its help text
+// are declared by the strategy's registry row (registry.h); the defaults are these.
 struct StrategyOptions {
   double initialPercent = 80;  // reservoir: share of tasks handed out at the start, (0, 100]
   uint64_t chunk = 64;         // self: tasks per hand-out, >= 1
+  uint64_t minChunk = 8;       // AWF, AF, stealing, adaptive: the smallest hand-out, >= 1
+  double firstPercent = 10;    // adaptive: share of the image handed out at the start, (0, 100]
+  double reservePercent = 50;  // adaptive: share of the expected remaining time each hand-out
+                               // leaves in the reserve, [0, 100)
 };
 
 struct StartInfo {
@@ -69,29 +75,39 @@ class Strategy {
   virtual Decisions start(const StartInfo& info) = 0;
 
   // `worker` has an empty queue and asks for more. The answer must contain, for this worker,
-  // an Assign, a NoMoreWork, or (diffusion) a QueryQueues whose outcome answers it later.
+  // an Assign, a NoMoreWork, or (diffusion) a QueryQueues whose outcome answers it later; or
+  // nothing, if the strategy answers it later from onResults() (a thief waiting for a queue
+  // worth robbing), and by NoMoreWork at the latest once every task has come back.
   virtual Decisions onRequest(int worker) = 0;
 
   // Answers to the last QueryQueues: lengths[w] is worker w's queue length (0 for lost
   // workers). Only strategies that emit QueryQueues receive this; the default ignores it.
   virtual Decisions onQueueLengths(const std::vector<uint64_t>& lengths);
 
+  // `worker` returned `tasks`, which took it `computeSeconds` to render (measured by the
+  // worker, so the strategy never reads a clock; 0 when unmeasured). Adaptive strategies
+  // learn speeds from it, and may answer requests they left waiting; the default ignores it
+  // and returns nothing. Called for every batch of results, before the request that may
+  // follow it from the same worker.
+  virtual Decisions onResults(int worker, const TaskSet& tasks, double computeSeconds);
+
   // `worker` is gone; `unfinished` are the tasks it held and had not returned. The strategy
   // must see that they are rendered by live workers, and never give `worker` anything again
   // (a later request from it is answered with NoMoreWork). Two policies exist:
-  //  - dynamic strategies (PooledStrategy: reservoir, self, guided, factoring) put the tasks
-  //    back at the front of their pool, so they go out first, and at once serve the live
-  //    workers that were told NoMoreWork and would otherwise never ask again;
-  //  - static ones (StaticStrategy: scatter, blocks; and hybrid) assign them at once to the
-  //    live workers, split evenly into contiguous pieces.
+  //  - dynamic and adaptive strategies (PooledStrategy: reservoir, adaptive, self, guided,
+  //    factoring, AWF, AF, stealing) put the tasks back at the front of their pool, so they
+  //    go out first, and at once serve the live workers that were told NoMoreWork (or left
+  //    waiting) and would otherwise never ask again;
+  //  - static ones (StaticStrategy: scatter, scatter-weighted, blocks; and both hybrids)
+  //    assign them at once to the live workers, split evenly into contiguous pieces.
   // It may be called again for a worker already lost, with tasks that reached it afterwards
   // (a transfer in flight); they are treated the same way. When no worker is left alive it
   // returns nothing: the master reports the failure.
   virtual Decisions onWorkerLost(int worker, const TaskSet& unfinished) = 0;
 };
 
-// Creates a strategy by name; an unknown name or an invalid option (initialPercent outside
-// (0, 100], chunk 0) throws InputError listing the valid names or the valid range.
+// Creates a strategy by name (registry.h lists the rows); an unknown name or an option outside
+// its declared range throws InputError listing the valid names or the valid range.
 std::unique_ptr<Strategy> makeStrategy(const std::string& name, const StrategyOptions& options);
 std::vector<std::string> strategyNames();  // in the order the help text lists them
 

@@ -23,7 +23,8 @@ struct Variant {
 
 void PrintTo(const Variant& v, std::ostream* os) {
   *os << v.name << " (initialPercent " << v.options.initialPercent << ", chunk " << v.options.chunk
-      << ")";
+      << ", minChunk " << v.options.minChunk << ", firstPercent " << v.options.firstPercent
+      << ", reservePercent " << v.options.reservePercent << ")";
 }
 
 std::string variantLabel(const ::testing::TestParamInfo<Variant>& info) {
@@ -34,6 +35,10 @@ std::string variantLabel(const ::testing::TestParamInfo<Variant>& info) {
   } else if (info.param.name == "self") {
     label += "Chunk";
     label += std::to_string(info.param.options.chunk);
+  } else if (info.param.options.minChunk != StrategyOptions{}.minChunk) {
+    label += "Min" + std::to_string(info.param.options.minChunk) + "First" +
+             std::to_string(static_cast<int>(info.param.options.firstPercent)) + "Reserve" +
+             std::to_string(static_cast<int>(info.param.options.reservePercent));
   }
   for (char& c : label) {
     if (c == '-') c = '_';  // test names allow only letters, digits and '_'
@@ -48,6 +53,10 @@ std::vector<Variant> allVariants() {
   out.push_back({"reservoir", StrategyOptions{.initialPercent = 5}});
   out.push_back({"self", StrategyOptions{.chunk = 1}});
   out.push_back({"self", StrategyOptions{.chunk = 5000}});
+  out.push_back({"adaptive", StrategyOptions{.minChunk = 1, .firstPercent = 100, .reservePercent = 0}});
+  out.push_back({"adaptive", StrategyOptions{.minChunk = 1, .firstPercent = 1, .reservePercent = 90}});
+  out.push_back({"stealing", StrategyOptions{.minChunk = 1}});
+  out.push_back({"af", StrategyOptions{.minChunk = 1}});
   return out;
 }
 

@@ -83,25 +83,22 @@ void addParallelOptions(CLI::App& cmd, RenderOptions& o) {
                  "(local driver); not under mpirun")
       ->check(CLI::Range(1, 4096))
       ->group(parallel);
-  std::string names;
-  for (const auto& n : strategyNames()) names += (names.empty() ? "" : ", ") + n;
-  cmd.add_option("--strategy", o.strategy, "Load balancing: " + names + " (default reservoir)")
-      ->group(parallel);
-  cmd.add_option("--initial-percent", o.initialPercent,
-                 "Reservoir: percentage of the tasks handed out at the start, in (0, 100]")
-      ->capture_default_str()
-      ->group(parallel);
-  cmd.add_option("--chunk", o.chunk, "Self-scheduling: tasks per hand-out")
-      ->capture_default_str()
-      ->group(parallel);
+  addStrategyFlags(cmd, o.strategyFlags, parallel);
   cmd.add_option("--slowdown", o.slowdowns,
                  "Comma-separated factors k_i >= 1, one per worker: worker i runs k_i times "
                  "slower (faithful while the sum of 1/k_i fits the free cores)")
       ->delimiter(',')
       ->group(parallel);
+  cmd.add_option("--slowdown-at", o.slowdownAt,
+                 "Speeds that change mid-render: W:T:K,... makes worker W run K times slower "
+                 "(K >= 1, instead of its --slowdown) from T seconds after its start")
+      ->group(parallel);
   cmd.add_option("--speed-index", o.speedIndex,
-                 "Speed index the workers measure: hanoi (the paper's Towers of Hanoi run) or "
-                 "probe (rendering a fixed sample of the image's pixels)")
+                 "Speed index the workers measure: hanoi (the paper's Towers of Hanoi run), "
+                 "probe (rendering a fixed sample of the image's pixels), none (start at once; "
+                 "MASU and ASU then come from measured throughput), slowdown (an oracle: each "
+                 "worker reports its --slowdown factor, its true emulated speed) or auto (none "
+                 "for the adaptive strategies, hanoi for the rest)")
       ->capture_default_str()
       ->group(parallel);
   cmd.add_option("--batch", o.batchPixels, "Pixels a worker renders between returning results")
@@ -171,11 +168,16 @@ bool launchedByMpirun() {
 ParallelOptions toParallelOptions(const RenderOptions& o, int workers) {
   ParallelOptions p;
   p.workers = workers;
-  p.strategy = o.strategy.value_or("reservoir");
-  p.strategyOptions.initialPercent = o.initialPercent;
-  p.strategyOptions.chunk = o.chunk;
+  p.strategy = o.strategyFlags.name();
+  p.strategyOptions = strategyOptionsFrom(o.strategyFlags);
   p.slowdowns = o.slowdowns;
-  p.speedIndexKind = parseSpeedIndexKind(o.speedIndex);
+  if (!o.slowdownAt.empty()) {
+    p.slowdownChanges = parseSpeedChanges(o.slowdownAt, "--slowdown-at", workers, 1);
+  }
+  const bool automatic = o.speedIndex == "auto";
+  p.speedIndexKind =
+      automatic ? (runsSpeedIndexByDefault(p.strategy) ? SpeedIndexKind::Hanoi : SpeedIndexKind::None)
+                : parseSpeedIndexKind(o.speedIndex);
   p.batchPixels = o.batchPixels;
   p.threads = o.threads;
   p.workerTimeoutSeconds = o.workerTimeoutSeconds;

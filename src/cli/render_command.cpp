@@ -104,7 +104,7 @@ int renderSerial(const RenderOptions& o, const Scene& scene, const RenderSetting
 int runRender(const RenderOptions& o) {
   checkHtmlPath(o.htmlPath);
   const bool mpi = launchedByMpirun();
-  if ((mpi || o.workers || o.strategy) && !o.costMapPath.empty()) {
+  if ((mpi || o.workers || o.strategyFlags.strategy) && !o.costMapPath.empty()) {
     throw InputError("--cost-map records a serial render; drop --workers and --strategy (and "
                      "run without mpirun)");
   }
@@ -124,7 +124,7 @@ int runRender(const RenderOptions& o) {
   // --- end MPI hook
   Scene scene = loadSceneFile(o.scenePath);
   const RenderSettings settings = resolveSettings(o, scene);
-  const bool parallel = o.workers || o.strategy;
+  const bool parallel = o.workers || o.strategyFlags.strategy;
   for (const bool parallelOnly : {!o.reportPath.empty(), !o.tracePath.empty(),
                                   !o.ownershipPath.empty(), !o.htmlPath.empty(),
                                   !o.slowdowns.empty(), !o.faults.empty()}) {

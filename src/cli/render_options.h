@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "cli/strategy_flags.h"
+
 namespace prt::cli {
 
 struct RenderOptions {
@@ -21,11 +23,10 @@ struct RenderOptions {
 
   // Parallel rendering.
   std::optional<int> workers;              // local driver: worker threads
-  std::optional<std::string> strategy;     // load balancing; default reservoir
-  double initialPercent = 80;              // reservoir: share handed out at the start
-  unsigned long long chunk = 64;           // self-scheduling chunk
+  StrategyFlags strategyFlags;             // --strategy and the strategies' options
   std::vector<double> slowdowns;           // per worker, >= 1
-  std::string speedIndex = "hanoi";        // what workers measure: hanoi | probe
+  std::string slowdownAt;                  // --slowdown-at W:T:K,...
+  std::string speedIndex = "auto";         // what workers measure: auto | hanoi | probe | none
   unsigned long long batchPixels = 128;    // pixels per returned batch
   double workerTimeoutSeconds = 5;         // the lease: silence before a worker is lost
   std::string endgame = "off";             // on | off: copies of the last tasks

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "cli/strategy_flags.h"
 #include "core/input_error.h"
 #include "core/machine.h"
 #include "image/atomic_file.h"
@@ -112,11 +113,8 @@ void writeRenderReportAndPage(const RenderOptions& o, const Scene& scene, const 
   context.scene = o.scenePath;
   context.machine = describeMachine();
   context.dateUtc = utcNow();
-  const std::string strategy = o.strategy.value_or("reservoir");
-  StrategyOptions strategyOptions;
-  strategyOptions.initialPercent = o.initialPercent;
-  strategyOptions.chunk = o.chunk;
-  context.parameters = strategyParameters(strategy, strategyOptions);
+  context.parameters =
+      strategyParameters(o.strategyFlags.name(), strategyOptionsFrom(o.strategyFlags));
   context.parameters.emplace_back("batch_pixels", std::to_string(o.batchPixels));
   context.parameters.emplace_back("speed_index", o.speedIndex);
   std::string slowdowns;

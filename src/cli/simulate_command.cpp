@@ -12,6 +12,8 @@
 #include "cli/commands.h"
 #include "cli/run_page_output.h"
 #include "cli/flag_checks.h"
+#include "cli/strategy_flags.h"
+#include "core/speed_schedule.h"
 #include "core/input_error.h"
 #include "core/machine.h"
 #include "image/atomic_file.h"
@@ -28,9 +30,9 @@ struct SimulateOptions {
   int workers = 4;
   std::optional<int> width;   // default: the cost map's, or 640 for the synthetic one
   std::optional<int> height;  // default: the cost map's, or 480
-  std::string strategy = "reservoir";
-  double initialPercent = 80;           // reservoir
-  unsigned long long chunk = 64;        // self-scheduling
+  StrategyFlags strategyFlags;          // --strategy and the strategies' options
+  std::string speedIndexRun = "auto";   // on | off | auto (off for the adaptive strategies)
+  std::string speedAt;                  // --speed-at W:T:SPEED,...
   std::vector<double> speeds;           // per worker; empty: see slowShare, lognormal, else all 1
   std::optional<double> slowShare;      // fraction of the workers that are slow
   double slowFactor = 4;                // how many times slower they are
@@ -94,10 +96,17 @@ std::vector<double> workerSpeeds(const SimulateOptions& o) {
 
 int runSimulate(const SimulateOptions& o) {
   SimulationOptions options;
-  options.strategy = o.strategy;
-  options.strategyOptions.initialPercent = o.initialPercent;
-  options.strategyOptions.chunk = o.chunk;
+  options.strategy = o.strategyFlags.name();
+  options.strategyOptions = strategyOptionsFrom(o.strategyFlags);
   options.speeds = workerSpeeds(o);
+  if (!o.speedAt.empty()) {
+    options.speedChanges = parseSpeedChanges(o.speedAt, "--speed-at", o.workers, 0);
+  }
+  if (o.speedIndexRun != "auto" && o.speedIndexRun != "on" && o.speedIndexRun != "off") {
+    throw InputError("--speed-index-run '" + o.speedIndexRun + "': expected on, off or auto");
+  }
+  options.speedIndexRun = o.speedIndexRun == "auto" ? runsSpeedIndexByDefault(options.strategy)
+                                                    : o.speedIndexRun == "on";
   options.batchPixels = o.batchPixels;
   options.batchOverheadSeconds = o.batchOverheadMicroseconds * 1e-6;
   options.baseSpeedIndexSeconds = o.speedIndexSeconds;
@@ -174,14 +183,13 @@ Action addSimulateCommand(CLI::App& app, const std::string& commandLine) {
   cmd->add_option("--height", o->height,
                   "Image height (synthetic map: default 480; with --cost-map: must match)")
       ->check(CLI::Range(1, 32768));
-  std::string names;
-  for (const auto& n : strategyNames()) names += (names.empty() ? "" : ", ") + n;
-  cmd->add_option("--strategy", o->strategy, "Load balancing: " + names)->capture_default_str();
-  cmd->add_option("--initial-percent", o->initialPercent,
-                  "Reservoir: percentage of the tasks handed out at the start, in (0, 100]")
-      ->capture_default_str();
-  cmd->add_option("--chunk", o->chunk, "Self-scheduling: tasks per hand-out")
-      ->capture_default_str();
+  addStrategyFlags(*cmd, o->strategyFlags, "Strategy");
+  cmd->add_option("--speed-index-run", o->speedIndexRun,
+                  "Whether the workers run a speed index first: on, off (they start at once; "
+                  "MASU and ASU then come from measured throughput) or auto (off for the "
+                  "adaptive strategies)")
+      ->capture_default_str()
+      ->group("Strategy");
 
   const std::string speeds = "Worker speeds (default: all 1)";
   cmd->add_option("--speeds", o->speeds,
@@ -200,6 +208,10 @@ Action addSimulateCommand(CLI::App& app, const std::string& commandLine) {
       ->group(speeds);
   cmd->add_option("--lognormal", o->lognormal,
                   "Log-normal speeds exp(SIGMA * z), median 1, drawn with --seed")
+      ->group(speeds);
+  cmd->add_option("--speed-at", o->speedAt,
+                  "Speeds that change mid-run: W:T:SPEED,... makes worker W run at relative "
+                  "speed SPEED (> 0) from T virtual seconds on")
       ->group(speeds);
   cmd->add_option("--seed", o->seed, "Seed for --slow-share and --lognormal")
       ->capture_default_str()

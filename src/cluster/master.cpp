@@ -166,6 +166,11 @@ Outbox Master::onMessage(int from, const Message& message, double now) {
     // Results count from anyone, lost or not: the first copy of a pixel wins.
     PRT_CHECK(r->rgb.size() == 3 * r->tasks.size() || r->rgb.empty());  // empty: simulated
     const TaskSet fresh = ledger_.accept(from, r->tasks);
+    // Adaptive strategies learn the worker's rate from every batch it rendered, copies
+    // included (it spent the time on them); a lost worker's batches teach nothing useful.
+    if (started_ && !stopped_ && isLive(from)) {
+      apply(strategy_->onResults(from, map_.toTasks(r->tasks), r->computeSeconds), out);
+    }
     if (fresh.empty()) {
       // Every pixel a duplicate: dropped.
     } else if (fresh.size() == r->tasks.size()) {

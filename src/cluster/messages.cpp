@@ -64,6 +64,7 @@ Bytes encode(const Message& message) {
           writeTasks(w, m.tasks);
           w.pod(static_cast<uint64_t>(m.rgb.size()));
           w.raw(m.rgb.data(), m.rgb.size() * sizeof(float));
+          w.pod(m.computeSeconds);
         } else if constexpr (std::is_same_v<M, QueueLengthMsg>) {
           w.pod(m.length);
         } else if constexpr (std::is_same_v<M, TransferOrderMsg>) {
@@ -107,6 +108,7 @@ Message decode(const uint8_t* data, size_t size) {
       r.needItems(n, sizeof(float));
       res.rgb.resize(n);
       r.raw(res.rgb.data(), n * sizeof(float));
+      res.computeSeconds = r.pod<double>();
       if (res.rgb.size() != 3 * res.tasks.size()) {
         throw std::runtime_error("malformed message: results size mismatch");
       }

@@ -44,6 +44,7 @@ struct ResultsMsg {
   TaskSet tasks;
   std::vector<float> rgb;  // 3 floats per task, in task order, linear RGB; empty only in the
                            // simulator, which renders no colours (never on a real transport)
+  double computeSeconds = 0;  // the worker's measured time rendering them (0: unmeasured)
   bool operator==(const ResultsMsg&) const = default;
 };
 struct RequestMsg {

@@ -15,7 +15,7 @@ TEST(MessagesTest, EveryTypeRoundTrips) {
       SceneMsg{"camera { }\n", 8, 2},
       SpeedIndexMsg{0.123456789},
       TasksMsg{tasks},
-      ResultsMsg{TaskSet::range(3, 2), {0.1f, 0.2f, 0.3f, 1.5f, 2.5f, -0.0f}},
+      ResultsMsg{TaskSet::range(3, 2), {0.1f, 0.2f, 0.3f, 1.5f, 2.5f, -0.0f}, 0.125},
       RequestMsg{},
       QueryQueueMsg{},
       QueueLengthMsg{1ull << 40},

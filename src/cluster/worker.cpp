@@ -19,14 +19,16 @@ TaskSet Worker::nextBatch() {
   return queue_.takeFront(options_.batchPixels);
 }
 
-Outbox Worker::batchDone(const TaskSet& batch, std::vector<float> rgb) {
+Outbox Worker::batchDone(const TaskSet& batch, std::vector<float> rgb, double computeSeconds) {
   PRT_CHECK(rgb.size() == 3 * batch.size());
-  return finishBatch(batch, std::move(rgb));
+  return finishBatch(batch, std::move(rgb), computeSeconds);
 }
 
-Outbox Worker::finishBatch(const TaskSet& batch, std::vector<float> rgb) {
+Outbox Worker::finishBatch(const TaskSet& batch, std::vector<float> rgb, double computeSeconds) {
   Outbox out;
-  if (!batch.empty()) out.push_back({kMaster, ResultsMsg{batch, std::move(rgb)}});
+  if (!batch.empty()) {
+    out.push_back({kMaster, ResultsMsg{batch, std::move(rgb), computeSeconds}});
+  }
   requestIfIdle(out);
   return out;
 }

@@ -32,10 +32,13 @@ class Worker {
   // Rendering: take the next batch off the front of the queue, render it, hand it back.
   bool hasWork() const { return setUp_ && !queue_.empty() && !stopped_; }
   TaskSet nextBatch();
-  Outbox batchDone(const TaskSet& batch, std::vector<float> rgb);
+  // computeSeconds: the measured time the batch took, for adaptive strategies (0: unmeasured).
+  Outbox batchDone(const TaskSet& batch, std::vector<float> rgb, double computeSeconds = 0);
   // The simulator renders nothing: it returns the batch's results without colours (an empty
   // ResultsMsg::rgb) and counts the bytes they would take. Otherwise the same as above.
-  Outbox batchDone(const TaskSet& batch) { return finishBatch(batch, {}); }
+  Outbox batchDone(const TaskSet& batch, double computeSeconds = 0) {
+    return finishBatch(batch, {}, computeSeconds);
+  }
 
   bool stopped() const { return stopped_; }
   uint64_t queueLength() const { return queue_.size(); }
@@ -43,7 +46,7 @@ class Worker {
 
  private:
   void requestIfIdle(Outbox& out);
-  Outbox finishBatch(const TaskSet& batch, std::vector<float> rgb);
+  Outbox finishBatch(const TaskSet& batch, std::vector<float> rgb, double computeSeconds);
 
   int id_;
   WorkerOptions options_;

@@ -96,6 +96,7 @@ ParallelRun runMasterSide(Transport& net, const RunRequest& request, const std::
   info.masterSpeedIndexSeconds = request.masterSpeedIndexSeconds;
   info.workerSpeedIndexSeconds = master.speedIndices();
   info.serialSeconds = request.serialSeconds;
+  info.speedIndexRun = options.speedIndexKind != SpeedIndexKind::None;
   const std::vector<Event> masterEvents = run.events;
   for (int w = 0; w < n; ++w) {
     info.slowdowns.push_back(options.slowdownOf(w));
@@ -136,7 +137,7 @@ WorkerExit runWorkerSide(Transport& net, int id, const ParallelOptions& options,
                          const WorkerFaultActions& faults) {
   const int threads = options.threads > 0 ? options.threads : affinityCpuCount();
   WorkerEngine engine(options.slowdownOf(id), options.speedIndexKind, options.speedIndexDiscs,
-                      threads);
+                      options.slowdownChangesOf(id), threads);
   WorkerLoopOptions loop;
   loop.batchPixels = options.batchPixels;
   loop.heartbeatSeconds = heartbeatSecondsFor(options.workerTimeoutSeconds);

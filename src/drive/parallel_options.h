@@ -5,8 +5,9 @@
 #include <string>
 #include <vector>
 
-#include "balance/strategy.h"
+#include "balance/registry.h"
 #include "core/speed_index.h"
+#include "core/speed_schedule.h"
 #include "drive/speed_index_kind.h"
 
 namespace prt {
@@ -21,9 +22,10 @@ struct FaultInjection {
 
 struct ParallelOptions {
   int workers = 4;                     // local driver: worker threads; MPI: ranks - 1
-  std::string strategy = "reservoir";  // see strategyNames()
+  std::string strategy = kDefaultStrategy;  // see strategyNames()
   StrategyOptions strategyOptions;
   std::vector<double> slowdowns;       // per worker, each >= 1; empty: all 1
+  std::vector<SpeedChange> slowdownChanges;  // --slowdown-at: factors >= 1 from a time on
   uint64_t batchPixels = 128;          // pixels per returned batch of results, per thread
   int threads = 1;                     // rendering threads of each worker; 0: all the CPUs
                                        // its affinity allows (mpirun --bind-to sets it)
@@ -38,6 +40,9 @@ struct ParallelOptions {
 
   double slowdownOf(int worker) const {
     return slowdowns.empty() ? 1.0 : slowdowns[static_cast<size_t>(worker)];
+  }
+  std::vector<SpeedChange> slowdownChangesOf(int worker) const {
+    return changesOf(slowdownChanges, worker);
   }
 };
 

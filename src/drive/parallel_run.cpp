@@ -49,6 +49,14 @@ void validateParallelOptions(const ParallelOptions& o, uint64_t pixelCount) {
                        std::to_string(o.workers - 1));
     }
   }
+  for (const SpeedChange& c : o.slowdownChanges) {
+    if (c.worker < 0 || c.worker >= o.workers || !(c.value >= 1.0) || !(c.atSeconds >= 0)) {
+      throw InputError("--slowdown-at: worker " + std::to_string(c.worker) + " at " +
+                       std::to_string(c.atSeconds) + " s, factor " + std::to_string(c.value) +
+                       ": workers are 0 to " + std::to_string(o.workers - 1) +
+                       ", times >= 0 and factors >= 1");
+    }
+  }
   if (o.batchPixels < 1) throw InputError("--batch must be at least 1");
   if (!(o.workerTimeoutSeconds >= 0.1) || !(o.workerTimeoutSeconds <= 86400)) {
     throw InputError("--worker-timeout must be between 0.1 and 86400 seconds (got " +

@@ -13,13 +13,20 @@ namespace prt {
 enum class SpeedIndexKind {
   Hanoi,        // the paper's: Towers of Hanoi, kSpeedIndexDiscs discs
   RenderProbe,  // render probePixels() of the scene with the run's settings
+  None,         // measure nothing: every worker reports 1 at once (for strategies that
+                // learn speeds as they go; MASU then comes from measured throughput)
+  Slowdown,     // measure nothing: every worker reports its --slowdown factor, its true
+                // emulated speed (an oracle, for the emulation's own ceiling)
 };
 
 namespace speed_index_kind_detail {
 inline constexpr struct {
   const char* name;
   SpeedIndexKind kind;
-} kKinds[] = {{"hanoi", SpeedIndexKind::Hanoi}, {"probe", SpeedIndexKind::RenderProbe}};
+} kKinds[] = {{"hanoi", SpeedIndexKind::Hanoi},
+                 {"probe", SpeedIndexKind::RenderProbe},
+                 {"none", SpeedIndexKind::None},
+                 {"slowdown", SpeedIndexKind::Slowdown}};
 }  // namespace speed_index_kind_detail
 
 inline std::vector<std::string> speedIndexKindNames() {

@@ -40,6 +40,8 @@ double measureProbeSeconds(const Renderer& renderer, int repeats) {
 double serialSpeedIndexSeconds(SpeedIndexKind kind, const Scene& scene,
                                const RenderSettings& settings) {
   constexpr int kRepeats = 5;
+  // The workers' placeholder, or the factor of a machine that is not slowed down.
+  if (kind == SpeedIndexKind::None || kind == SpeedIndexKind::Slowdown) return 1.0;
   if (kind == SpeedIndexKind::Hanoi) {
     return fastestOf(kRepeats, [] { return measureSpeedIndexSeconds(kSpeedIndexDiscs, 1); });
   }

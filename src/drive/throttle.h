@@ -29,16 +29,23 @@
 // once on too few cores does not make them look slower than they are; rendering is timed by
 // the wall clock, since the image really waits for it. Without a slowdown (k = 1) the worker
 // is the machine itself, and its wall time is what it measures, other load included.
+// The slowdown may change mid-run (--slowdown-at): a schedule of changes, in seconds from the
+// throttle's construction (the worker's start), gives the factor in force; each stretch is
+// paced by the factor at its start, so a change takes effect from the next batch.
+//
 // A worker that renders with several threads is paced by the CPU time of all of them
 // (measureParallel): the emulated machine has as many cores, each k times slower.
+//
 // Reads clocks: used by drivers only. One per worker; called from one thread at a time.
 
 #include <algorithm>
 #include <chrono>
 #include <thread>
 #include <utility>
+#include <vector>
 
 #include "core/cpu_time.h"
+#include "core/speed_schedule.h"
 
 namespace prt {
 
@@ -59,8 +66,14 @@ struct Stretch {
 
 class Throttle {
  public:
-  explicit Throttle(double slowdown = 1.0) : slowdown_(slowdown) {}
-  double slowdown() const { return slowdown_; }
+  // `changes`: this worker's, sorted (changesOf()); values are slowdown factors >= 1.
+  explicit Throttle(double slowdown = 1.0, std::vector<SpeedChange> changes = {})
+      : slowdown_(slowdown),
+        changes_(std::move(changes)),
+        epoch_(std::chrono::steady_clock::now()) {}
+  double slowdown() const { return slowdown_; }  // the factor at the start
+  // The factor in force `seconds` after construction.
+  double slowdownAt(double seconds) const { return valueAt(changes_, slowdown_, seconds); }
 
   // Runs fn, then waits until it has lasted k times the CPU time it used (less the lag the
   // previous stretch left, if this one follows it at once).
@@ -95,14 +108,15 @@ class Throttle {
     const bool backToBack =
         std::chrono::duration<double>(start - lastEnd_).count() < kBackToBackSeconds;
     const double lag = backToBack ? lagSeconds_ : 0.0;
-    if (slowdown_ > 1.0) {
-      std::this_thread::sleep_for(std::chrono::duration<double>(
-          throttlePauseSeconds(slowdown_, cpu, secondsSince(start), lag)));
+    const double k = slowdownAt(std::chrono::duration<double>(start - epoch_).count());
+    if (k > 1.0) {
+      std::this_thread::sleep_for(
+          std::chrono::duration<double>(throttlePauseSeconds(k, cpu, secondsSince(start), lag)));
     }
     lastEnd_ = std::chrono::steady_clock::now();
     const double wall = std::chrono::duration<double>(lastEnd_ - start).count();
-    if (slowdown_ > 1.0) lagSeconds_ = std::max(0.0, wall - (slowdown_ * cpu - lag));
-    return {wall, slowdown_ > 1.0 ? slowdown_ * cpu : wall};
+    if (k > 1.0) lagSeconds_ = std::max(0.0, wall - (k * cpu - lag));
+    return {wall, k > 1.0 ? k * cpu : wall};
   }
   static double secondsSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -111,6 +125,8 @@ class Throttle {
   static constexpr double kBackToBackSeconds = 1e-3;
 
   double slowdown_;
+  std::vector<SpeedChange> changes_;
+  std::chrono::steady_clock::time_point epoch_;
   double lagSeconds_ = 0;  // how far the last stretch ended behind its schedule
   std::chrono::steady_clock::time_point lastEnd_;
 };

@@ -96,5 +96,29 @@ TEST(Throttle, AMultiThreadedStretchIsPacedByTheCpuTimeOfEveryThread) {
   EXPECT_LT(plain.measureParallel([] { return 0.040; }, 2).wallSeconds, 0.030);
 }
 
+TEST(Throttle, TheSlowdownFollowsItsSchedule) {
+  const Throttle throttle(2.0, changesOf(parseSpeedChanges("0:1:8,0:0.5:4", "--slowdown-at", 1, 1), 0));
+  EXPECT_EQ(throttle.slowdown(), 2.0);
+  EXPECT_EQ(throttle.slowdownAt(0.2), 2.0);
+  EXPECT_EQ(throttle.slowdownAt(0.5), 4.0);
+  EXPECT_EQ(throttle.slowdownAt(3.0), 8.0);
+}
+
+TEST(Throttle, AChangeAlreadyDueSlowsTheNextStretch) {
+  // A change at time 0: the first stretch is paced at k = 5, its emulated length 5 * CPU.
+  Throttle throttle(1.0, {SpeedChange{0, 0, 5}});
+  volatile double sink = 0;
+  double cpu = 0;
+  const Stretch s = throttle.measure([&] {
+    timespec a{}, b{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &a);
+    for (int j = 0; j < 2000000; ++j) sink = sink + 1e-9 * j;
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &b);
+    cpu = static_cast<double>(b.tv_sec - a.tv_sec) + 1e-9 * static_cast<double>(b.tv_nsec - a.tv_nsec);
+  });
+  EXPECT_GE(s.emulatedSeconds, 4.5 * cpu);  // k = 1 would give the wall time, about cpu
+  EXPECT_GE(s.wallSeconds, 4.5 * cpu);
+}
+
 }  // namespace
 }  // namespace prt

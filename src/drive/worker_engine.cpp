@@ -31,6 +31,8 @@ void WorkerEngine::load(const SceneMsg& scene) {
 }
 
 double WorkerEngine::measureSpeedIndex() {
+  if (speedIndexKind_ == SpeedIndexKind::None) return 1.0;  // a placeholder, measured nothing
+  if (speedIndexKind_ == SpeedIndexKind::Slowdown) return throttle_.slowdown();  // the truth
   if (speedIndexKind_ == SpeedIndexKind::RenderProbe) {
     PRT_CHECK(renderer_ != nullptr);
     // As many stretches as the Hanoi run of the default disc count.

@@ -5,6 +5,7 @@
 // One engine per worker; not shared.
 
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "cluster/messages.h"
@@ -16,9 +17,11 @@ namespace prt {
 
 class WorkerEngine {
  public:
+  // slowdownChanges: this worker's --slowdown-at changes, sorted (changesOf()); threads: its
+  // rendering threads.
   WorkerEngine(double slowdown, SpeedIndexKind speedIndexKind, int speedIndexDiscs,
-               int threads = 1)
-      : throttle_(slowdown),
+               std::vector<SpeedChange> slowdownChanges = {}, int threads = 1)
+      : throttle_(slowdown, std::move(slowdownChanges)),
         speedIndexKind_(speedIndexKind),
         speedIndexDiscs_(speedIndexDiscs),
         threads_(threads < 1 ? 1 : threads) {}

@@ -137,7 +137,7 @@ class WorkerLoop {
       log_.add({EventKind::Compute, id_, effectStart_, effectStart_ + computeSeconds_,
                 batch_.size(), 0, 0, ""});
       rendered_ += batch_.size();
-      sendOut(worker_.batchDone(batch_, std::move(rgb_)));
+      sendOut(worker_.batchDone(batch_, std::move(rgb_), computeSeconds_));
       rgb_.clear();
     }
     doing_ = Doing::Nothing;

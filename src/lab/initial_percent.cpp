@@ -4,6 +4,7 @@
 
 #include <map>
 
+#include "balance/registry.h"
 #include "lab/context.h"
 #include "lab/experiments.h"
 #include "lab/measure.h"
@@ -18,7 +19,7 @@ void runInitialPercent(ExperimentContext& cx) {
   const std::vector<double> percents =
       cx.quick() ? std::vector<double>{20, 80, 100}
                  : std::vector<double>{5, 10, 20, 30, 40, 50, 60, 70, 75, 80, 90, 100};
-  const std::vector<std::string> strategies = {"reservoir", "reservoir-scatter"};
+  const std::vector<std::string> strategies = strategiesTaking("initial-percent");
 
   cx.progress("serial time and cost map, case " + testCase);
   SerialReference serial(scene, settings);

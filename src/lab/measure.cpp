@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 
+#include "balance/registry.h"
 #include "drive/local_driver.h"
 #include "lab/csv_table.h"
 #include "sim/simulator.h"
@@ -72,6 +73,17 @@ RunReport runReal(const Scene& scene, const RenderSettings& settings,
   return renderLocal(request).report;
 }
 
+namespace {
+
+// A real run's --slowdown-at factors as the simulator's speeds (1 / factor).
+std::vector<SpeedChange> speedChangesOf(const ParallelOptions& options) {
+  std::vector<SpeedChange> out = options.slowdownChanges;
+  for (SpeedChange& c : out) c.value = 1.0 / c.value;
+  return out;
+}
+
+}  // namespace
+
 RunReport runSimulated(const CostMap& costs, const ParallelOptions& options,
                        double masterSpeedIndexSeconds,
                        const std::vector<double>& workerSpeedIndices) {
@@ -82,6 +94,8 @@ RunReport runSimulated(const CostMap& costs, const ParallelOptions& options,
   sim.batchPixels = options.batchPixels;
   sim.baseSpeedIndexSeconds = masterSpeedIndexSeconds;
   sim.speedIndexSeconds = workerSpeedIndices;
+  sim.speedIndexRun = options.speedIndexKind != SpeedIndexKind::None;
+  sim.speedChanges = speedChangesOf(options);
   return simulate(costs, sim).report;
 }
 
@@ -134,6 +148,7 @@ ParallelOptions parallelOptions(const std::string& strategy, const std::vector<d
   o.workers = static_cast<int>(slowdowns.size());
   o.strategy = strategy;
   o.slowdowns = slowdowns;
+  if (!runsSpeedIndexByDefault(strategy)) o.speedIndexKind = SpeedIndexKind::None;
   return o;
 }
 

@@ -65,10 +65,32 @@ RunReport makeReport(const RunInfo& info, const std::vector<Event>& events,
     busy += wr.busySeconds;
   }
   r.efficiency = elapsedSeconds > 0 && n > 0 ? busy / (elapsedSeconds * static_cast<double>(n)) : 0;
-  r.masu = maximumAchievableSpeedup(info.masterSpeedIndexSeconds, info.workerSpeedIndexSeconds);
+  if (info.speedIndexRun) {
+    r.speedIndexMasu =
+        maximumAchievableSpeedup(info.masterSpeedIndexSeconds, info.workerSpeedIndexSeconds);
+  }
+  uint64_t pixels = 0;
+  for (const WorkerReport& wr : r.workers) pixels += wr.pixels;
+  if (info.serialSeconds && *info.serialSeconds > 0 && pixels > 0) {
+    const double serialRate = static_cast<double>(pixels) / *info.serialSeconds;
+    double rates = 0;
+    for (const WorkerReport& wr : r.workers) {
+      if (wr.busySeconds > 0) rates += static_cast<double>(wr.pixels) / wr.busySeconds;
+    }
+    r.measuredMasu = rates / serialRate;
+  }
   if (info.serialSeconds && elapsedSeconds > 0) {
     r.speedup = *info.serialSeconds / elapsedSeconds;
-    if (r.masu > 0) r.asu = *r.speedup / r.masu;
+    if (r.speedIndexMasu && *r.speedIndexMasu > 0) r.speedIndexAsu = *r.speedup / *r.speedIndexMasu;
+    if (r.measuredMasu && *r.measuredMasu > 0) r.measuredAsu = *r.speedup / *r.measuredMasu;
+  }
+  if (r.speedIndexMasu) {
+    r.masu = *r.speedIndexMasu;
+    r.asu = r.speedIndexAsu;
+  } else {
+    r.masuBasis = "measured_throughput";
+    r.masu = r.measuredMasu.value_or(0.0);
+    r.asu = r.measuredAsu;
   }
   return r;
 }
@@ -87,8 +109,14 @@ std::string RunReport::toJson() const {
   j["serial_s"] = info.serialSeconds ? json(*info.serialSeconds) : json(nullptr);
   j["speedup"] = speedup ? json(*speedup) : json(nullptr);
   j["efficiency"] = efficiency;
+  auto orNull = [](const std::optional<double>& v) { return v ? json(*v) : json(nullptr); };
   j["masu"] = masu;
-  j["asu"] = asu ? json(*asu) : json(nullptr);
+  j["asu"] = orNull(asu);
+  j["masu_basis"] = masuBasis;
+  j["speed_index_masu"] = orNull(speedIndexMasu);
+  j["speed_index_asu"] = orNull(speedIndexAsu);
+  j["measured_masu"] = orNull(measuredMasu);
+  j["measured_asu"] = orNull(measuredAsu);
   j["master_speed_index_s"] = info.masterSpeedIndexSeconds;
   j["messages"] = messages;
   j["bytes"] = bytes;
@@ -159,6 +187,9 @@ std::string RunReport::toTable() const {
                 static_cast<unsigned long long>(messages), static_cast<unsigned long long>(bytes));
   out += line;
   if (!speedup) out += "(speed-up and ASU need --serial-seconds T or --measure-serial)\n";
+  if (masuBasis != "speed_index") {
+    out += "(no speed index was run: MASU and ASU are from the measured throughput)\n";
+  }
   for (const LostWorkerInfo& l : info.faults.lostWorkers) {
     std::snprintf(line, sizeof line,
                   "worker %d was lost at %.2f s (%s); its %llu unfinished tasks were reissued\n",

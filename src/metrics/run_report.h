@@ -5,6 +5,12 @@
 //   masu       = sum over workers of speed_SRT / speed_i (speed indices are times; the serial
 //                machine's index is the master's)
 //   asu        = speedup / masu
+// Without a speed-index run (--speed-index none) there are no indices to compute the MASU
+// from; it is then computed from the measured throughput instead:
+//   measured masu = sum over workers of (pixels_i / busy_i) / (pixels / serial seconds),
+// each worker's rendering rate over the serial machine's. Both kinds are kept apart: the
+// JSON gives speed_index_masu/asu (null without a speed index), measured_masu/asu (null
+// without a serial time), and masu/asu as the one named by masu_basis.
 // Busy time is time spent rendering, including the wait a --slowdown adds to emulate a slower
 // machine; idle time is the rest of the elapsed time.
 
@@ -62,6 +68,7 @@ struct RunInfo {
   std::vector<uint64_t> tasksReceived;  // per worker
   std::vector<int> threads;             // per worker: rendering threads (0: unknown)
   std::optional<double> serialSeconds;  // for speed-up; absent: speed-up not reported
+  bool speedIndexRun = true;            // false: the workers' indices are placeholders
   uint64_t rays = 0;
   FaultInfo faults;
 };
@@ -71,8 +78,11 @@ struct RunReport {
   double elapsedSeconds = 0;
   std::optional<double> speedup;
   double efficiency = 0;
-  double masu = 0;
+  double masu = 0;                 // of masuBasis
   std::optional<double> asu;
+  std::string masuBasis = "speed_index";  // or "measured_throughput"
+  std::optional<double> speedIndexMasu, speedIndexAsu;  // from the speed indices
+  std::optional<double> measuredMasu, measuredAsu;      // from the measured throughput
   uint64_t messages = 0, bytes = 0;
   std::vector<WorkerReport> workers;
 

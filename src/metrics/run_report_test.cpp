@@ -29,6 +29,33 @@ RunInfo twoWorkers() {
   return info;
 }
 
+TEST(RunReportTest, WithoutASpeedIndexMasuComesFromMeasuredThroughput) {
+  // Serial: 150 pixels in 6 s, 25 pixels/s. Worker 0: 120 pixels in 3.5 s; worker 1: 30 in 2 s.
+  RunInfo info = twoWorkers();
+  info.speedIndexRun = false;
+  std::vector<Event> events;
+  events.push_back({EventKind::Compute, 0, 0.0, 3.0, 100, 0, 0, ""});
+  events.push_back({EventKind::Compute, 0, 3.5, 4.0, 20, 0, 0, ""});
+  events.push_back({EventKind::Compute, 1, 0.0, 2.0, 30, 0, 0, ""});
+  const RunReport r = makeReport(info, events, 4.0);
+  const double masu = (120 / 3.5 + 30 / 2.0) / 25;
+  EXPECT_EQ(r.masuBasis, "measured_throughput");
+  EXPECT_FALSE(r.speedIndexMasu.has_value());
+  EXPECT_NEAR(*r.measuredMasu, masu, 1e-12);
+  EXPECT_NEAR(r.masu, masu, 1e-12);
+  EXPECT_NEAR(*r.asu, 1.5 / masu, 1e-12);
+  const nlohmann::json j = nlohmann::json::parse(r.toJson());
+  EXPECT_EQ(j["masu_basis"], "measured_throughput");
+  EXPECT_TRUE(j["speed_index_masu"].is_null());
+  EXPECT_TRUE(j["speed_index_asu"].is_null());
+  EXPECT_NEAR(j["measured_masu"].get<double>(), masu, 1e-12);
+  // With a speed index both kinds are given, the speed index's as masu.
+  const RunReport withIndex = makeReport(twoWorkers(), events, 4.0);
+  EXPECT_EQ(withIndex.masuBasis, "speed_index");
+  EXPECT_NEAR(withIndex.masu, 1.5, 1e-12);
+  EXPECT_NEAR(*withIndex.measuredMasu, masu, 1e-12);
+}
+
 TEST(RunReportTest, EfficiencySpeedupAndAsuFromEvents) {
   std::vector<Event> events;
   events.push_back({EventKind::Compute, 0, 0.0, 3.0, 100, 0, 0, ""});

@@ -28,6 +28,7 @@ struct SimWorker {
   Worker machine;
   double speed;       // relative to the cost map's machine
   double speedIndex;  // seconds; what it measures during setup
+  std::vector<SpeedChange> speedChanges;  // its own, sorted
   bool busy = false;  // computing (setup or a batch): mail waits in the mailbox
   bool inSetup = false;
   double workStart = 0;
@@ -50,6 +51,7 @@ class Simulation {
                                     ? options.baseSpeedIndexSeconds / speed
                                     : options.speedIndexSeconds[i];
       workers_.emplace_back(w, options.batchPixels, speed, speedIndex);
+      workers_.back().speedChanges = changesOf(options.speedChanges, w);
     }
   }
 
@@ -160,11 +162,13 @@ class Simulation {
     double seconds = 0;
     if (w.machine.needsSetup()) {
       w.inSetup = true;
-      seconds = w.speedIndex;
+      seconds = options_.speedIndexRun ? w.speedIndex : 0.0;
     } else if (w.machine.hasWork()) {
       w.inSetup = false;
       w.batch = w.machine.nextBatch();
-      seconds = (costs_.seconds(w.batch) + options_.batchOverheadSeconds) / w.speed;
+      seconds = workDoneAt(now_, costs_.seconds(w.batch) + options_.batchOverheadSeconds, w.speed,
+                           w.speedChanges) -
+                now_;
     } else {
       return;
     }
@@ -182,11 +186,12 @@ class Simulation {
     w.busy = false;
     if (w.inSetup) {
       log_.add({EventKind::Setup, id, w.workStart, now_, 0, 0, 0, ""});
-      send(id, w.machine.setupDone(w.speedIndex));
+      send(id, w.machine.setupDone(options_.speedIndexRun ? w.speedIndex
+                                                          : options_.baseSpeedIndexSeconds));
     } else {
       log_.add({EventKind::Compute, id, w.workStart, now_, w.batch.size(), 0, 0, ""});
       w.batch.forEach([&](uint64_t pixel) { owner_[pixel] = id; });
-      send(id, w.machine.batchDone(w.batch));
+      send(id, w.machine.batchDone(w.batch, now_ - w.workStart));
     }
     advance(id);
   }
@@ -201,6 +206,7 @@ class Simulation {
     info.masterSpeedIndexSeconds = options_.baseSpeedIndexSeconds;
     info.workerSpeedIndexSeconds = master_.speedIndices();
     info.serialSeconds = costs_.totalSeconds();
+    info.speedIndexRun = options_.speedIndexRun;
     for (const SimWorker& w : workers_) {
       info.slowdowns.push_back(1.0 / w.speed);
       info.tasksReceived.push_back(w.machine.tasksReceived());
@@ -253,6 +259,13 @@ void validateSimulationOptions(const SimulationOptions& o, uint64_t pixelCount) 
       if (!(s > 0) || !std::isfinite(s)) {
         throw InputError("--speed-indices values must be positive numbers of seconds");
       }
+    }
+  }
+  for (const SpeedChange& c : o.speedChanges) {
+    if (c.worker < 0 || static_cast<size_t>(c.worker) >= workers || !(c.value > 0) ||
+        !std::isfinite(c.value) || !(c.atSeconds >= 0)) {
+      throw InputError("--speed-at: worker " + std::to_string(c.worker) +
+                       " is not one of the workers, or its time or speed is not positive");
     }
   }
   validateNetworkOptions(o.network);

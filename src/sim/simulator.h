@@ -22,7 +22,8 @@
 #include <string>
 #include <vector>
 
-#include "balance/strategy.h"
+#include "balance/registry.h"
+#include "core/speed_schedule.h"
 #include "metrics/events.h"
 #include "metrics/run_report.h"
 #include "sim/cost_map.h"
@@ -31,7 +32,7 @@
 namespace prt {
 
 struct SimulationOptions {
-  std::string strategy = "reservoir";  // see strategyNames()
+  std::string strategy = kDefaultStrategy;  // see strategyNames()
   StrategyOptions strategyOptions;
   std::vector<double> speeds;             // one per worker (their number is the worker count)
   uint64_t batchPixels = 128;             // pixels per returned batch, as in a real run
@@ -44,6 +45,9 @@ struct SimulationOptions {
   std::vector<double> speedIndexSeconds;  // optional, one per worker: the speed indices the
                                           // workers report and set up for, as measured in a
                                           // real run to replay; empty: base / speed
+  std::vector<SpeedChange> speedChanges;  // --speed-at: worker W runs at speed X from T s on
+  bool speedIndexRun = true;              // false: workers set up at once and report equal
+                                          // indices (for strategies that need none)
   NetworkOptions network;
   uint64_t sceneBytes = 4096;  // the scene text the master sends to each worker
 };

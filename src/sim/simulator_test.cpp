@@ -12,6 +12,7 @@
 #include "core/input_error.h"
 #include "metrics/chrome_trace.h"
 #include "sim/synthetic_cost.h"
+#include "sim/worker_speeds.h"
 
 namespace prt {
 namespace {
@@ -100,6 +101,42 @@ TEST(SimulatorTest, ReservoirDividesTheWorkBySpeed) {
   // Scatter gives them equal shares: the slow one takes 0.5 s / 0.5.
   const SimulatedRun scatter = simulate(map, optionsFor("scatter", {1, 0.5}, 64));
   EXPECT_NEAR(scatter.report.elapsedSeconds, 0.16 + 1.0, 0.01);
+}
+
+TEST(SimulatorTest, WorkDoneAtFollowsTheSpeedSchedule) {
+  // 3 s of full-speed work from t = 1 at speed 1, halved from t = 2, doubled from t = 3: 1 s
+  // of work by 2, 0.5 more by 3, the last 1.5 at speed 2 -> done at 3.75.
+  const std::vector<SpeedChange> changes = {{0, 2, 0.5}, {0, 3, 2}};
+  EXPECT_DOUBLE_EQ(workDoneAt(1, 3, 1, changes), 3.75);
+  EXPECT_DOUBLE_EQ(workDoneAt(1, 0.5, 1, changes), 1.5);  // done before the first change
+  // Starting at 2.5, at speed 0.5 already: 0.25 by 3, the other 0.75 at speed 2.
+  EXPECT_DOUBLE_EQ(workDoneAt(2.5, 1, 1, changes), 3.375);
+  EXPECT_DOUBLE_EQ(workDoneAt(0, 2, 0.25, {}), 8);
+}
+
+TEST(SimulatorTest, ASpeedChangeSlowsTheWorkerFromThenOn) {
+  // One worker, 1 s of work: at half speed from 0.5 s after the start of rendering it needs
+  // about another 0.5 s.
+  const CostMap map = uniformCostMap(64, 64, 1.0);
+  SimulationOptions o = optionsFor("blocks", {1.0});
+  const double plain = simulate(map, o).report.elapsedSeconds;
+  o.speedChanges = {SpeedChange{0, 0.08 + 0.5, 0.5}};  // the setup lasts 0.08 s
+  const double slowed = simulate(map, o).report.elapsedSeconds;
+  EXPECT_NEAR(slowed - plain, 0.5, 0.01);
+  o.speedChanges = {SpeedChange{1, 0.5, 0.5}};
+  EXPECT_THROW(simulate(map, o), InputError);  // no worker 1
+}
+
+TEST(SimulatorTest, WithoutASpeedIndexWorkersStartAtOnceAndMasuIsMeasured) {
+  const CostMap map = uniformCostMap(64, 64, 1.0);
+  SimulationOptions o = optionsFor("adaptive", {1.0, 0.5});
+  o.speedIndexRun = false;
+  const SimulatedRun run = simulate(map, o);
+  EXPECT_LT(run.report.elapsedSeconds, 1.0 / 1.5 + 0.02);  // no 0.16 s speed-index wait
+  EXPECT_EQ(run.report.masuBasis, "measured_throughput");
+  EXPECT_FALSE(run.report.speedIndexMasu.has_value());
+  ASSERT_TRUE(run.report.measuredMasu.has_value());
+  EXPECT_NEAR(*run.report.measuredMasu, 1.5, 0.02);  // the workers' true speeds, 1 + 0.5
 }
 
 class SimulatorStrategyTest : public ::testing::TestWithParam<std::string> {};

@@ -76,4 +76,18 @@ std::vector<double> lognormalSpeeds(int workers, double sigma, uint64_t seed) {
   return speeds;
 }
 
+double workDoneAt(double start, double work, double initial, const std::vector<SpeedChange>& sorted) {
+  double t = start;
+  double speed = valueAt(sorted, initial, start);
+  for (const SpeedChange& c : sorted) {
+    if (c.atSeconds <= t) continue;
+    const double capacity = (c.atSeconds - t) * speed;  // work done before the next change
+    if (capacity >= work) break;
+    work -= capacity;
+    t = c.atSeconds;
+    speed = c.value;
+  }
+  return t + work / speed;
+}
+
 }  // namespace prt

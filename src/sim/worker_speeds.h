@@ -11,6 +11,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/speed_schedule.h"
+
 namespace prt {
 
 // Throws InputError unless there is one speed per worker, each finite and > 0.
@@ -27,5 +29,10 @@ std::vector<double> slowShareSpeeds(int workers, double share, double factor, ui
 // Log-normal speeds exp(sigma * z), z standard normal: median 1, so some workers are faster
 // than the recording machine and some slower. sigma >= 0 (InputError otherwise).
 std::vector<double> lognormalSpeeds(int workers, double sigma, uint64_t seed);
+
+// Speeds that change mid-run (--speed-at): when `work` full-speed seconds started at `start`
+// on a worker of speed `initial` whose changes (sorted, changesOf()) are `sorted` are done.
+// Without changes, start + work / initial.
+double workDoneAt(double start, double work, double initial, const std::vector<SpeedChange>& sorted);
 
 }  // namespace prt

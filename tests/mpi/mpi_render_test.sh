@@ -20,6 +20,8 @@
 #                   thread count
 #   singleton       one rank is refused with a clear message
 #   slowdown        a --slowdown list not matching the worker count is refused
+#   changing        the default (adaptive) strategy with a worker slowing down part-way
+#                   (--slowdown-at): the image is still the serial one
 set -eu
 
 prt=$1 mpiexec=$2 scene=$3 work=$4 mode=$5 np=$6 arg=${7:-}
@@ -123,6 +125,17 @@ case $mode in
     mpi_prt --strategy "$arg" --batch 16 -o mpi.pfm
     [ "$status" -eq 0 ] || fail "mpirun exited with $status"
     cmp serial.pfm mpi.pfm || fail "the MPI image differs from the serial one"
+    ;;
+  changing)
+    # shellcheck disable=SC2086
+    "$prt" render "$scene" $size -q -o serial.pfm
+    slow=$(python3 -c "print(','.join(['1'] * ($np - 1)))")
+    mpi_prt --slowdown "$slow" --slowdown-at 0:0:3,0:0.05:6 --batch 16 -o mpi.pfm \
+      --report report.json
+    [ "$status" -eq 0 ] || fail "mpirun exited with $status"
+    cmp serial.pfm mpi.pfm || fail "the MPI image differs from the serial one"
+    grep -q '"masu_basis": "measured_throughput"' report.json ||
+      fail "no speed index ran, yet the MASU is not from measured throughput"
     ;;
   report)
     # shellcheck disable=SC2086

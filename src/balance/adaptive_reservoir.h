@@ -1,0 +1,71 @@
+#pragma once
+// The adaptive reservoir ("adaptive"): the reservoir's idea — hand out part of the image at
+// once and keep a reserve for the end — with each worker's speed learnt as it works instead
+// of measured before the start.
+//
+//  - Start: firstPercent of the image goes out at once, split by the speed index's division
+//    of labour when one was run (the indices differ), else evenly. No speed-index wait is
+//    needed: run with --speed-index none and it starts with the scene.
+//  - Learning: each worker's rate is its tasks per second over its recent results
+//    (throughput.h); a worker not measured yet is assumed to run at the mean measured rate.
+//    The pool is in interleaved order (interleaved_order.h), so every hand-out samples the
+//    whole image and rates measured on one hand-out hold for the next.
+//  - Sizing, so that all finish together: a request from worker w finds the common finishing
+//    time T at which the pool and every queue would be done, each worker i at rate r_i,
+//    holding h_i: sum over i of max(0, r_i T - h_i) = R (a worker whose queue already lasts
+//    past T gets nothing more). Worker w gets (1 - reservePercent/100) of its part, r_w T,
+//    at least minChunk: the rest stays in the reserve, so hand-outs shrink as the end nears
+//    (with reservePercent 50 each lasts half the expected remaining time, factoring's rule in
+//    time rather than tasks, weighted by measured speed).
+//  - The end: once the reserve is empty, a requester steals from the worker expected to
+//    finish last (h_v / r_v largest), taking h_v r_w / (r_v + r_w) tasks so that both finish
+//    together, but no more than its own part r_w H / sum_i r_i of the H tasks all hold,
+//    since the other idle workers will take theirs — at least
+//    minChunk; a worker with tasks stolen for it on their way is no
+//    victim. A requester with nothing worth stealing waits, and every later result looks
+//    again (PooledStrategy::waitsForSteals), so the fast workers stay available to the end.
+//    A worker that slows down after its last hand-out is thus relieved by the others
+//    instead of finishing alone.
+//
+// Lost workers: see PooledStrategy.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "balance/pooled_strategy.h"
+
+namespace prt {
+
+// The common finishing time T (seconds from now) with sum_i max(0, rates_i T - held_i) =
+// remaining, over the workers with a positive rate. rates and held per worker.
+double commonFinishSeconds(const std::vector<double>& rates, const std::vector<uint64_t>& held,
+                           uint64_t remaining);
+
+class AdaptiveReservoirStrategy final : public PooledStrategy {
+ public:
+  // firstPercent in (0, 100], reservePercent in [0, 100), minChunk >= 1.
+  AdaptiveReservoirStrategy(double firstPercent, double reservePercent, uint64_t minChunk);
+  std::string name() const override { return "adaptive"; }
+
+ protected:
+  TaskSet initialPool(const StartInfo& info) override;
+  void prepare(const StartInfo& info) override;
+  uint64_t initialSize(int worker) override;
+  uint64_t handOutSize(int worker) override;
+  std::optional<Transfer> stealFor(int worker) override;
+  bool waitsForSteals() const override { return true; }
+
+ private:
+  // Measured rates of the live workers, the unmeasured at the mean measured rate; 0 for lost
+  // workers. All 0 when nothing is measured yet.
+  std::vector<double> rates() const;
+
+  double firstPercent_;
+  double reservePercent_;
+  uint64_t minChunk_;
+  std::vector<uint64_t> firstBlocks_;
+};
+
+}  // namespace prt

@@ -1,0 +1,43 @@
+#include "balance/stealing.h"
+
+#include "balance/interleaved_order.h"
+#include "core/check.h"
+
+namespace prt {
+
+StealingStrategy::StealingStrategy(uint64_t minChunk) : minChunk_(minChunk) {
+  PRT_CHECK(minChunk_ >= 1);
+}
+
+TaskSet StealingStrategy::initialPool(const StartInfo& info) {
+  return interleavedOrder(info.taskCount);
+}
+
+void StealingStrategy::prepare(const StartInfo& info) {
+  taskCount_ = info.taskCount;
+  workerCount_ = info.speedIndexSeconds.size();
+}
+
+uint64_t StealingStrategy::initialSize(int worker) {
+  const auto w = static_cast<uint64_t>(worker);
+  return taskCount_ / workerCount_ + (w < taskCount_ % workerCount_ ? 1 : 0);
+}
+
+uint64_t StealingStrategy::handOutSize(int /*worker*/) {
+  const auto p = static_cast<uint64_t>(workers().liveCount());
+  return (remaining() + p - 1) / p;
+}
+
+std::optional<Transfer> StealingStrategy::stealFor(int worker) {
+  int victim = -1;
+  for (int w : workers().liveList()) {
+    if (w == worker || awaitingSteal(w)) continue;
+    if (victim < 0 || throughput().held(w) > throughput().held(victim)) victim = w;
+  }
+  if (victim < 0) return std::nullopt;
+  const uint64_t half = throughput().held(victim) / 2;
+  if (half < minChunk_) return std::nullopt;
+  return Transfer{victim, worker, half};
+}
+
+}  // namespace prt
