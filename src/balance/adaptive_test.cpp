@@ -205,3 +205,34 @@ TEST(RegistryRowsTest, EveryRowDeclaresItsKindAndOptions) {
 
 }  // namespace
 }  // namespace prt
+
+namespace prt {
+namespace {
+
+// The victim of a steal is lost before it sends anything: the thief must still get the
+// victim's tasks (it used to wait for a transfer that never comes).
+TEST(StealingTest, AThiefWhoseVictimIsLostIsServedItsTasks) {
+  std::unique_ptr<Strategy> s = makeStrategy("stealing", StrategyOptions{});
+  const Decisions start = s->start(StartInfo{100, {1.0, 1.0}});
+  ASSERT_EQ(start.size(), 2u);
+  const TaskSet mine = std::get<Assign>(start[1]).tasks;
+  const TaskSet theirs = std::get<Assign>(start[0]).tasks;
+  s->onResults(1, mine, 0.5);
+  const Decisions steal = s->onRequest(1);
+  ASSERT_EQ(steal.size(), 1u);
+  const auto* transfer = std::get_if<Transfer>(&steal[0]);
+  ASSERT_NE(transfer, nullptr);
+  EXPECT_EQ(transfer->from, 0);
+  const Decisions after = s->onWorkerLost(0, theirs);
+  uint64_t given = 0;
+  for (const Decision& d : after) {
+    if (const auto* a = std::get_if<Assign>(&d)) {
+      EXPECT_EQ(a->worker, 1);
+      given += a->tasks.size();
+    }
+  }
+  EXPECT_GT(given, 0u);
+}
+
+}  // namespace
+}  // namespace prt

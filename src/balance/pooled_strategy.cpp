@@ -17,6 +17,7 @@ Decisions PooledStrategy::start(const StartInfo& info) {
   waiting_.assign(static_cast<size_t>(workerCount), false);
   waitingCount_ = 0;
   inbound_.assign(static_cast<size_t>(workerCount), false);
+  victim_.assign(static_cast<size_t>(workerCount), -1);
   taskCount_ = info.taskCount;
   returnedCount_ = 0;
   speedIndexSeconds_ = info.speedIndexSeconds;
@@ -56,6 +57,15 @@ Decisions PooledStrategy::onWorkerLost(int worker, const TaskSet& unfinished) {
   pool.append(pool_);
   pool_ = std::move(pool);
   if (workers_.liveCount() == 0) return {};
+  // A steal from the lost worker never arrives (the master drops transfers from the lost):
+  // its thief is idle again, and is served below like the others.
+  for (int w : workers_.liveList()) {
+    const auto i = static_cast<size_t>(w);
+    if (inbound_[i] && victim_[i] == worker) {
+      inbound_[i] = false;
+      idle_[i] = true;
+    }
+  }
   onLiveWorkersChanged();
 
   Decisions out;
@@ -107,6 +117,7 @@ std::optional<Decision> PooledStrategy::steal(int worker) {
   idle_[static_cast<size_t>(worker)] = false;
   setWaiting(worker, false);
   inbound_[static_cast<size_t>(worker)] = true;
+  victim_[static_cast<size_t>(worker)] = transfer->from;
   return Decision{*transfer};
 }
 

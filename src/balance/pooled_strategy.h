@@ -79,6 +79,7 @@ class PooledStrategy : public Strategy {
   std::vector<bool> waiting_;  // asked and not answered yet
   int waitingCount_ = 0;
   std::vector<bool> inbound_;  // a steal for it is on its way (until its next result or request)
+  std::vector<int> victim_;    // whom that steal is from
   uint64_t taskCount_ = 0;
   uint64_t returnedCount_ = 0;  // tasks returned by live workers
   std::vector<double> speedIndexSeconds_;
