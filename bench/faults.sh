@@ -21,7 +21,7 @@ common="$geometry -q --batch 8 --worker-timeout 2 --checkpoint $work/ck --checkp
 
 # shellcheck disable=SC2086
 "$prt" render "$scene" $geometry -q -o "$work/serial.pfm"
-strategies=$("$prt" render --help | sed -n 's/.*Load balancing: \([^(]*\)(default.*/\1/p' | tr -d ,)
+strategies=$("$prt" render --help | sed -n 's/^ *\([a-z0-9-]*\) (\(static\|dynamic\|adaptive\))[:,].*/\1/p')
 
 # Detection seconds of the first loss in a report, or "-".
 detection() {

@@ -44,7 +44,9 @@ kill_mid_render() {
 
 case $mode in
   deadlocks)
-    for strategy in $("$prt" render --help | sed -n 's/.*Load balancing: \([^(]*\)(default.*/\1/p' | tr -d ,); do
+    strategies=$("$prt" render --help | sed -n 's/^ *\([a-z0-9-]*\) (\(static\|dynamic\|adaptive\))[:,].*/\1/p')
+    [ "$(echo "$strategies" | wc -w)" -ge 15 ] || fail "no strategy list in prt render --help"
+    for strategy in $strategies; do
       "$prt" render "$scene" -q --width 16 --height 1 -o serial.pfm
       run --width 16 --height 1 --workers 2 --strategy "$strategy" --inject-fault 0:0:crash -o out.pfm
       [ "$status" -eq 0 ] || fail "$strategy, lost worker holding everything: exit $status"
