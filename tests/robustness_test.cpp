@@ -4,13 +4,19 @@
 // running out of memory.
 
 #include <gtest/gtest.h>
+#include <signal.h>
+#include <spawn.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
 
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <thread>
+#include <vector>
 
 #include "image/image_io.h"
 #include "prt_command.h"
@@ -181,27 +187,30 @@ TEST_F(Robustness, OtherCommandsRefuseAbsurdValuesAndReportFailuresPlainly) {
   EXPECT_NE(r.output.find("povray exited with code 1"), std::string::npos) << r.output;
 }
 
-// Starts a render of the benchmark scene (seconds long), sends `signal` after a moment and
-// returns the exit code the shell saw.
-int renderKilledBy(const std::string& signal, const std::string& flags, const std::string& out) {
-  const std::string scene = std::string(PRT_SOURCE_DIR) + "/scenes/complex.scene";
-  const std::string command = "sh -c '" + prt::e2e::prtBinary() + " render " + scene +
-                              " -q --spp 64 --width 320 --height 240 -o " + out + " " + flags +
-                              " & pid=$!; sleep 0.5; kill -" + signal +
-                              " $pid; wait $pid; echo exit=$?'";
-  FILE* pipe = popen(command.c_str(), "r");
-  std::string output;
-  char buffer[256];
-  while (fgets(buffer, sizeof buffer, pipe) != nullptr) output += buffer;
-  pclose(pipe);
-  const size_t at = output.find("exit=");
-  return at == std::string::npos ? -1 : std::stoi(output.substr(at + 5));
+// Starts a render of the benchmark scene (seconds long), sends `signal` once it runs and
+// returns how it ended: its exit code, or -1 if the signal killed it (no handler ran).
+int renderKilledBy(int signal, const std::vector<std::string>& flags, const std::string& out) {
+  std::vector<std::string> args = {prt::e2e::prtBinary(), "render",
+                                   std::string(PRT_SOURCE_DIR) + "/scenes/complex.scene",
+                                   "-q", "--spp", "64", "--width", "320", "--height", "240",
+                                   "-o", out};
+  args.insert(args.end(), flags.begin(), flags.end());
+  std::vector<char*> argv;
+  for (std::string& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  pid_t pid = 0;
+  if (posix_spawn(&pid, argv[0], nullptr, nullptr, argv.data(), environ) != 0) return -2;
+  std::this_thread::sleep_for(std::chrono::milliseconds(700));  // past start-up, rendering
+  ::kill(pid, signal);
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
 TEST_F(Robustness, SignalsEndARunWith128PlusTheSignalAndNoFiles) {
-  EXPECT_EQ(renderKilledBy("TERM", "--threads 1", path("a.pfm")), 143);
-  EXPECT_EQ(renderKilledBy("INT", "--workers 2", path("b.pfm")), 130);
-  EXPECT_EQ(renderKilledBy("HUP", "--threads 2", path("c.pfm")), 129);
+  EXPECT_EQ(renderKilledBy(SIGTERM, {"--threads", "1"}, path("a.pfm")), 128 + SIGTERM);
+  EXPECT_EQ(renderKilledBy(SIGINT, {"--workers", "2"}, path("b.pfm")), 128 + SIGINT);
+  EXPECT_EQ(renderKilledBy(SIGHUP, {"--threads", "2"}, path("c.pfm")), 128 + SIGHUP);
   EXPECT_EQ(filesIn(dir_), 0u);
 }
 

@@ -120,7 +120,11 @@ class SceneParser {
                "the camera's 'look_at' equals its 'eye'; it must be the point looked at");
     }
     const Token& upToken = block.has("up") ? block.valueToken("up") : keyword;
-    if (!(length(camera.up) > 0)) in_.fail(upToken, "the camera's 'up' must not be zero");
+    if (!(length(camera.up) > 0)) {
+      in_.fail(upToken,
+               "the camera's 'up' must not be zero, nor so short that its length underflows "
+               "to zero");
+    }
     // sin of the angle between them; below this the image's orientation is undefined.
     if (!(length(cross(normalize(view), normalize(camera.up))) >= 1e-6)) {
       in_.fail(upToken, std::string("the camera's ") +
@@ -317,7 +321,10 @@ class SceneParser {
     }
     block.require({"point", "normal"});
     if (!(length(plane.normal) > 0)) {
-      in_.fail(block.valueToken("normal"), "the plane's 'normal' must not be zero");
+      // Components of 1e-162 or less square to zero: too short to normalise, zero in effect.
+      in_.fail(block.valueToken("normal"),
+               "the plane's 'normal' must not be zero, nor so short that its length "
+               "underflows to zero");
     }
     plane.normal = unitLength(plane.normal);
     scene_.objects.push_back(object);
