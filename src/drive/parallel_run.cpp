@@ -47,7 +47,8 @@ void ImageAssembler::add(int worker, const TaskSet& tasks, const std::vector<flo
 }
 
 SceneMsg makeSceneMessage(const Scene& scene, const RenderSettings& settings) {
-  return SceneMsg{writeScene(scene), settings.samplesPerPixel, settings.drtRate};
+  return SceneMsg{writeScene(scene), settings.samplesPerPixel, settings.drtRate,
+                  packMeshes(scene)};
 }
 
 Image ownershipImage(const Image& image, const std::vector<int16_t>& owner) {

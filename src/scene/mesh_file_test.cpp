@@ -1,0 +1,235 @@
+// Meshes in scenes: `mesh` blocks reading OBJ and PLY files (ASCII and binary) written here,
+// `triangle` blocks, the transform, and what bad mesh files give (a located error, or
+// triangles skipped with a warning).
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+
+#include "scene/mesh_file.h"
+#include "scene/scene_file.h"
+
+namespace prt {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kPreamble = "camera { eye 0 0 -5 look_at 0 0 0 }\nimage { width 4 height 3 }\n";
+
+// A unit square in z = 0 as two triangles, counter-clockwise seen from +z.
+const std::string kSquareObj =
+    "# a square\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3\nf 1 3 4\n";
+
+class MeshFile : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    dir_ = fs::temp_directory_path() /
+           ("prt-mesh-file-" + std::to_string(::getpid()) + "-" + info->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_ / "models");
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  void write(const std::string& name, const std::string& bytes) const {
+    std::ofstream(dir_ / name, std::ios::binary) << bytes;
+  }
+  // The scene `body` (after the preamble) saved in the test directory and loaded.
+  Scene load(const std::string& body) const {
+    write("test.scene", kPreamble + body);
+    return loadSceneFile((dir_ / "test.scene").string());
+  }
+  std::string errorOf(const std::string& body) const {
+    try {
+      load(body);
+    } catch (const InputError& error) {
+      return error.format();
+    }
+    ADD_FAILURE() << "no error for:\n" << body;
+    return {};
+  }
+  static const TriangleMesh& meshOf(const Scene& scene, size_t object = 0) {
+    return *std::get<MeshShape>(scene.objects.at(object).shape).mesh;
+  }
+
+  fs::path dir_;
+};
+
+TEST_F(MeshFile, ObjIsReadRelativeToTheSceneFile) {
+  write("models/square.obj", kSquareObj);
+  const Scene scene = load("mesh { file \"models/square.obj\" surface { color 1 0 0 } }\n");
+  ASSERT_EQ(scene.objects.size(), 1u);
+  const TriangleMesh& mesh = meshOf(scene);
+  EXPECT_EQ(mesh.triangles.size(), 2u);
+  EXPECT_EQ(mesh.vertices.size(), 4u);
+  EXPECT_TRUE(mesh.normals.empty());
+  EXPECT_EQ(scene.objects[0].material.color, Color(1, 0, 0));
+  EXPECT_TRUE(scene.warnings.empty());
+}
+
+TEST_F(MeshFile, AsciiAndBinaryPlyGiveTheSameMesh) {
+  const std::string header =
+      "element vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+      "element face 2\nproperty list uchar int vertex_indices\nend_header\n";
+  write("models/a.ply", "ply\nformat ascii 1.0\n" + header +
+                            "0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 2 3\n");
+  std::string binary = "ply\nformat binary_little_endian 1.0\n" + header;
+  const float xyz[4][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+  binary.append(reinterpret_cast<const char*>(xyz), sizeof xyz);
+  const int32_t faces[2][3] = {{0, 1, 2}, {0, 2, 3}};
+  for (const auto& face : faces) {
+    binary.push_back(3);
+    binary.append(reinterpret_cast<const char*>(face), sizeof face);
+  }
+  write("models/b.ply", binary);
+  const Scene scene = load("mesh { file \"models/a.ply\" }\nmesh { file \"models/b.ply\" }\n");
+  EXPECT_EQ(meshOf(scene, 0).triangles.size(), 2u);
+  EXPECT_EQ(meshOf(scene, 0), meshOf(scene, 1));
+}
+
+TEST_F(MeshFile, TransformScalesThenRotatesThenTranslates) {
+  write("models/square.obj", kSquareObj);
+  const Scene scene =
+      load("mesh { file \"models/square.obj\" scale 2 rotate 0 0 90 translate 10 0 0 }\n");
+  const TriangleMesh& mesh = meshOf(scene);
+  // (1, 0, 0) -> (2, 0, 0) -> (0, 2, 0) -> (10, 2, 0)
+  const Vec3 v = mesh.vertices[mesh.triangles[0][1]];
+  EXPECT_NEAR(v.x, 10, 1e-12);
+  EXPECT_NEAR(v.y, 2, 1e-12);
+  EXPECT_NEAR(v.z, 0, 1e-12);
+}
+
+TEST_F(MeshFile, MirroringScaleKeepsTheTrianglesFacingOut) {
+  write("models/square.obj", kSquareObj);
+  const Scene scene = load("mesh { file \"models/square.obj\" scale -1 1 1 }\n");
+  const TriangleMesh& mesh = meshOf(scene);
+  const auto& t = mesh.triangles[0];
+  const Vec3 n = cross(mesh.vertices[t[1]] - mesh.vertices[t[0]], mesh.vertices[t[2]] - mesh.vertices[t[0]]);
+  EXPECT_GT(n.z, 0);
+}
+
+TEST_F(MeshFile, SmoothComputesUnitVertexNormals) {
+  // A tent: two faces meeting at a ridge; the ridge's normals point straight up.
+  write("models/tent.obj", "v -1 0 0\nv 0 1 -1\nv 0 1 1\nv 1 0 0\nf 1 3 2\nf 2 3 4\n");
+  const Scene scene = load("mesh { file \"models/tent.obj\" smooth }\n");
+  const TriangleMesh& mesh = meshOf(scene);
+  ASSERT_EQ(mesh.normals.size(), mesh.vertices.size());
+  for (const Vec3& n : mesh.normals) EXPECT_NEAR(length(n), 1, 1e-12);
+  bool ridge = false;
+  for (size_t v = 0; v < mesh.vertices.size(); ++v) {
+    if (mesh.vertices[v].y == 1) {
+      ridge = true;
+      EXPECT_NEAR(mesh.normals[v].y, 1, 1e-12);
+    }
+  }
+  EXPECT_TRUE(ridge);
+}
+
+TEST_F(MeshFile, TriangleBlocksAndTheirWrittenFormRoundTrip) {
+  write("models/square.obj", kSquareObj);
+  const Scene scene = load(
+      "triangle { vertices 0 0 0  1 0 0  0 1 0 surface { color 0 1 0 } }\n"
+      "mesh { file \"models/square.obj\" scale 1 2 3 rotate 10 20 30 translate 1 2 3 smooth }\n");
+  ASSERT_EQ(scene.objects.size(), 2u);
+  EXPECT_EQ(meshOf(scene, 0).triangles.size(), 1u);
+  const Scene again = parseScene(writeScene(scene), "again.scene");
+  ASSERT_EQ(again.objects.size(), 2u);
+  EXPECT_EQ(again.objects[0], scene.objects[0]);
+  EXPECT_EQ(again.objects[1], scene.objects[1]);
+}
+
+TEST_F(MeshFile, MissingFileNamesTheMeshAndTheSceneLine) {
+  const std::string message = errorOf("\nmesh { file \"models/none.obj\" }\n");
+  EXPECT_NE(message.find("test.scene:4:"), std::string::npos) << message;
+  EXPECT_NE(message.find("none.obj"), std::string::npos) << message;
+  EXPECT_NE(message.find("does not exist"), std::string::npos) << message;
+}
+
+TEST_F(MeshFile, MalformedObjLineIsReportedWithItsNumber) {
+  write("models/bad.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 x 2\nf 1 2 3\n");
+  const std::string message = errorOf("mesh { file \"models/bad.obj\" }\n");
+  EXPECT_NE(message.find("test.scene:3:"), std::string::npos) << message;
+  EXPECT_NE(message.find("bad.obj:4: expected a number"), std::string::npos) << message;
+}
+
+TEST_F(MeshFile, OutOfRangeIndexInTextFilesIsReportedWithItsLine) {
+  write("models/far.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 2 9\n");
+  std::string message = errorOf("mesh { file \"models/far.obj\" }\n");
+  EXPECT_NE(message.find("far.obj:5: a vertex index '9' is out of range"), std::string::npos)
+      << message;
+  write("models/far.ply",
+        "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+        "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
+        "0 0 0\n1 0 0\n0 1 0\n3 0 1 5\n");
+  message = errorOf("mesh { file \"models/far.ply\" }\n");
+  EXPECT_NE(message.find("far.ply:13: vertex index '5' is out of range"), std::string::npos)
+      << message;
+}
+
+TEST_F(MeshFile, NonFiniteNumbersInTextFilesAreRefused) {
+  write("models/nan.obj", "v 0 0 0\nv 1 0 0\nv nan 1 0\nf 1 2 3\n");
+  const std::string message = errorOf("mesh { file \"models/nan.obj\" }\n");
+  EXPECT_NE(message.find("nan.obj:3:"), std::string::npos) << message;
+  EXPECT_NE(message.find("not a finite number"), std::string::npos) << message;
+}
+
+TEST_F(MeshFile, TruncatedAndGarbageFilesAreRefused) {
+  write("models/short.ply",
+        "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+        "property float z\nend_header\n0 0 0\n1 0 0\n");
+  EXPECT_NE(errorOf("mesh { file \"models/short.ply\" }\n").find("short.ply:10: the file ends"),
+            std::string::npos);
+  write("models/junk.ply", "this is no mesh");
+  EXPECT_NE(errorOf("mesh { file \"models/junk.ply\" }\n").find("could not be read"),
+            std::string::npos);
+  write("models/empty.obj", "");
+  EXPECT_NE(errorOf("mesh { file \"models/empty.obj\" }\n").find("is empty"), std::string::npos);
+}
+
+TEST_F(MeshFile, DegenerateTrianglesAreSkippedWithAWarning) {
+  write("models/some.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 2 0 0\nf 1 2 3\nf 1 2 4\n");
+  const Scene scene = load("mesh { file \"models/some.obj\" }\n");
+  EXPECT_EQ(meshOf(scene).triangles.size(), 1u);
+  ASSERT_EQ(scene.warnings.size(), 1u);
+  EXPECT_NE(scene.warnings[0].find("test.scene:3: mesh file"), std::string::npos) << scene.warnings[0];
+  EXPECT_NE(scene.warnings[0].find("skipped 1 triangle of zero area"), std::string::npos)
+      << scene.warnings[0];
+  // Only degenerate ones: nothing left to trace.
+  write("models/flat.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n");
+  EXPECT_NE(errorOf("mesh { file \"models/flat.obj\" }\n").find("no triangle that can be traced"),
+            std::string::npos);
+}
+
+TEST_F(MeshFile, BinaryNonFiniteVerticesAreSkippedWithAWarning) {
+  std::string binary =
+      "ply\nformat binary_little_endian 1.0\nelement vertex 4\nproperty float x\n"
+      "property float y\nproperty float z\nelement face 2\n"
+      "property list uchar int vertex_indices\nend_header\n";
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  const float xyz[4][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {nan, 1, 1}};
+  binary.append(reinterpret_cast<const char*>(xyz), sizeof xyz);
+  const int32_t faces[2][3] = {{0, 1, 2}, {0, 1, 3}};
+  for (const auto& face : faces) {
+    binary.push_back(3);
+    binary.append(reinterpret_cast<const char*>(face), sizeof face);
+  }
+  write("models/nan.ply", binary);
+  const Scene scene = load("mesh { file \"models/nan.ply\" }\n");
+  EXPECT_EQ(meshOf(scene).triangles.size(), 1u);
+  ASSERT_EQ(scene.warnings.size(), 1u);
+  EXPECT_NE(scene.warnings[0].find("not finite"), std::string::npos) << scene.warnings[0];
+}
+
+TEST_F(MeshFile, BadBlockValuesArePointedAt) {
+  write("models/square.obj", kSquareObj);
+  EXPECT_NE(errorOf("mesh { file \"models/square.obj\" scale 1 0 1 }\n").find("3:41: error"),
+            std::string::npos);
+  EXPECT_NE(errorOf("triangle { vertices 0 0 0  1 1 1  2 2 2 }\n").find("no area"), std::string::npos);
+  EXPECT_NE(errorOf("mesh { scale 2 }\n").find("file"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace prt

@@ -1,0 +1,77 @@
+#include "trace/mesh_bvh.h"
+
+#include <utility>
+
+#include "core/check.h"
+
+namespace prt {
+
+MeshBvh::MeshBvh(std::shared_ptr<const TriangleMesh> mesh) : mesh_(std::move(mesh)) {
+  PRT_CHECK(mesh_ != nullptr && !mesh_->triangles.empty());
+  const std::vector<Vec3>& v = mesh_->vertices;
+  corners_.reserve(mesh_->triangles.size());
+  std::vector<Bounds> boxes;
+  boxes.reserve(mesh_->triangles.size());
+  for (const auto& t : mesh_->triangles) {
+    PRT_CHECK(t[0] < v.size() && t[1] < v.size() && t[2] < v.size());
+    corners_.push_back({v[t[0]], v[t[1]], v[t[2]]});
+    Bounds box;
+    box.extend(v[t[0]]);
+    box.extend(v[t[1]]);
+    box.extend(v[t[2]]);
+    bounds_.extend(box);
+    boxes.push_back(box);
+  }
+  bvh_ = QuadBvh(boxes, BvhBuild::binned);
+}
+
+bool MeshBvh::nearest(const Ray& ray, double tMin, double& t, uint32_t& triangle) const {
+  const ShearedRay sheared(ray);
+  const Corners* const corners = corners_.data();
+  double best = t;
+  uint32_t bestTriangle = ~0u;
+  bvh_.traverse<true>(ray, tMin, t, [&](uint32_t index) {
+    const Corners& c = corners[index];
+    const TriangleHit h = triangleHit(sheared, c.a, c.b, c.c);
+    if (h.hit && h.t > tMin && (h.t < best || (h.t == best && index < bestTriangle))) {
+      best = h.t;
+      bestTriangle = index;
+    }
+    return best;
+  });
+  if (bestTriangle == ~0u) return false;
+  t = best;
+  triangle = bestTriangle;
+  return true;
+}
+
+int MeshBvh::crossings(const Ray& ray, double tMin, double tMax) const {
+  const ShearedRay sheared(ray);
+  const Corners* const corners = corners_.data();
+  int count = 0;
+  bvh_.traverse<false>(ray, tMin, tMax, [&](uint32_t index) {
+    const Corners& c = corners[index];
+    const TriangleHit h = triangleHit(sheared, c.a, c.b, c.c);
+    if (h.hit && h.t > tMin && h.t < tMax) ++count;
+    return tMax;
+  });
+  return count;
+}
+
+Vec3 MeshBvh::normal(const Ray& ray, uint32_t triangle) const {
+  const Corners& c = corners_[triangle];
+  const Vec3 geometric = normalize(cross(c.b - c.a, c.c - c.a));
+  if (mesh_->normals.empty()) return geometric;
+  const TriangleHit h = triangleHit(ShearedRay(ray), c.a, c.b, c.c);
+  const auto& t = mesh_->triangles[triangle];
+  const std::vector<Vec3>& n = mesh_->normals;
+  const Vec3 blend = h.u * n[t[0]] + h.v * n[t[1]] + h.w * n[t[2]];
+  const double size = length(blend);
+  if (!(size > 1e-12)) return geometric;  // opposite normals cancel: no direction to trust
+  const Vec3 smooth = blend / size;
+  // Entering or leaving must be the same for both normals.
+  if ((dot(smooth, ray.direction) < 0) != (dot(geometric, ray.direction) < 0)) return geometric;
+  return smooth;
+}
+
+}  // namespace prt

@@ -1,0 +1,65 @@
+#pragma once
+// The watertight ray-triangle test of Woop, Benthin and Wald (JCGT 2013), in double precision.
+// The ray is sheared once so that it runs along +z through the origin; each triangle's vertices
+// are then projected onto the xy-plane and the ray meets the triangle when the origin lies
+// inside the projection: the signs of three edge functions agree. An edge shared by two
+// triangles is computed from the same two projected vertices by the same products in the
+// opposite order, so its value for one triangle is exactly the negation of its value for the
+// other: no ray slips between them (nor through a shared vertex). A ray exactly on an edge
+// meets both (edge functions of 0 count as inside).
+//
+// Pure arithmetic on doubles, with no fused operations (the project builds with
+// -ffp-contract=off): every build of the kernels computes the same distances bit for bit.
+
+#include <cmath>
+#include <limits>
+#include <utility>
+
+#include "core/ray.h"
+
+namespace prt {
+
+// A ray prepared for many triangle tests.
+struct ShearedRay {
+  Vec3 origin;
+  int kx = 0, ky = 1, kz = 2;  // the axes after the permutation: kz the largest direction
+  double sx = 0, sy = 0, sz = 0;
+
+  explicit ShearedRay(const Ray& ray) : origin(ray.origin) {
+    const Vec3& d = ray.direction;
+    const double ax = std::abs(d.x), ay = std::abs(d.y), az = std::abs(d.z);
+    kz = ax > ay ? (ax > az ? 0 : 2) : (ay > az ? 1 : 2);
+    kx = kz == 2 ? 0 : kz + 1;
+    ky = kx == 2 ? 0 : kx + 1;
+    if (d[kz] < 0) std::swap(kx, ky);  // keeps the winding, hence the sign of the determinant
+    sx = d[kx] / d[kz];
+    sy = d[ky] / d[kz];
+    sz = 1.0 / d[kz];
+  }
+};
+
+// Where a ray meets a triangle: the distance t along the ray and the barycentric weights of
+// vertices a, b, c (u + v + w = 1), or hit = false.
+struct TriangleHit {
+  bool hit = false;
+  double t = 0, u = 0, v = 0, w = 0;
+};
+
+inline TriangleHit triangleHit(const ShearedRay& r, const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Vec3 A = a - r.origin, B = b - r.origin, C = c - r.origin;
+  const double ax = A[r.kx] - r.sx * A[r.kz], ay = A[r.ky] - r.sy * A[r.kz];
+  const double bx = B[r.kx] - r.sx * B[r.kz], by = B[r.ky] - r.sy * B[r.kz];
+  const double cx = C[r.kx] - r.sx * C[r.kz], cy = C[r.ky] - r.sy * C[r.kz];
+  const double u = cx * by - cy * bx;  // edge b-c, weight of a
+  const double v = ax * cy - ay * cx;  // edge c-a, weight of b
+  const double w = bx * ay - by * ax;  // edge a-b, weight of c
+  if ((u < 0 || v < 0 || w < 0) && (u > 0 || v > 0 || w > 0)) return {};
+  const double det = u + v + w;
+  if (det == 0) return {};  // seen edge-on
+  const double t =
+      (u * (r.sz * A[r.kz]) + v * (r.sz * B[r.kz]) + w * (r.sz * C[r.kz])) / det;
+  const double inv = 1.0 / det;
+  return {true, t, u * inv, v * inv, w * inv};
+}
+
+}  // namespace prt
