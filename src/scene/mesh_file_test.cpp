@@ -10,6 +10,7 @@
 #include <fstream>
 
 #include "scene/mesh_file.h"
+#include "scene/mesh_pack.h"
 #include "scene/scene_file.h"
 
 namespace prt {
@@ -229,6 +230,46 @@ TEST_F(MeshFile, BadBlockValuesArePointedAt) {
             std::string::npos);
   EXPECT_NE(errorOf("triangle { vertices 0 0 0  1 1 1  2 2 2 }\n").find("no area"), std::string::npos);
   EXPECT_NE(errorOf("mesh { scale 2 }\n").find("file"), std::string::npos);
+}
+
+// What a worker does with the scene its master sent: the text and the packed meshes give the
+// same scene, bit for bit, with the mesh files gone.
+TEST_F(MeshFile, ShippedMeshesNeedNoFiles) {
+  write("models/tent.obj", "v -1 0 0\nv 0 1 -1\nv 0 1 1\nv 1 0 0\nf 1 3 2\nf 2 3 4\n");
+  write("models/square.obj", kSquareObj);
+  const Scene scene = load(
+      "mesh { file \"models/tent.obj\" smooth rotate 10 20 30 surface { color 1 0 0 } }\n"
+      "triangle { vertices 0 0 0  1 0 0  0 1 0 }\n"
+      "sphere { center 0 0 0 radius 1 }\n"
+      "mesh { file \"models/square.obj\" scale 3 }\n");
+  const std::string text = writeScene(scene);
+  const std::vector<uint8_t> bytes = packMeshes(scene);
+  fs::remove_all(dir_ / "models");
+  const Scene again = parseScene(text, "<sent>", unpackMeshes(bytes));
+  ASSERT_EQ(again.objects.size(), scene.objects.size());
+  for (size_t i = 0; i < scene.objects.size(); ++i) EXPECT_EQ(again.objects[i], scene.objects[i]);
+  // Vertices, indices and normals, nothing more: 4 + 4 vertices, 2 + 2 triangles, 4 normals.
+  EXPECT_EQ(bytes.size(), 8 + 2 * 24 + 8 * 24 + 4 * 12 + 4 * 24);
+  // Without them, the files are looked for (and are gone).
+  EXPECT_THROW(parseScene(text, "<sent>"), InputError);
+  EXPECT_THROW(parseScene(text, "<sent>", ShippedMeshes{}), InputError);
+}
+
+TEST_F(MeshFile, MalformedPackedMeshesAreRefused) {
+  write("models/square.obj", kSquareObj);
+  const std::vector<uint8_t> bytes = packMeshes(load("mesh { file \"models/square.obj\" }\n"));
+  for (size_t size : {size_t{0}, size_t{7}, size_t{30}, bytes.size() - 1}) {
+    EXPECT_THROW(unpackMeshes(std::vector<uint8_t>(bytes.begin(), bytes.begin() + static_cast<std::ptrdiff_t>(size))),
+                 std::runtime_error)
+        << size;
+  }
+  std::vector<uint8_t> longer = bytes;
+  longer.push_back(0);
+  EXPECT_THROW(unpackMeshes(longer), std::runtime_error);
+  std::vector<uint8_t> badIndex = bytes;
+  badIndex[bytes.size() - 1] = 0x7f;  // the last triangle's last index
+  EXPECT_THROW(unpackMeshes(badIndex), std::runtime_error);
+  EXPECT_EQ(unpackMeshes(bytes).size(), 1u);
 }
 
 }  // namespace
