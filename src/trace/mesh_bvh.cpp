@@ -9,12 +9,10 @@ namespace prt {
 MeshBvh::MeshBvh(std::shared_ptr<const TriangleMesh> mesh) : mesh_(std::move(mesh)) {
   PRT_CHECK(mesh_ != nullptr && !mesh_->triangles.empty());
   const std::vector<Vec3>& v = mesh_->vertices;
-  corners_.reserve(mesh_->triangles.size());
   std::vector<Bounds> boxes;
   boxes.reserve(mesh_->triangles.size());
   for (const auto& t : mesh_->triangles) {
     PRT_CHECK(t[0] < v.size() && t[1] < v.size() && t[2] < v.size());
-    corners_.push_back({v[t[0]], v[t[1]], v[t[2]]});
     Bounds box;
     box.extend(v[t[0]]);
     box.extend(v[t[1]]);
@@ -23,6 +21,18 @@ MeshBvh::MeshBvh(std::shared_ptr<const TriangleMesh> mesh) : mesh_(std::move(mes
     boxes.push_back(box);
   }
   bvh_ = QuadBvh(boxes, BvhBuild::binned);
+  boxes = {};  // no longer needed: free them before the corners are copied
+  triangleOf_ = bvh_.itemOrder();
+  PRT_CHECK(triangleOf_.size() == mesh_->triangles.size());
+  std::vector<uint32_t> place(triangleOf_.size());
+  corners_.reserve(triangleOf_.size());
+  for (uint32_t i = 0; i < triangleOf_.size(); ++i) {
+    place[triangleOf_[i]] = i;
+    const auto& t = mesh_->triangles[triangleOf_[i]];
+    const Vec3 &a = v[t[0]], &b = v[t[1]], &c = v[t[2]];
+    corners_.push_back({{a.x, a.y, a.z}, {b.x, b.y, b.z}, {c.x, c.y, c.z}});
+  }
+  bvh_.renameItems(place);
 }
 
 bool MeshBvh::nearest(const Ray& ray, double tMin, double& t, uint32_t& triangle) const {
@@ -33,9 +43,9 @@ bool MeshBvh::nearest(const Ray& ray, double tMin, double& t, uint32_t& triangle
   bvh_.traverse<true>(ray, tMin, t, [&](uint32_t index) {
     const Corners& c = corners[index];
     const TriangleHit h = triangleHit(sheared, c.a, c.b, c.c);
-    if (h.hit && h.t > tMin && (h.t < best || (h.t == best && index < bestTriangle))) {
+    if (h.hit && h.t > tMin && (h.t < best || (h.t == best && triangleOf_[index] < bestTriangle))) {
       best = h.t;
-      bestTriangle = index;
+      bestTriangle = triangleOf_[index];
     }
     return best;
   });
@@ -59,11 +69,11 @@ int MeshBvh::crossings(const Ray& ray, double tMin, double tMax) const {
 }
 
 Vec3 MeshBvh::normal(const Ray& ray, uint32_t triangle) const {
-  const Corners& c = corners_[triangle];
-  const Vec3 geometric = normalize(cross(c.b - c.a, c.c - c.a));
-  if (mesh_->normals.empty()) return geometric;
-  const TriangleHit h = triangleHit(ShearedRay(ray), c.a, c.b, c.c);
   const auto& t = mesh_->triangles[triangle];
+  const Vec3 &a = mesh_->vertices[t[0]], &b = mesh_->vertices[t[1]], &c = mesh_->vertices[t[2]];
+  const Vec3 geometric = normalize(cross(b - a, c - a));
+  if (mesh_->normals.empty()) return geometric;
+  const TriangleHit h = triangleHit(ShearedRay(ray), a, b, c);
   const std::vector<Vec3>& n = mesh_->normals;
   const Vec3 blend = h.u * n[t[0]] + h.v * n[t[1]] + h.w * n[t[2]];
   const double size = length(blend);

@@ -28,7 +28,10 @@ class MeshBvh {
   const Bounds& bounds() const { return bounds_; }
   size_t triangleCount() const { return corners_.size(); }
   // Memory held for tracing (tree and triangle corners), the mesh itself not counted.
-  size_t bytes() const { return bvh_.bytes() + corners_.capacity() * sizeof(Corners); }
+  size_t bytes() const {
+    return bvh_.bytes() + corners_.capacity() * sizeof(Corners) +
+           triangleOf_.capacity() * sizeof(uint32_t);
+  }
 
   // The nearest crossing within (tMin, tMax], ties to the lowest triangle index: true, with
   // t lowered to it and `triangle` set, or false with both unchanged. A crossing at tMax is
@@ -44,10 +47,13 @@ class MeshBvh {
 
  private:
   struct Corners {
-    Vec3 a, b, c;
+    double a[3], b[3], c[3];  // x, y, z each, for the test's permuted indexing
   };
   std::shared_ptr<const TriangleMesh> mesh_;
-  std::vector<Corners> corners_;  // per triangle, in the mesh's order
+  // Per triangle in the tree's order (the order a ray's traversal meets them in, near ones
+  // close in memory), its corners and its index in the mesh.
+  std::vector<Corners> corners_;
+  std::vector<uint32_t> triangleOf_;
   QuadBvh bvh_;
   Bounds bounds_;
 };

@@ -307,4 +307,33 @@ QuadBvh::QuadBvh(const std::vector<Bounds>& bounds, BvhBuild build) {
   nodes_.shrink_to_fit();  // a four-way node takes one to three binary ones
 }
 
+std::vector<uint32_t> QuadBvh::itemOrder() const {
+  std::vector<uint32_t> order;
+  if (nodes_.empty()) return order;
+  std::vector<uint32_t> stack{0};
+  while (!stack.empty()) {
+    const Node& n = nodes_[stack.back()];
+    stack.pop_back();
+    for (int lane = 3; lane >= 0; --lane) {  // pushed last to first: popped first to last
+      const uint32_t c = n.child[lane];
+      if (c == kEmpty) continue;
+      if (c & kItem) continue;
+      stack.push_back(c);
+    }
+    for (int lane = 0; lane < 4; ++lane) {
+      const uint32_t c = n.child[lane];
+      if (c != kEmpty && (c & kItem)) order.push_back(c & ~kItem);
+    }
+  }
+  return order;
+}
+
+void QuadBvh::renameItems(const std::vector<uint32_t>& newIndex) {
+  for (Node& n : nodes_) {
+    for (uint32_t& c : n.child) {
+      if (c != kEmpty && (c & kItem)) c = newIndex[c & ~kItem] | kItem;
+    }
+  }
+}
+
 }  // namespace prt

@@ -42,6 +42,13 @@ class QuadBvh {
   int depth() const { return depth_; }
   size_t bytes() const { return nodes_.capacity() * sizeof(Node); }
 
+  // The items in the order a traversal that enters every child, first lane first, meets them;
+  // and the same tree with item i renamed newIndex[i] (a permutation). Together they let a
+  // caller store its items in the tree's order, so that the items a ray meets lie close in
+  // memory.
+  std::vector<uint32_t> itemOrder() const;
+  void renameItems(const std::vector<uint32_t>& newIndex);
+
  private:
   static constexpr uint32_t kItem = 1u << 31;  // child reference: set for an item index
   static constexpr uint32_t kEmpty = ~0u;      // child reference: an unused lane

@@ -21,11 +21,11 @@ namespace prt {
 
 // A ray prepared for many triangle tests.
 struct ShearedRay {
-  Vec3 origin;
+  double origin[3];
   int kx = 0, ky = 1, kz = 2;  // the axes after the permutation: kz the largest direction
   double sx = 0, sy = 0, sz = 0;
 
-  explicit ShearedRay(const Ray& ray) : origin(ray.origin) {
+  explicit ShearedRay(const Ray& ray) : origin{ray.origin.x, ray.origin.y, ray.origin.z} {
     const Vec3& d = ray.direction;
     const double ax = std::abs(d.x), ay = std::abs(d.y), az = std::abs(d.z);
     kz = ax > ay ? (ax > az ? 0 : 2) : (ay > az ? 1 : 2);
@@ -45,21 +45,28 @@ struct TriangleHit {
   double t = 0, u = 0, v = 0, w = 0;
 };
 
-inline TriangleHit triangleHit(const ShearedRay& r, const Vec3& a, const Vec3& b, const Vec3& c) {
-  const Vec3 A = a - r.origin, B = b - r.origin, C = c - r.origin;
-  const double ax = A[r.kx] - r.sx * A[r.kz], ay = A[r.ky] - r.sy * A[r.kz];
-  const double bx = B[r.kx] - r.sx * B[r.kz], by = B[r.ky] - r.sy * B[r.kz];
-  const double cx = C[r.kx] - r.sx * C[r.kz], cy = C[r.ky] - r.sy * C[r.kz];
+// The corners as arrays of x, y, z, indexed by the ray's permuted axes directly.
+inline TriangleHit triangleHit(const ShearedRay& r, const double* a, const double* b,
+                               const double* c) {
+  const double* o = r.origin;
+  const double az = a[r.kz] - o[r.kz], bz = b[r.kz] - o[r.kz], cz = c[r.kz] - o[r.kz];
+  const double ax = (a[r.kx] - o[r.kx]) - r.sx * az, ay = (a[r.ky] - o[r.ky]) - r.sy * az;
+  const double bx = (b[r.kx] - o[r.kx]) - r.sx * bz, by = (b[r.ky] - o[r.ky]) - r.sy * bz;
+  const double cx = (c[r.kx] - o[r.kx]) - r.sx * cz, cy = (c[r.ky] - o[r.ky]) - r.sy * cz;
   const double u = cx * by - cy * bx;  // edge b-c, weight of a
   const double v = ax * cy - ay * cx;  // edge c-a, weight of b
   const double w = bx * ay - by * ax;  // edge a-b, weight of c
   if ((u < 0 || v < 0 || w < 0) && (u > 0 || v > 0 || w > 0)) return {};
   const double det = u + v + w;
   if (det == 0) return {};  // seen edge-on
-  const double t =
-      (u * (r.sz * A[r.kz]) + v * (r.sz * B[r.kz]) + w * (r.sz * C[r.kz])) / det;
+  const double t = (u * (r.sz * az) + v * (r.sz * bz) + w * (r.sz * cz)) / det;
   const double inv = 1.0 / det;
   return {true, t, u * inv, v * inv, w * inv};
+}
+
+inline TriangleHit triangleHit(const ShearedRay& r, const Vec3& a, const Vec3& b, const Vec3& c) {
+  const double pa[3] = {a.x, a.y, a.z}, pb[3] = {b.x, b.y, b.z}, pc[3] = {c.x, c.y, c.z};
+  return triangleHit(r, pa, pb, pc);
 }
 
 }  // namespace prt
