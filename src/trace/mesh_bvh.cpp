@@ -55,14 +55,17 @@ bool MeshBvh::nearest(const Ray& ray, double tMin, double& t, uint32_t& triangle
   return true;
 }
 
-int MeshBvh::crossings(const Ray& ray, double tMin, double tMax) const {
+int MeshBvh::crossings(const Ray& ray, double tMin, double tMax, bool atMostOne) const {
   const ShearedRay sheared(ray);
   const Corners* const corners = corners_.data();
   int count = 0;
   bvh_.traverse<false>(ray, tMin, tMax, [&](uint32_t index) {
     const Corners& c = corners[index];
     const TriangleHit h = triangleHit(sheared, c.a, c.b, c.c);
-    if (h.hit && h.t > tMin && h.t < tMax) ++count;
+    if (h.hit && h.t > tMin && h.t < tMax) {
+      ++count;
+      if (atMostOne) return -1.0;  // stops the traversal
+    }
     return tMax;
   });
   return count;

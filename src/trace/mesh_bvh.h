@@ -37,8 +37,9 @@ class MeshBvh {
   // t lowered to it and `triangle` set, or false with both unchanged. A crossing at tMax is
   // reported, so that the caller can break a tie with another object.
   bool nearest(const Ray& ray, double tMin, double& t, uint32_t& triangle) const;
-  // How many triangles the ray crosses within (tMin, tMax).
-  int crossings(const Ray& ray, double tMin, double tMax) const;
+  // How many triangles the ray crosses within (tMin, tMax); with `atMostOne`, stops at the
+  // first (0 or 1: whether any is crossed, all an opaque mesh's shadow ray needs).
+  int crossings(const Ray& ray, double tMin, double tMax, bool atMostOne = false) const;
   // The unit normal to shade with where the ray met `triangle` at distance t: the geometric
   // one (from the winding: counter-clockwise seen from its side), or the vertex normals
   // interpolated when the mesh has them, turned to the geometric one's side of the ray (the

@@ -133,6 +133,7 @@ TEST(MeshBvhTest, RaysFromInsideAClosedMeshCrossItOnce) {
     EXPECT_EQ(mesh.crossings(ray, 0, 100), 1);
     const Ray outside{inside + 10.0 * ray.direction, -ray.direction};
     EXPECT_EQ(mesh.crossings(outside, 0, 100), 2);
+    EXPECT_EQ(mesh.crossings(outside, 0, 100, true), 1);  // any crossing: the first will do
     EXPECT_EQ(mesh.crossings(outside, 0, 5), 0);  // stops short of the cube
   }
 }

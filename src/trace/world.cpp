@@ -280,7 +280,7 @@ double World::transmittance(const Ray& ray, double tMin, double distance,
       if (!s.hit) return distance;
       crossings = s.nearCrosses(tMin, distance) + s.farCrosses(tMin, distance);
     } else {
-      crossings = item.mesh->crossings(ray, tMin, distance);
+      crossings = item.mesh->crossings(ray, tMin, distance, item.transmissivity == 0);
       if (crossings == 0) return distance;
     }
     if (crossings == 0 ||
