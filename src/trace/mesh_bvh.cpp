@@ -42,9 +42,9 @@ bool MeshBvh::nearest(const Ray& ray, double tMin, double& t, uint32_t& triangle
   uint32_t bestTriangle = ~0u;
   bvh_.traverse<true>(ray, tMin, t, [&](uint32_t index) {
     const Corners& c = corners[index];
-    const TriangleHit h = triangleHit(sheared, c.a, c.b, c.c);
-    if (h.hit && h.t > tMin && (h.t < best || (h.t == best && triangleOf_[index] < bestTriangle))) {
-      best = h.t;
+    const double d = triangleDistance(sheared, c.a, c.b, c.c);  // NaN fails every test
+    if (d > tMin && (d < best || (d == best && triangleOf_[index] < bestTriangle))) {
+      best = d;
       bestTriangle = triangleOf_[index];
     }
     return best;
@@ -61,8 +61,8 @@ int MeshBvh::crossings(const Ray& ray, double tMin, double tMax, bool atMostOne)
   int count = 0;
   bvh_.traverse<false>(ray, tMin, tMax, [&](uint32_t index) {
     const Corners& c = corners[index];
-    const TriangleHit h = triangleHit(sheared, c.a, c.b, c.c);
-    if (h.hit && h.t > tMin && h.t < tMax) {
+    const double d = triangleDistance(sheared, c.a, c.b, c.c);
+    if (d > tMin && d < tMax) {
       ++count;
       if (atMostOne) return -1.0;  // stops the traversal
     }

@@ -45,9 +45,12 @@ struct TriangleHit {
   double t = 0, u = 0, v = 0, w = 0;
 };
 
-// The corners as arrays of x, y, z, indexed by the ray's permuted axes directly.
-inline TriangleHit triangleHit(const ShearedRay& r, const double* a, const double* b,
-                               const double* c) {
+namespace detail {
+// The test itself, written once: `hit(u, v, w, det, T)` makes the result from the edge
+// functions, their sum and the scaled distance's numerator (t = T / det).
+template <typename Hit, typename Miss>
+inline auto shearedTest(const ShearedRay& r, const double* a, const double* b, const double* c,
+                        Hit&& hit, Miss&& miss) {
   const double* o = r.origin;
   const double az = a[r.kz] - o[r.kz], bz = b[r.kz] - o[r.kz], cz = c[r.kz] - o[r.kz];
   const double ax = (a[r.kx] - o[r.kx]) - r.sx * az, ay = (a[r.ky] - o[r.ky]) - r.sy * az;
@@ -56,12 +59,32 @@ inline TriangleHit triangleHit(const ShearedRay& r, const double* a, const doubl
   const double u = cx * by - cy * bx;  // edge b-c, weight of a
   const double v = ax * cy - ay * cx;  // edge c-a, weight of b
   const double w = bx * ay - by * ax;  // edge a-b, weight of c
-  if ((u < 0 || v < 0 || w < 0) && (u > 0 || v > 0 || w > 0)) return {};
+  if ((u < 0 || v < 0 || w < 0) && (u > 0 || v > 0 || w > 0)) return miss();
   const double det = u + v + w;
-  if (det == 0) return {};  // seen edge-on
-  const double t = (u * (r.sz * az) + v * (r.sz * bz) + w * (r.sz * cz)) / det;
-  const double inv = 1.0 / det;
-  return {true, t, u * inv, v * inv, w * inv};
+  if (det == 0) return miss();  // seen edge-on
+  return hit(u, v, w, det, u * (r.sz * az) + v * (r.sz * bz) + w * (r.sz * cz));
+}
+}  // namespace detail
+
+// The corners as arrays of x, y, z, indexed by the ray's permuted axes directly.
+inline TriangleHit triangleHit(const ShearedRay& r, const double* a, const double* b,
+                               const double* c) {
+  return detail::shearedTest(
+      r, a, b, c,
+      [](double u, double v, double w, double det, double numerator) {
+        const double inv = 1.0 / det;
+        return TriangleHit{true, numerator / det, u * inv, v * inv, w * inv};
+      },
+      [] { return TriangleHit{}; });
+}
+
+// The distance alone, bit for bit triangleHit's t, or NaN where it misses (the hot loops need
+// no barycentric weights: one division fewer).
+inline double triangleDistance(const ShearedRay& r, const double* a, const double* b,
+                               const double* c) {
+  return detail::shearedTest(
+      r, a, b, c, [](double, double, double, double det, double numerator) { return numerator / det; },
+      [] { return std::numeric_limits<double>::quiet_NaN(); });
 }
 
 inline TriangleHit triangleHit(const ShearedRay& r, const Vec3& a, const Vec3& b, const Vec3& c) {
