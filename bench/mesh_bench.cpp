@@ -202,9 +202,13 @@ void rayTable(const std::string& file) {
   const MeshBvh bvh(loaded.mesh);
   std::printf("\n%s: %zu triangles\n%-11s %8s %14s %14s %8s\n", file.c_str(), bvh.triangleCount(),
               "rays", "hit_%", "prt_Mrays/s", "embree_Mrays/s", "ratio");
+#ifdef PRT_HAVE_EMBREE
+  const EmbreeMesh embree(*loaded.mesh);
+#endif
   for (const RaySet& set : raySets(bvh.bounds())) {
-    size_t hits = 0;
-    std::vector<double> prt;
+    // The two take turns, so that both meet the same spells of a shared machine's load.
+    size_t hits = 0, embreeHits = 0;
+    std::vector<double> prt, other;
     for (int run = 0; run < 5; ++run) {
       prt.push_back(seconds([&] {
         hits = 0;
@@ -214,18 +218,16 @@ void rayTable(const std::string& file) {
           hits += bvh.nearest(r, 0, t, triangle);
         }
       }));
+#ifdef PRT_HAVE_EMBREE
+      other.push_back(seconds([&] { embreeHits = embree.cast(set.rays); }));
+#endif
     }
     const double n = static_cast<double>(set.rays.size());
     const double prtRate = n / median(prt) / 1e6;
-    double embreeRate = 0;
-#ifdef PRT_HAVE_EMBREE
-    const EmbreeMesh embree(*loaded.mesh);
-    std::vector<double> times;
-    size_t embreeHits = 0;
-    for (int run = 0; run < 5; ++run) times.push_back(seconds([&] { embreeHits = embree.cast(set.rays); }));
-    embreeRate = n / median(times) / 1e6;
-    if (embreeHits != hits) std::printf("  (embree hit %zu rays, prt %zu)\n", embreeHits, hits);
-#endif
+    const double embreeRate = other.empty() ? 0.0 : n / median(other) / 1e6;
+    if (!other.empty() && embreeHits != hits) {
+      std::printf("  (embree hit %zu rays, prt %zu)\n", embreeHits, hits);
+    }
     std::printf("%-11s %8.1f %14.2f %14.2f %8.2f\n", set.name.c_str(),
                 100.0 * static_cast<double>(hits) / n, prtRate, embreeRate,
                 embreeRate > 0 ? prtRate / embreeRate : 0.0);

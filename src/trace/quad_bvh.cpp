@@ -181,9 +181,13 @@ uint32_t BinaryTree::binned(uint32_t begin, uint32_t end, int level, Bounds& box
     Bounds bins[3][kBins];
     uint32_t counts[3][kBins] = {};
     double scale[3];
+    // Large sets are binned along their longest axis alone, a third of the work where most
+    // of it is; below kAllAxes items every axis is tried.
+    constexpr uint32_t kAllAxes = 4096;
     for (int axis = 0; axis < 3; ++axis) {
       const double extent = centres.hi[axis] - centres.lo[axis];
-      scale[axis] = extent > 0 ? kBins / extent : 0;
+      const bool tried = count < kAllAxes || axis == bestAxis;
+      scale[axis] = extent > 0 && tried ? kBins / extent : 0;
     }
     auto binOf = [&](uint32_t item, int axis) {
       const auto b = static_cast<int>((centres_[item][axis] - centres.lo[axis]) * scale[axis]);
@@ -192,6 +196,7 @@ uint32_t BinaryTree::binned(uint32_t begin, uint32_t end, int level, Bounds& box
     for (uint32_t i = begin; i < end; ++i) {
       const uint32_t item = items_[i];
       for (int axis = 0; axis < 3; ++axis) {
+        if (scale[axis] == 0) continue;
         const int b = binOf(item, axis);
         bins[axis][b].extend(bounds_[item]);
         ++counts[axis][b];

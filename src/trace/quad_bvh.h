@@ -19,8 +19,8 @@ namespace prt {
 // How the binary tree is split. `careful` sweeps every split along the three axes and merges
 // small sets bottom-up: the best trees for the few hundred objects of a scene, but time and
 // memory grow faster than the count. `binned` evaluates the surface area heuristic at 16
-// planes per axis (Wald 2007), linear per level: a million triangles of a mesh in about a
-// second (bench/mesh_bench.cpp).
+// planes per axis (Wald 2007; for sets of 4096 items or more, along the longest axis only),
+// linear per level: a million triangles of a mesh in about a second (bench/mesh_bench.cpp).
 enum class BvhBuild { careful, binned };
 
 class QuadBvh {
