@@ -75,8 +75,8 @@ void buildTable() {
       }));
     }
     const double t = static_cast<double>(mesh->triangles.size());
-    const double meshBytes = static_cast<double>(mesh->vertices.size() * sizeof(Vec3) +
-                                                 mesh->triangles.size() * 12);
+    const double meshBytes =
+        static_cast<double>(mesh->vertices.size() * sizeof(Vec3) + mesh->triangles.size() * 12);
     std::printf("%-10zu %12.3f %12.1f %14.1f %14.1f\n", mesh->triangles.size(), median(times),
                 static_cast<double>(bytes) / 1e6, static_cast<double>(bytes) / t,
                 (static_cast<double>(bytes) + meshBytes) / t);
@@ -105,9 +105,10 @@ void worldTable() {
     }));
     trees.push_back(tree);
   }
-  std::printf("\nWorld of a 1 M-triangle mesh, 12 spheres, a plane, 3 lights: %.3f s, of which "
-              "the mesh's tree %.3f s\n",
-              median(total), median(trees));
+  std::printf(
+      "\nWorld of a 1 M-triangle mesh, 12 spheres, a plane, 3 lights: %.3f s, of which "
+      "the mesh's tree %.3f s\n",
+      median(total), median(trees));
 }
 
 struct RaySet {
@@ -150,15 +151,14 @@ struct EmbreeMesh {
   RTCScene scene = rtcNewScene(device);
   explicit EmbreeMesh(const TriangleMesh& mesh) {
     RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
-    auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0,
-                                                         RTC_FORMAT_FLOAT3, 3 * sizeof(float),
-                                                         mesh.vertices.size()));
+    auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(
+        g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), mesh.vertices.size()));
     for (size_t i = 0; i < mesh.vertices.size(); ++i) {
       for (int k = 0; k < 3; ++k) v[3 * i + k] = static_cast<float>(mesh.vertices[i][k]);
     }
     auto* t = static_cast<unsigned*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0,
-                                                            RTC_FORMAT_UINT3, 3 * sizeof(unsigned),
-                                                            mesh.triangles.size()));
+                                                             RTC_FORMAT_UINT3, 3 * sizeof(unsigned),
+                                                             mesh.triangles.size()));
     for (size_t i = 0; i < mesh.triangles.size(); ++i) {
       for (int k = 0; k < 3; ++k) t[3 * i + k] = mesh.triangles[i][k];
     }

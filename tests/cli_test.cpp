@@ -93,8 +93,8 @@ TEST_F(CliTest, MeshScenesRenderInParallelAsSerially) {
 }
 
 TEST_F(CliTest, MissingEmptyAndBinaryFilesAreOneLineErrors) {
-  for (const std::string& file :
-       {path("missing.scene"), write("empty.scene", ""), write("bin.scene", std::string("\0\1\2", 3))}) {
+  for (const std::string& file : {path("missing.scene"), write("empty.scene", ""),
+                                  write("bin.scene", std::string("\0\1\2", 3))}) {
     const Result r = run("render " + file + " -o " + path("out.png"));
     EXPECT_EQ(r.exitCode, 2) << file << ": " << r.output;
     EXPECT_NE(r.output.find("error"), std::string::npos) << r.output;

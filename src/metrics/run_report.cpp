@@ -38,7 +38,9 @@ RunReport makeReport(const RunInfo& info, const std::vector<Event>& events,
       sceneReceived = std::max(sceneReceived, e.start);
     }
   }
-  if (sceneSent >= 0 && sceneReceived >= sceneSent) r.sceneTransferSeconds = sceneReceived - sceneSent;
+  if (sceneSent >= 0 && sceneReceived >= sceneSent) {
+    r.sceneTransferSeconds = sceneReceived - sceneSent;
+  }
   for (const Event& e : events) {
     if (e.kind == EventKind::WorkerLost) {
       if (e.worker >= 0 && static_cast<size_t>(e.worker) < n) {
@@ -153,7 +155,8 @@ std::string RunReport::toTable() const {
                 asu ? opt(std::optional<double>(100 * *asu), "%.1f%%").c_str() : "n/a",
                 static_cast<unsigned long long>(messages), static_cast<unsigned long long>(bytes));
   out += line;
-  std::snprintf(line, sizeof line, "scene: %llu bytes, with every worker %.3f s after it was sent\n",
+  std::snprintf(line, sizeof line,
+                "scene: %llu bytes, with every worker %.3f s after it was sent\n",
                 static_cast<unsigned long long>(sceneBytes), sceneTransferSeconds);
   out += line;
   if (!speedup) out += "(speed-up and ASU need --serial-seconds T or --measure-serial)\n";

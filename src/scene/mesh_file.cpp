@@ -17,7 +17,9 @@
 namespace prt {
 namespace {
 
-std::string quoted(const std::string& path) { return "\"" + path + "\""; }
+std::string quoted(const std::string& path) {
+  return "\"" + path + "\"";
+}
 
 std::string readFile(const std::string& path) {
   std::error_code error;
@@ -43,7 +45,9 @@ Vec3 rotated(Vec3 p, const double sines[3], const double cosines[3]) {
   return p;
 }
 
-bool finite(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+bool finite(const Vec3& v) {
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
 
 void warnIf(std::vector<std::string>& warnings, size_t count, const std::string& what,
             const std::string& where) {
@@ -88,7 +92,8 @@ class VertexJoiner {
 
 LoadedMesh placeMesh(std::vector<Vec3> vertices, std::vector<std::array<uint32_t, 3>> triangles,
                      std::vector<Vec3> normals, const MeshSource& source) {
-  const std::string where = source.file.empty() ? std::string("triangles") : "mesh file " + quoted(source.file);
+  const std::string where =
+      source.file.empty() ? std::string("triangles") : "mesh file " + quoted(source.file);
   LoadedMesh out;
   auto mesh = std::make_shared<TriangleMesh>();
   double sines[3], cosines[3];
@@ -182,8 +187,8 @@ LoadedMesh loadMeshFile(const MeshSource& source) {
   const aiScene* scene = importer.ReadFile(
       path, aiProcess_Triangulate | aiProcess_PreTransformVertices | aiProcess_SortByPType);
   if (scene == nullptr) {
-    throw MeshFileError("mesh file " + quoted(path) + " could not be read: " +
-                        importer.GetErrorString());
+    throw MeshFileError("mesh file " + quoted(path) +
+                        " could not be read: " + importer.GetErrorString());
   }
   bool allNormals = scene->mNumMeshes > 0;
   for (unsigned m = 0; m < scene->mNumMeshes; ++m) allNormals &= scene->mMeshes[m]->HasNormals();
@@ -217,10 +222,12 @@ LoadedMesh loadMeshFile(const MeshSource& source) {
   }
   std::vector<Vec3> vertices = std::move(joiner.vertices), normals = std::move(joiner.normals);
   if (!allNormals) normals.clear();
-  LoadedMesh loaded = placeMesh(std::move(vertices), std::move(triangles), std::move(normals), source);
+  LoadedMesh loaded =
+      placeMesh(std::move(vertices), std::move(triangles), std::move(normals), source);
   if (outOfRange > 0) {
     loaded.warnings.push_back("mesh file " + quoted(path) + ": skipped " +
-                              std::to_string(outOfRange) + " triangles with a vertex index out of range");
+                              std::to_string(outOfRange) +
+                              " triangles with a vertex index out of range");
   }
   if (notTriangles > 0) {
     loaded.warnings.push_back("mesh file " + quoted(path) + ": skipped " +

@@ -2,6 +2,8 @@
 // `triangle` blocks, the transform, and what bad mesh files give (a located error, or
 // triangles skipped with a warning).
 
+#include "scene/mesh_file.h"
+
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -9,7 +11,6 @@
 #include <filesystem>
 #include <fstream>
 
-#include "scene/mesh_file.h"
 #include "scene/mesh_pack.h"
 #include "scene/scene_file.h"
 
@@ -21,8 +22,7 @@ namespace fs = std::filesystem;
 const std::string kPreamble = "camera { eye 0 0 -5 look_at 0 0 0 }\nimage { width 4 height 3 }\n";
 
 // A unit square in z = 0 as two triangles, counter-clockwise seen from +z.
-const std::string kSquareObj =
-    "# a square\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3\nf 1 3 4\n";
+const std::string kSquareObj = "# a square\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3\nf 1 3 4\n";
 
 class MeshFile : public ::testing::Test {
  protected:
@@ -75,8 +75,8 @@ TEST_F(MeshFile, AsciiAndBinaryPlyGiveTheSameMesh) {
   const std::string header =
       "element vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
       "element face 2\nproperty list uchar int vertex_indices\nend_header\n";
-  write("models/a.ply", "ply\nformat ascii 1.0\n" + header +
-                            "0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 2 3\n");
+  write("models/a.ply",
+        "ply\nformat ascii 1.0\n" + header + "0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 2 3\n");
   std::string binary = "ply\nformat binary_little_endian 1.0\n" + header;
   const float xyz[4][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
   binary.append(reinterpret_cast<const char*>(xyz), sizeof xyz);
@@ -108,7 +108,8 @@ TEST_F(MeshFile, MirroringScaleKeepsTheTrianglesFacingOut) {
   const Scene scene = load("mesh { file \"models/square.obj\" scale -1 1 1 }\n");
   const TriangleMesh& mesh = meshOf(scene);
   const auto& t = mesh.triangles[0];
-  const Vec3 n = cross(mesh.vertices[t[1]] - mesh.vertices[t[0]], mesh.vertices[t[2]] - mesh.vertices[t[0]]);
+  const Vec3 n =
+      cross(mesh.vertices[t[1]] - mesh.vertices[t[0]], mesh.vertices[t[2]] - mesh.vertices[t[0]]);
   EXPECT_GT(n.z, 0);
 }
 
@@ -195,7 +196,8 @@ TEST_F(MeshFile, DegenerateTrianglesAreSkippedWithAWarning) {
   const Scene scene = load("mesh { file \"models/some.obj\" }\n");
   EXPECT_EQ(meshOf(scene).triangles.size(), 1u);
   ASSERT_EQ(scene.warnings.size(), 1u);
-  EXPECT_NE(scene.warnings[0].find("test.scene:3: mesh file"), std::string::npos) << scene.warnings[0];
+  EXPECT_NE(scene.warnings[0].find("test.scene:3: mesh file"), std::string::npos)
+      << scene.warnings[0];
   EXPECT_NE(scene.warnings[0].find("skipped 1 triangle of zero area"), std::string::npos)
       << scene.warnings[0];
   // Only degenerate ones: nothing left to trace.
@@ -228,7 +230,8 @@ TEST_F(MeshFile, BadBlockValuesArePointedAt) {
   write("models/square.obj", kSquareObj);
   EXPECT_NE(errorOf("mesh { file \"models/square.obj\" scale 1 0 1 }\n").find("3:41: error"),
             std::string::npos);
-  EXPECT_NE(errorOf("triangle { vertices 0 0 0  1 1 1  2 2 2 }\n").find("no area"), std::string::npos);
+  EXPECT_NE(errorOf("triangle { vertices 0 0 0  1 1 1  2 2 2 }\n").find("no area"),
+            std::string::npos);
   EXPECT_NE(errorOf("mesh { scale 2 }\n").find("file"), std::string::npos);
 }
 
@@ -259,7 +262,8 @@ TEST_F(MeshFile, MalformedPackedMeshesAreRefused) {
   write("models/square.obj", kSquareObj);
   const std::vector<uint8_t> bytes = packMeshes(load("mesh { file \"models/square.obj\" }\n"));
   for (size_t size : {size_t{0}, size_t{7}, size_t{30}, bytes.size() - 1}) {
-    EXPECT_THROW(unpackMeshes(std::vector<uint8_t>(bytes.begin(), bytes.begin() + static_cast<std::ptrdiff_t>(size))),
+    EXPECT_THROW(unpackMeshes(std::vector<uint8_t>(
+                     bytes.begin(), bytes.begin() + static_cast<std::ptrdiff_t>(size))),
                  std::runtime_error)
         << size;
   }

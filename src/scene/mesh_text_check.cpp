@@ -103,17 +103,20 @@ void checkObj(std::string_view text, const std::string& file) {
     const std::string_view key = words[0];
     if (key == "v" || key == "vn" || key == "vt") {
       const size_t least = key == "vt" ? 1 : 3;
-      const char* what = key == "v" ? "a vertex coordinate"
-                         : key == "vn" ? "a normal component" : "a texture coordinate";
+      const char* what = key == "v"    ? "a vertex coordinate"
+                         : key == "vn" ? "a normal component"
+                                       : "a texture coordinate";
       if (words.size() < least + 1) {
-        fail(file, line, quote(key) + " needs " + std::to_string(least) + " numbers, found " +
-                             std::to_string(words.size() - 1));
+        fail(file, line,
+             quote(key) + " needs " + std::to_string(least) + " numbers, found " +
+                 std::to_string(words.size() - 1));
       }
       for (size_t i = 1; i < words.size(); ++i) number(words[i], file, line, what);
       ++seen[key == "v" ? 0 : key == "vt" ? 1 : 2];
     } else if (key == "f") {
       if (words.size() < 4) {
-        fail(file, line, "a face needs at least 3 corners, found " + std::to_string(words.size() - 1));
+        fail(file, line,
+             "a face needs at least 3 corners, found " + std::to_string(words.size() - 1));
       }
       for (size_t i = 1; i < words.size(); ++i) {
         // v, v/t, v//n or v/t/n
@@ -123,15 +126,16 @@ void checkObj(std::string_view text, const std::string& file) {
           const std::string_view index = corner.substr(0, slash);
           corner = slash == std::string_view::npos ? std::string_view() : corner.substr(slash + 1);
           if (index.empty() && part > 0) continue;  // v//n leaves the texture out
-          static constexpr const char* kWhat[] = {"a vertex index", "a texture index", "a normal index"};
+          static constexpr const char* kWhat[] = {"a vertex index", "a texture index",
+                                                  "a normal index"};
           static constexpr const char* kNoun[] = {"vertices", "texture coordinates", "normals"};
           const long long k = integer(index, file, line, kWhat[part]);
           const long long resolved = k < 0 ? seen[part] + 1 + k : k;
           if (k == 0 || resolved < 1 || resolved > counts[part]) {
-            fail(file, line, std::string(kWhat[part]) + " " + quote(index) +
-                                 " is out of range: the file has " +
-                                 std::to_string(counts[part]) + " " + kNoun[part] +
-                                 (k < 0 ? " (" + std::to_string(seen[part]) + " before this line)" : ""));
+            fail(file, line,
+                 std::string(kWhat[part]) + " " + quote(index) + " is out of range: the file has " +
+                     std::to_string(counts[part]) + " " + kNoun[part] +
+                     (k < 0 ? " (" + std::to_string(seen[part]) + " before this line)" : ""));
           }
         }
       }
@@ -181,26 +185,31 @@ void checkAsciiPly(std::string_view text, const std::string& file) {
   for (const Element& e : elements) {
     for (long long i = 0; i < e.count; ++i) {
       if (!lines.next(words)) {
-        fail(file, lines.number() + 1, "the file ends after " + std::to_string(i) + " of the " +
-                                       std::to_string(e.count) + " " + std::string(e.name) +
-                                       " lines its header promises");
+        fail(file, lines.number() + 1,
+             "the file ends after " + std::to_string(i) + " of the " + std::to_string(e.count) +
+                 " " + std::string(e.name) + " lines its header promises");
       }
       const int line = lines.number();
       size_t w = 0;
       for (const Property& p : e.properties) {
-        const bool corners = e.name == "face" && (p.name == "vertex_indices" || p.name == "vertex_index");
+        const bool corners =
+            e.name == "face" && (p.name == "vertex_indices" || p.name == "vertex_index");
         if (!p.list) {
-          if (w >= words.size()) fail(file, line, "too few values on this " + std::string(e.name) + " line");
+          if (w >= words.size())
+            fail(file, line, "too few values on this " + std::string(e.name) + " line");
           number(words[w++], file, line, "a property value");
           continue;
         }
-        if (w >= words.size()) fail(file, line, "too few values on this " + std::string(e.name) + " line");
+        if (w >= words.size())
+          fail(file, line, "too few values on this " + std::string(e.name) + " line");
         const long long n = integer(words[w++], file, line, "a list length");
         if (n < 0 || static_cast<size_t>(n) > words.size() - w) {
-          fail(file, line, "the list promises " + std::to_string(n) + " values, the line has " +
-                               std::to_string(words.size() - w));
+          fail(file, line,
+               "the list promises " + std::to_string(n) + " values, the line has " +
+                   std::to_string(words.size() - w));
         }
-        if (corners && n < 3) fail(file, line, "a face needs at least 3 corners, found " + std::to_string(n));
+        if (corners && n < 3)
+          fail(file, line, "a face needs at least 3 corners, found " + std::to_string(n));
         for (long long k = 0; k < n; ++k) {
           if (!corners) {
             number(words[w++], file, line, "a list value");
@@ -208,16 +217,18 @@ void checkAsciiPly(std::string_view text, const std::string& file) {
           }
           const long long index = integer(words[w], file, line, "a vertex index");
           if (index < 0 || index >= vertices) {
-            fail(file, line, "vertex index " + quote(words[w]) + " is out of range: the file has " +
-                                 std::to_string(vertices) + " vertices (indices 0 to " +
-                                 std::to_string(vertices - 1) + ")");
+            fail(file, line,
+                 "vertex index " + quote(words[w]) + " is out of range: the file has " +
+                     std::to_string(vertices) + " vertices (indices 0 to " +
+                     std::to_string(vertices - 1) + ")");
           }
           ++w;
         }
       }
       if (w != words.size()) {
-        fail(file, line, "this " + std::string(e.name) + " line has " + std::to_string(words.size()) +
-                             " values, its header declares " + std::to_string(w));
+        fail(file, line,
+             "this " + std::string(e.name) + " line has " + std::to_string(words.size()) +
+                 " values, its header declares " + std::to_string(w));
       }
     }
   }

@@ -9,7 +9,7 @@
 
 #include "scene/block_reader.h"
 #include "scene/keywords.h"
-#include "scene/mesh_file.h"
+#include "scene/mesh_block.h"
 #include "scene/number_text.h"
 #include "scene/scene_file.h"
 #include "scene/surface_parser.h"
@@ -18,14 +18,11 @@
 namespace prt {
 namespace {
 
-// Positions and sizes beyond this are surely mistakes, and squaring them must not overflow.
-constexpr double kMaxCoordinate = 1e9;
 constexpr int kMaxImageSide = 32768;
 // An RGBA float image of 2^28 pixels already takes 4 GiB; larger ones do not fit in memory.
 constexpr int64_t kMaxImagePixels = int64_t{1} << 28;
 constexpr const char* kImageExtensions[] = {".png", ".ppm", ".pfm"};
 
-const Range kCoordinate = Range::closed(-kMaxCoordinate, kMaxCoordinate);
 const Range kSize = Range{0, kMaxCoordinate, true, false};  // in (0, kMaxCoordinate]
 
 std::string at(const Token& token) {
@@ -53,8 +50,8 @@ class SceneParser {
  public:
   SceneParser(const SourceText& source, const ShippedMeshes* shipped)
       : in_(source),
-        directory_(std::filesystem::path(source.fileName()).parent_path()),
-        shipped_(shipped) {}
+        meshes_{in_, materials_, scene_.warnings,
+                std::filesystem::path(source.fileName()).parent_path(), shipped} {}
 
   Scene run() {
     while (!in_.atEnd()) directive(in_.next());
@@ -329,107 +326,17 @@ class SceneParser {
     scene_.objects.push_back(object);
   }
 
-  // A scale of one number (all axes) or three, none of them zero.
-  Vec3 readScale(const std::string& name) {
-    size_t at[3];
-    double value[3];
-    int given = 0;
-    do {
-      at[given] = in_.position();
-      value[given] = readNumber(in_, name, kCoordinate);
-      ++given;
-    } while (given < 3 && (given > 1 || in_.peek().kind == TokenKind::Number));
-    for (int i = 0; i < given; ++i) {
-      if (value[i] == 0) {
-        in_.fail(in_.at(at[i]), "the mesh's 'scale' must not be zero: it would flatten the mesh");
-      }
-    }
-    return given == 1 ? Vec3(value[0]) : Vec3(value[0], value[1], value[2]);
-  }
-
   void mesh(const Token& keyword) {
-    Object object{MeshShape{}, Material{}};
-    MeshSource source;
-    BlockReader block(in_, keyword, "mesh",
-                      {"file", "scale", "rotate", "translate", "smooth", "surface"});
-    while (const Token* param = block.next()) {
-      const std::string& name = param->text;
-      if (name == "file") source.file = readString(in_, name);
-      if (name == "scale") source.scale = readScale(name);
-      if (name == "rotate") source.rotateDegrees = readVector(in_, name, Range::closed(-36000, 36000));
-      if (name == "translate") source.translate = readVector(in_, name, kCoordinate);
-      if (name == "smooth") source.smooth = true;
-      if (name == "surface") surface(*param, object.material);
-    }
-    block.require({"file"});
-    const Token& fileToken = block.valueToken("file");
-    if (source.file.empty()) in_.fail(fileToken, "the mesh's 'file' must not be empty");
-    // Relative to the scene file's directory.
-    std::filesystem::path path(source.file);
-    if (path.is_relative()) path = directory_ / path;
-    source.file = std::filesystem::absolute(path).lexically_normal().string();
-    LoadedMesh loaded;
-    if (shipped_ != nullptr) {
-      if (shippedUsed_ == shipped_->size()) {
-        in_.fail(fileToken, "the scene has more meshes than were sent with it (" +
-                                std::to_string(shipped_->size()) + ")");
-      }
-      // Sent as read: a copy would be the same doubles (and the same warnings, given already).
-      loaded.mesh = std::const_pointer_cast<TriangleMesh>((*shipped_)[shippedUsed_++]);
-    } else {
-      try {
-        loaded = loadMeshFile(source);
-      } catch (const MeshFileError& e) {
-        in_.fail(fileToken, e.what());
-      }
-    }
-    addMesh(std::move(object), std::move(loaded), std::move(source), fileToken);
+    scene_.objects.push_back(readMeshBlock(meshes_, keyword));
   }
-
   void triangle(const Token& keyword) {
-    Object object{MeshShape{}, Material{}};
-    std::vector<Vec3> corners;
-    BlockReader block(in_, keyword, "triangle", {"vertices", "surface"});
-    while (const Token* param = block.next()) {
-      const std::string& name = param->text;
-      if (name == "vertices") {
-        for (int i = 0; i < 3; ++i) corners.push_back(readVector(in_, name, kCoordinate));
-      }
-      if (name == "surface") surface(*param, object.material);
-    }
-    block.require({"vertices"});
-    const Token& at = block.valueToken("vertices");
-    LoadedMesh loaded;
-    try {
-      loaded = placeMesh(corners, {{0, 1, 2}}, {}, MeshSource{});
-    } catch (const MeshFileError&) {
-      in_.fail(at, "the triangle's three vertices lie on one line (or coincide): it has no area");
-    }
-    addMesh(std::move(object), std::move(loaded), MeshSource{}, at);
-  }
-
-  void addMesh(Object object, LoadedMesh loaded, MeshSource source, const Token& at) {
-    for (const Vec3& v : loaded.mesh->vertices) {
-      if (!(std::abs(v.x) <= kMaxCoordinate && std::abs(v.y) <= kMaxCoordinate &&
-            std::abs(v.z) <= kMaxCoordinate)) {
-        in_.fail(at, "the mesh reaches beyond " + formatDouble(kMaxCoordinate) +
-                         " world units once placed (a vertex at " + formatDouble(v.x) + " " +
-                         formatDouble(v.y) + " " + formatDouble(v.z) + ")");
-      }
-    }
-    for (std::string& w : loaded.warnings) {
-      scene_.warnings.push_back(in_.source().fileName() + ":" + std::to_string(at.line) + ": " + w);
-    }
-    object.shape = MeshShape{std::move(loaded.mesh), std::move(source)};
-    scene_.objects.push_back(std::move(object));
+    scene_.objects.push_back(readTriangleBlock(meshes_, keyword));
   }
 
   TokenStream in_;
-  std::filesystem::path directory_;  // of the scene file: mesh files are found from there
-  const ShippedMeshes* shipped_;      // if not null, the meshes to take instead of the files
-  size_t shippedUsed_ = 0;
   Scene scene_;
   MaterialTable materials_;
+  MeshBlocks meshes_;
   const Token* camera_ = nullptr;  // where each once-only block was given, if it was
   const Token* image_ = nullptr;
   const Token* environment_ = nullptr;

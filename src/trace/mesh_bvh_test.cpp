@@ -72,7 +72,9 @@ TEST(MeshBvhTest, NoRaySlipsThroughSharedEdgesOrVertices) {
     // On the diagonal of square (a, b), shared by its two triangles.
     const double a = std::floor(rng.uniform() * 6), b = std::floor(rng.uniform() * 6);
     const double f = rng.uniform();
-    const Vec3 targets[4] = {{k, s, 0}, {s, k, 0}, {a + f, b + f, 0},
+    const Vec3 targets[4] = {{k, s, 0},
+                             {s, k, 0},
+                             {a + f, b + f, 0},
                              {k, 1 + std::floor(rng.uniform() * 5), 0}};  // a vertex
     const Vec3 target = targets[i % 4];
     const Vec3 offset(rng.uniform() * 4 - 2, rng.uniform() * 4 - 2, i % 2 ? 3.0 : -3.0);
@@ -95,7 +97,8 @@ TEST(MeshBvhTest, NearestMatchesEveryTriangleTriedInTurn) {
     Ray ray = randomRay(rng);
     if (i % 10 == 0) {  // straight at triangle 7's centre
       const auto& t = soup->triangles[7];
-      const Vec3 centre = (soup->vertices[t[0]] + soup->vertices[t[1]] + soup->vertices[t[2]]) / 3.0;
+      const Vec3 centre =
+          (soup->vertices[t[0]] + soup->vertices[t[1]] + soup->vertices[t[2]]) / 3.0;
       ray.direction = normalize(centre - ray.origin);
     }
     const ShearedRay sheared(ray);
@@ -128,13 +131,15 @@ TEST(MeshBvhTest, RaysFromInsideAClosedMeshCrossItOnce) {
   const MeshBvh mesh(cube());
   Rng rng(9);
   for (int i = 0; i < 1000; ++i) {
-    const Vec3 inside(rng.uniform() * 1.8 - 0.9, rng.uniform() * 1.8 - 0.9, rng.uniform() * 1.8 - 0.9);
-    const Ray ray{inside, normalize(Vec3(rng.uniform() - 0.5, rng.uniform() - 0.5, rng.uniform() - 0.5))};
+    const Vec3 inside(rng.uniform() * 1.8 - 0.9, rng.uniform() * 1.8 - 0.9,
+                      rng.uniform() * 1.8 - 0.9);
+    const Ray ray{inside,
+                  normalize(Vec3(rng.uniform() - 0.5, rng.uniform() - 0.5, rng.uniform() - 0.5))};
     EXPECT_EQ(mesh.crossings(ray, 0, 100), 1);
     const Ray outside{inside + 10.0 * ray.direction, -ray.direction};
     EXPECT_EQ(mesh.crossings(outside, 0, 100), 2);
     EXPECT_EQ(mesh.crossings(outside, 0, 100, true), 1);  // any crossing: the first will do
-    EXPECT_EQ(mesh.crossings(outside, 0, 5), 0);  // stops short of the cube
+    EXPECT_EQ(mesh.crossings(outside, 0, 5), 0);          // stops short of the cube
   }
 }
 

@@ -24,9 +24,7 @@ std::shared_ptr<TriangleMesh> torus(const Vec3& centre, double tube, int around,
       mesh->vertices.push_back(centre + Vec3(r * std::cos(u), tube * std::sin(v), r * std::sin(u)));
     }
   }
-  auto at = [&](int i, int j) {
-    return static_cast<uint32_t>((i % around) * sides + (j % sides));
-  };
+  auto at = [&](int i, int j) { return static_cast<uint32_t>((i % around) * sides + (j % sides)); };
   for (int i = 0; i < around; ++i) {
     for (int j = 0; j < sides; ++j) {
       mesh->triangles.push_back({at(i, j), at(i, j + 1), at(i + 1, j + 1)});
@@ -141,7 +139,8 @@ TEST(MeshWorldTest, RaysFromInsideANonConvexMeshMatchTheTree) {
     const double u = rng.uniform() * 2 * M_PI, v = rng.uniform() * 2 * M_PI;
     const double r = 1 + 0.2 * std::cos(v);
     const Vec3 inside(r * std::cos(u), 1 + 0.2 * std::sin(v), r * std::sin(u));
-    const Ray ray{inside, normalize(Vec3(rng.uniform() - 0.5, rng.uniform() - 0.5, rng.uniform() - 0.5))};
+    const Ray ray{inside,
+                  normalize(Vec3(rng.uniform() - 0.5, rng.uniform() - 0.5, rng.uniform() - 0.5))};
     Hit a, b;
     const bool found = world.intersect(ray, 0, std::numeric_limits<double>::infinity(), a);
     ASSERT_EQ(world.intersectFromInside(0, ray, b), found);

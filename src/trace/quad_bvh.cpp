@@ -231,8 +231,9 @@ uint32_t BinaryTree::binned(uint32_t begin, uint32_t end, int level, Bounds& box
       }
     }
     if (bestSplit > 0) {
-      const auto middle = std::partition(items_.begin() + begin, items_.begin() + end,
-                                         [&](uint32_t item) { return binOf(item, bestAxis) < bestSplit; });
+      const auto middle =
+          std::partition(items_.begin() + begin, items_.begin() + end,
+                         [&](uint32_t item) { return binOf(item, bestAxis) < bestSplit; });
       mid = static_cast<uint32_t>(middle - items_.begin());
     }
   }

@@ -83,7 +83,8 @@ inline TriangleHit triangleHit(const ShearedRay& r, const double* a, const doubl
 inline double triangleDistance(const ShearedRay& r, const double* a, const double* b,
                                const double* c) {
   return detail::shearedTest(
-      r, a, b, c, [](double, double, double, double det, double numerator) { return numerator / det; },
+      r, a, b, c,
+      [](double, double, double, double det, double numerator) { return numerator / det; },
       [] { return std::numeric_limits<double>::quiet_NaN(); });
 }
 
