@@ -130,6 +130,23 @@ TEST_F(MeshFile, SmoothComputesUnitVertexNormals) {
   EXPECT_TRUE(ridge);
 }
 
+// Normals given in the file are kept, turned with the mesh and scaled by its inverse
+// (a normal stays perpendicular to a surface stretched along x).
+TEST_F(MeshFile, NormalsFromTheFileAreTurnedWithTheMesh) {
+  write("models/n.obj",
+        "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 1 0 1\nvn 1 0 1\nvn 1 0 1\nf 1//1 2//2 3//3\n");
+  const Scene scene = load("mesh { file \"models/n.obj\" scale 2 1 1 rotate 0 0 90 }\n");
+  const TriangleMesh& mesh = meshOf(scene);
+  ASSERT_EQ(mesh.normals.size(), 3u);
+  // (1, 0, 1) scaled by (1/2, 1, 1): (0.5, 0, 1); turned 90 degrees about z: (0, 0.5, 1).
+  const Vec3 expected = normalize(Vec3(0, 0.5, 1));
+  for (const Vec3& n : mesh.normals) {
+    EXPECT_NEAR(n.x, expected.x, 1e-12);
+    EXPECT_NEAR(n.y, expected.y, 1e-12);
+    EXPECT_NEAR(n.z, expected.z, 1e-12);
+  }
+}
+
 TEST_F(MeshFile, TriangleBlocksAndTheirWrittenFormRoundTrip) {
   write("models/square.obj", kSquareObj);
   const Scene scene = load(
