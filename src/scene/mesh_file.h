@@ -1,14 +1,17 @@
 #pragma once
 // Mesh files: the triangles of a `mesh` block, read with the Open Asset Import Library
 // (assimp: OBJ, PLY in ASCII and binary, STL, glTF and the other formats it knows), placed by
-// the block's transform, and checked. Text formats (OBJ, ASCII PLY) are first checked line by
-// line (mesh_text_check.h) so that a malformed line is reported by its number, which assimp
-// does not give and, for OBJ, often reads silently as zeros.
+// the block's transform, and checked. OBJ and PLY files are first checked (mesh_text_check.h):
+// text ones line by line, so that a malformed line is reported by its number, which assimp
+// does not give and, for OBJ, often reads silently as zeros; binary PLY record by record,
+// which assimp does not do before it reads out of bounds.
 //
 // What is refused and what is skipped:
-//   - a missing, unreadable or malformed file, a malformed line, an index out of range in a
-//     text file, a non-finite number in a text file, or no usable triangle: MeshFileError;
-//   - in a binary file, a triangle with an index out of range or a vertex that is not finite,
+//   - a missing, unreadable or malformed file, a malformed line, an index out of range in an
+//     OBJ or PLY file, a non-finite number in a text file, a truncated binary PLY file, or no
+//     usable triangle: MeshFileError;
+//   - in a binary file, a triangle with a vertex that is not finite (or, in formats other than
+//     OBJ and PLY, an index out of range),
 //     and in any file a triangle of zero area (after the transform) or a face that is not a
 //     triangle (points, lines): skipped, with one warning per kind saying how many.
 // Pure apart from reading the file; thread-safe.

@@ -208,6 +208,32 @@ TEST_F(MeshFile, TruncatedAndGarbageFilesAreRefused) {
   EXPECT_NE(errorOf("mesh { file \"models/empty.obj\" }\n").find("is empty"), std::string::npos);
 }
 
+// Binary PLY files that assimp would crash on are refused first, naming the record.
+TEST_F(MeshFile, BrokenBinaryPlyIsRefusedBeforeItIsRead) {
+  const std::string header =
+      "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\n"
+      "property float y\nproperty float z\nelement face 1\n"
+      "property list uchar int vertex_indices\nend_header\n";
+  const float xyz[3][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  std::string body(reinterpret_cast<const char*>(xyz), sizeof xyz);
+  auto face = [](int32_t a, int32_t b, int32_t c, uint8_t n = 3) {
+    const int32_t corners[3] = {a, b, c};
+    return std::string(1, static_cast<char>(n)) +
+           std::string(reinterpret_cast<const char*>(corners), sizeof corners);
+  };
+  write("models/short.ply", header + body.substr(0, 20));
+  EXPECT_NE(errorOf("mesh { file \"models/short.ply\" }\n").find("vertex 2 of 3"),
+            std::string::npos);
+  write("models/far.ply", header + body + face(0, 1, 7));
+  EXPECT_NE(errorOf("mesh { file \"models/far.ply\" }\n").find("face 1 of 1"), std::string::npos);
+  EXPECT_NE(errorOf("mesh { file \"models/far.ply\" }\n").find("vertex index 7 is out of range"),
+            std::string::npos);
+  write("models/long.ply", header + body + face(0, 1, 2, 200));
+  EXPECT_NE(errorOf("mesh { file \"models/long.ply\" }\n").find("list of 200"), std::string::npos);
+  write("models/good.ply", header + body + face(0, 1, 2));
+  EXPECT_EQ(meshOf(load("mesh { file \"models/good.ply\" }\n")).triangles.size(), 1u);
+}
+
 TEST_F(MeshFile, DegenerateTrianglesAreSkippedWithAWarning) {
   write("models/some.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 2 0 0\nf 1 2 3\nf 1 2 4\n");
   const Scene scene = load("mesh { file \"models/some.obj\" }\n");

@@ -36,6 +36,7 @@ class Lines {
     return true;
   }
   int number() const { return number_; }
+  size_t offset() const { return pos_; }  // of the next line's first byte
 
  private:
   std::string_view text_;
@@ -143,46 +144,68 @@ void checkObj(std::string_view text, const std::string& file) {
   }
 }
 
-void checkAsciiPly(std::string_view text, const std::string& file) {
-  struct Property {
-    std::string_view name;
-    bool list = false;
-  };
-  struct Element {
-    std::string_view name;
-    long long count = 0;
-    std::vector<Property> properties;
-  };
-  std::vector<Element> elements;
+struct PlyProperty {
+  std::string_view name;
+  bool list = false;
+  std::string_view type, countType;  // a list's items are `type`, its length `countType`
+};
+struct PlyElement {
+  std::string_view name;
+  long long count = 0;
+  std::vector<PlyProperty> properties;
+};
+struct PlyHeader {
+  std::vector<PlyElement> elements;
+  std::string_view format;  // ascii, binary_little_endian or binary_big_endian
+  long long vertices = 0;
+};
+
+bool isFaceCorners(const PlyElement& e, const PlyProperty& p) {
+  return e.name == "face" && (p.name == "vertex_indices" || p.name == "vertex_index");
+}
+
+// Reads the header; `lines` is left at the first line (or byte) after `end_header`.
+PlyHeader readPlyHeader(Lines& lines, const std::string& file) {
+  PlyHeader h;
   std::vector<std::string_view> words;
-  Lines lines(text, false);
   bool ended = false;
   while (!ended && lines.next(words)) {
     const int line = lines.number();
-    if (words.empty() || words[0] == "comment" || words[0] == "obj_info" || words[0] == "ply" ||
-        words[0] == "format") {
+    if (words.empty() || words[0] == "comment" || words[0] == "obj_info" || words[0] == "ply") {
       continue;
     }
-    if (words[0] == "end_header") {
+    if (words[0] == "format" && words.size() == 3) {
+      h.format = words[1];
+      if (h.format != "ascii" && h.format != "binary_little_endian" &&
+          h.format != "binary_big_endian") {
+        fail(file, line, "unknown PLY format " + quote(h.format));
+      }
+    } else if (words[0] == "end_header") {
       ended = true;
     } else if (words[0] == "element" && words.size() == 3) {
       const long long count = integer(words[2], file, line, "an element count");
       if (count < 0) fail(file, line, "element " + quote(words[1]) + " has a negative count");
-      elements.push_back({words[1], count, {}});
-    } else if (words[0] == "property" && !elements.empty() && words.size() >= 3) {
+      h.elements.push_back({words[1], count, {}});
+      if (words[1] == "vertex") h.vertices = count;
+    } else if (words[0] == "property" && !h.elements.empty() && words.size() >= 3) {
       const bool list = words[1] == "list";
       if (list && words.size() != 5) fail(file, line, "malformed list property");
-      elements.back().properties.push_back({words.back(), list});
+      if (!list && words.size() != 3) fail(file, line, "malformed property");
+      PlyProperty p{words.back(), list, list ? words[3] : words[1], list ? words[2] : ""};
+      h.elements.back().properties.push_back(p);
     } else {
       fail(file, line, "malformed PLY header line starting " + quote(words[0]));
     }
   }
   if (!ended) fail(file, lines.number(), "the PLY header has no 'end_header'");
-  long long vertices = 0;
-  for (const Element& e : elements) {
-    if (e.name == "vertex") vertices = e.count;
-  }
-  for (const Element& e : elements) {
+  return h;
+}
+
+void checkAsciiPly(Lines& lines, const PlyHeader& header, const std::string& file) {
+  const std::vector<PlyElement>& elements = header.elements;
+  std::vector<std::string_view> words;
+  const long long vertices = header.vertices;
+  for (const PlyElement& e : elements) {
     for (long long i = 0; i < e.count; ++i) {
       if (!lines.next(words)) {
         fail(file, lines.number() + 1,
@@ -191,9 +214,8 @@ void checkAsciiPly(std::string_view text, const std::string& file) {
       }
       const int line = lines.number();
       size_t w = 0;
-      for (const Property& p : e.properties) {
-        const bool corners =
-            e.name == "face" && (p.name == "vertex_indices" || p.name == "vertex_index");
+      for (const PlyProperty& p : e.properties) {
+        const bool corners = isFaceCorners(e, p);
         if (!p.list) {
           if (w >= words.size())
             fail(file, line, "too few values on this " + std::string(e.name) + " line");
@@ -234,6 +256,98 @@ void checkAsciiPly(std::string_view text, const std::string& file) {
   }
 }
 
+// Bytes of a PLY scalar type; 0 for an unknown name.
+int plySize(std::string_view type) {
+  if (type == "char" || type == "uchar" || type == "int8" || type == "uint8") return 1;
+  if (type == "short" || type == "ushort" || type == "int16" || type == "uint16") return 2;
+  if (type == "int" || type == "uint" || type == "int32" || type == "uint32" || type == "float" ||
+      type == "float32") {
+    return 4;
+  }
+  if (type == "double" || type == "float64") return 8;
+  return 0;
+}
+
+bool plyIsFloat(std::string_view type) {
+  return type == "float" || type == "float32" || type == "double" || type == "float64";
+}
+bool plyIsSigned(std::string_view type) {
+  return type == "char" || type == "int8" || type == "short" || type == "int16" || type == "int" ||
+         type == "int32";
+}
+
+// Walks a binary body record by record: every record fits in the file, every list length is
+// sane, every corner index refers to a vertex. The reader (assimp 5.2) trusts all three and
+// crashes on a file that breaks them.
+void checkBinaryPly(std::string_view text, size_t at, const PlyHeader& header,
+                    const std::string& file) {
+  const bool big = header.format == "binary_big_endian";
+  auto where = [&](const PlyElement& e, long long i) {
+    return file + ": " + std::string(e.name) + " " + std::to_string(i + 1) + " of " +
+           std::to_string(e.count) + " (byte " + std::to_string(at) + "): ";
+  };
+  auto integerAt = [&](size_t offset, std::string_view type) {
+    const int size = plySize(type);
+    uint64_t bits = 0;
+    for (int k = 0; k < size; ++k) {
+      const auto byte = static_cast<uint8_t>(text[offset + static_cast<size_t>(k)]);
+      bits |= static_cast<uint64_t>(byte) << (8 * (big ? size - 1 - k : k));
+    }
+    if (plyIsSigned(type) && size < 8 && (bits >> (8 * size - 1)) != 0) {
+      return static_cast<long long>(bits) - (1LL << (8 * size));  // sign-extended
+    }
+    return static_cast<long long>(bits);
+  };
+  for (const PlyElement& e : header.elements) {
+    for (const PlyProperty& p : e.properties) {
+      if (plySize(p.type) == 0 ||
+          (p.list && (plySize(p.countType) == 0 || plyIsFloat(p.countType)))) {
+        throw MeshFileError(file + ": unknown PLY type in property " + quote(p.name));
+      }
+    }
+  }
+  for (const PlyElement& e : header.elements) {
+    for (long long i = 0; i < e.count; ++i) {
+      for (const PlyProperty& p : e.properties) {
+        const auto size = static_cast<size_t>(plySize(p.type));
+        if (!p.list) {
+          if (text.size() - at < size) {
+            throw MeshFileError(where(e, i) + "the file ends inside this record");
+          }
+          at += size;
+          continue;
+        }
+        const auto countSize = static_cast<size_t>(plySize(p.countType));
+        if (text.size() - at < countSize) {
+          throw MeshFileError(where(e, i) + "the file ends inside this record");
+        }
+        const long long n = integerAt(at, p.countType);
+        const bool corners = isFaceCorners(e, p);
+        if (n < 0 || (corners && n < 3)) {
+          throw MeshFileError(where(e, i) + "a list of " + std::to_string(n) +
+                              (corners ? " corners (a face needs at least 3)" : " values"));
+        }
+        at += countSize;
+        if (static_cast<unsigned long long>(n) > (text.size() - at) / size) {
+          throw MeshFileError(where(e, i) + "the file ends inside this record's list of " +
+                              std::to_string(n));
+        }
+        if (corners) {
+          for (long long k = 0; k < n; ++k) {
+            const long long index = integerAt(at + static_cast<size_t>(k) * size, p.type);
+            if (plyIsFloat(p.type) || index < 0 || index >= header.vertices) {
+              throw MeshFileError(where(e, i) + "vertex index " + std::to_string(index) +
+                                  " is out of range: the file has " +
+                                  std::to_string(header.vertices) + " vertices");
+            }
+          }
+        }
+        at += static_cast<size_t>(n) * size;
+      }
+    }
+  }
+}
+
 std::string lowerExtension(const std::string& file) {
   std::string e = std::filesystem::path(file).extension().string();
   for (char& c : e) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
@@ -245,9 +359,13 @@ std::string lowerExtension(const std::string& file) {
 void checkMeshText(std::string_view text, const std::string& file) {
   const std::string extension = lowerExtension(file);
   if (extension == ".obj") return checkObj(text, file);
-  if (text.starts_with("ply") && text.find("format ascii") != std::string_view::npos &&
-      text.find("format ascii") < text.find("end_header")) {
-    checkAsciiPly(text, file);
+  if (!text.starts_with("ply")) return;
+  Lines lines(text, false);
+  const PlyHeader header = readPlyHeader(lines, file);
+  if (header.format == "ascii") {
+    checkAsciiPly(lines, header, file);
+  } else {
+    checkBinaryPly(text, lines.offset(), header, file);
   }
 }
 
