@@ -179,6 +179,10 @@ TEST_F(MeshFile, OutOfRangeIndexInTextFilesIsReportedWithItsLine) {
   std::string message = errorOf("mesh { file \"models/far.obj\" }\n");
   EXPECT_NE(message.find("far.obj:5: a vertex index '9' is out of range"), std::string::npos)
       << message;
+  write("models/line.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nl 1 2\nl 1 -4\n");
+  message = errorOf("mesh { file \"models/line.obj\" }\n");
+  EXPECT_NE(message.find("line.obj:6: a vertex index '-4' is out of range"), std::string::npos)
+      << message;
   write("models/far.ply",
         "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
         "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"

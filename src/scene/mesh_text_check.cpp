@@ -114,10 +114,16 @@ void checkObj(std::string_view text, const std::string& file) {
       }
       for (size_t i = 1; i < words.size(); ++i) number(words[i], file, line, what);
       ++seen[key == "v" ? 0 : key == "vt" ? 1 : 2];
-    } else if (key == "f") {
-      if (words.size() < 4) {
+    } else if (key == "f" || key == "l" || key == "p") {
+      // Faces, and the lines and points a mesh skips, whose indices must still be in range.
+      const size_t least = key == "f" ? 3 : key == "l" ? 2 : 1;
+      if (words.size() < least + 1) {
         fail(file, line,
-             "a face needs at least 3 corners, found " + std::to_string(words.size() - 1));
+             std::string(key == "f"   ? "a face"
+                         : key == "l" ? "a line"
+                                      : "a point") +
+                 " needs at least " + std::to_string(least) + " corners, found " +
+                 std::to_string(words.size() - 1));
       }
       for (size_t i = 1; i < words.size(); ++i) {
         // v, v/t, v//n or v/t/n
