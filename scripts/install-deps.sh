@@ -5,21 +5,33 @@ set -euo pipefail
 
 packages=(
   build-essential cmake ninja-build pkg-config git
-  libcli11-dev nlohmann-json3-dev libpng-dev libtbb-dev
+  libcli11-dev nlohmann-json3-dev libpng-dev libtbb-dev libassimp-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   openmpi-bin libopenmpi-dev
   povray
+  libembree-dev  # bench/mesh_bench.cpp only: Embree's rays per second beside PRT's
   python3 gnuplot-nox hyperfine
   chromium  # headless, for the test that opens the run page in a browser
   clang libclang-rt-14-dev   # libFuzzer and the sanitizers, for scripts/fuzz.sh
 )
 
+# The Stanford bunny for scenes/bunny.scene and scenes/practical.scene, from npm. Without a
+# network the rest still works: the tests skip the scenes that need it.
+fetch_bunny() {
+  bash "$(dirname "$0")/fetch-bunny.sh" ||
+    echo "install-deps: could not fetch the bunny (scripts/fetch-bunny.sh); the scenes using it are skipped" >&2
+}
+
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
+# npm fetches the Stanford bunny (scripts/fetch-bunny.sh); a Node.js from elsewhere may
+# bring its own.
+command -v npm >/dev/null || missing+=(npm)
 if ((${#missing[@]} == 0)); then
   echo "install-deps: all ${#packages[@]} packages present"
+  fetch_bunny
   exit 0
 fi
 
@@ -29,3 +41,4 @@ echo "install-deps: installing ${missing[*]}"
 export DEBIAN_FRONTEND=noninteractive
 "${sudo_cmd[@]}" apt-get update -qq
 "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fetch_bunny

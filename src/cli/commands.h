@@ -6,7 +6,12 @@
 #include <functional>
 #include <string>
 
+#include "trace/scene.h"
+
 namespace prt::cli {
+
+// loadSceneFile, printing what it skipped (Scene::warnings) to stderr.
+Scene loadScene(const std::string& path);
 
 using Action = std::function<int()>;  // returns the process exit code
 

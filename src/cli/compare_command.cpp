@@ -50,7 +50,7 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
 }
 
 int runCompare(const CompareOptions& o) {
-  Scene scene = loadSceneFile(o.scenePath);
+  Scene scene = loadScene(o.scenePath);
   // As `prt render` resolves them: the scene's sampling, then --case, then --spp and --drt.
   RenderSettings settings{scene.sampling.samplesPerPixel, scene.sampling.drtRate};
   if (!o.testCase.empty()) settings = *paperTestCase(o.testCase);

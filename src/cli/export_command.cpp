@@ -32,7 +32,7 @@ struct ExportOptions {
 };
 
 int runExport(const ExportOptions& o) {
-  Scene scene = loadSceneFile(o.scenePath);
+  Scene scene = loadScene(o.scenePath);
   // As `prt render` resolves them: the scene's sampling, then --case, then --spp and --drt.
   RenderSettings settings{scene.sampling.samplesPerPixel, scene.sampling.drtRate};
   if (!o.testCase.empty()) settings = *paperTestCase(o.testCase);

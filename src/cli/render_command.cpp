@@ -77,6 +77,12 @@ void checkOutputs(const RenderOptions& o, const Scene& scene) {
 
 int renderSerial(const RenderOptions& o, const Scene& scene, const RenderSettings& settings) {
   const World world(scene);
+  if (const World::MeshStats& m = world.meshStats(); m.meshes > 0 && !o.quiet) {
+    std::printf("meshes: %zu, %zu triangles; trees built in %.3f s, %.1f MB (%.0f bytes per "
+                "triangle)\n",
+                m.meshes, m.triangles, m.buildSeconds, static_cast<double>(m.bytes) / 1e6,
+                static_cast<double>(m.bytes) / static_cast<double>(m.triangles));
+  }
   const Renderer renderer(world, settings);
   RenderStats stats;
   std::vector<float> pixelSeconds;
@@ -115,14 +121,14 @@ int runRender(const RenderOptions& o) {
   // --- MPI hook: only rank 0 reads the scene file; the workers get the scene from it.
   if (mpi) {
     return renderParallelMpi(o, [&] {
-      Scene scene = loadSceneFile(o.scenePath);
+      Scene scene = loadScene(o.scenePath);
       const RenderSettings settings = resolveSettings(o, scene);
       checkOutputs(o, scene);
       return std::pair{std::move(scene), settings};
     });
   }
   // --- end MPI hook
-  Scene scene = loadSceneFile(o.scenePath);
+  Scene scene = loadScene(o.scenePath);
   const RenderSettings settings = resolveSettings(o, scene);
   const bool parallel = o.workers || o.strategyFlags.strategy;
   for (const bool parallelOnly : {!o.reportPath.empty(), !o.tracePath.empty(),

@@ -56,6 +56,8 @@ Bytes encode(const Message& message) {
           w.raw(m.sceneText.data(), m.sceneText.size());
           w.pod(static_cast<int32_t>(m.samplesPerPixel));
           w.pod(static_cast<int32_t>(m.drtRate));
+          w.pod(static_cast<uint64_t>(m.meshes.size()));
+          w.raw(m.meshes.data(), m.meshes.size());
         } else if constexpr (std::is_same_v<M, SpeedIndexMsg>) {
           w.pod(m.seconds);
         } else if constexpr (std::is_same_v<M, TasksMsg>) {
@@ -92,6 +94,10 @@ Message decode(const uint8_t* data, size_t size) {
       r.raw(s.sceneText.data(), n);
       s.samplesPerPixel = r.pod<int32_t>();
       s.drtRate = r.pod<int32_t>();
+      const auto meshBytes = r.pod<uint64_t>();
+      r.need(meshBytes);
+      s.meshes.resize(meshBytes);
+      r.raw(s.meshes.data(), meshBytes);
       m = std::move(s);
       break;
     }

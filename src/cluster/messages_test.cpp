@@ -12,7 +12,8 @@ TEST(MessagesTest, EveryTypeRoundTrips) {
   TaskSet tasks = TaskSet::range(10, 100);
   tasks.append(TaskSet::strided(500, 7, 3));
   const std::vector<Message> messages = {
-      SceneMsg{"camera { }\n", 8, 2},
+      SceneMsg{"camera { }\n", 8, 2, {}},
+      SceneMsg{"camera { }\n", 8, 2, {1, 2, 3, 250}},
       SpeedIndexMsg{0.123456789},
       TasksMsg{tasks},
       ResultsMsg{TaskSet::range(3, 2), {0.1f, 0.2f, 0.3f, 1.5f, 2.5f, -0.0f}, 0.125},

@@ -25,7 +25,8 @@ void solveHanoiOnce(int discs) {
 }  // namespace
 
 void WorkerEngine::load(const SceneMsg& scene) {
-  world_ = std::make_unique<World>(parseScene(scene.sceneText, "<scene from master>"));
+  world_ = std::make_unique<World>(
+      parseScene(scene.sceneText, "<scene from master>", unpackMeshes(scene.meshes)));
   renderer_ =
       std::make_unique<Renderer>(*world_, RenderSettings{scene.samplesPerPixel, scene.drtRate});
 }

@@ -191,6 +191,55 @@ void writeMaterial(std::string& out, const Material& m) {
   }
 }
 
+// POV-Ray's mesh2: the vertices (and normals, for smooth shading) once each, then the
+// triangles by index. POV-Ray, like PRT, refracts at each triangle a ray crosses.
+void writeMesh(std::string& out, const TriangleMesh& mesh) {
+  line(out, 0, "mesh2 {");
+  auto vectors = [&](const char* name, const std::vector<Vec3>& values) {
+    std::string head = name;
+    head += " { ";
+    head += std::to_string(values.size());
+    head += ',';
+    line(out, 1, head);
+    std::string row;
+    for (size_t i = 0; i < values.size(); ++i) {
+      row += vec(values[i]);
+      if (i + 1 < values.size()) row += ", ";
+      if (row.size() > 90 || i + 1 == values.size()) {
+        line(out, 2, row);
+        row.clear();
+      }
+    }
+    line(out, 1, "}");
+  };
+  vectors("vertex_vectors", mesh.vertices);
+  // A zero normal (a vertex whose faces cancel) would make POV-Ray's interpolation undefined:
+  // the mesh is then written flat.
+  bool smooth = !mesh.normals.empty();
+  for (const Vec3& n : mesh.normals) smooth = smooth && n != Vec3();
+  if (smooth) vectors("normal_vectors", mesh.normals);
+  std::string faces = "face_indices { ";
+  faces += std::to_string(mesh.triangles.size());
+  faces += ',';
+  line(out, 1, faces);
+  std::string row;
+  for (size_t i = 0; i < mesh.triangles.size(); ++i) {
+    const auto& t = mesh.triangles[i];
+    row += '<';
+    row += std::to_string(t[0]);
+    row += ", ";
+    row += std::to_string(t[1]);
+    row += ", ";
+    row += std::to_string(t[2]);
+    row += i + 1 < mesh.triangles.size() ? ">, " : ">";
+    if (row.size() > 90 || i + 1 == mesh.triangles.size()) {
+      line(out, 2, row);
+      row.clear();
+    }
+  }
+  line(out, 1, "}");
+}
+
 void writeObject(std::string& out, const Object& object) {
   if (const auto* s = std::get_if<SphereShape>(&object.shape)) {
     line(out, 0, "sphere {");
@@ -198,6 +247,8 @@ void writeObject(std::string& out, const Object& object) {
   } else if (const auto* b = std::get_if<BoxShape>(&object.shape)) {
     line(out, 0, "box {");
     line(out, 1, vec(b->min) + ", " + vec(b->max));
+  } else if (const auto* m = std::get_if<MeshShape>(&object.shape)) {
+    writeMesh(out, *m->mesh);
   } else {
     const auto& p = std::get<PlaneShape>(object.shape);
     const Vec3 n = normalize(p.normal);

@@ -242,3 +242,31 @@ TEST(PovExporter, CommandLine) {
 
 }  // namespace
 }  // namespace prt
+
+namespace prt {
+namespace {
+
+// A mesh goes out as mesh2: each vertex once, the normals when it has them, the triangles by
+// index, with the object's texture.
+TEST(PovExporter, MeshesAreMesh2) {
+  Scene scene = testScene();
+  auto mesh = std::make_shared<TriangleMesh>();
+  mesh->vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  mesh->triangles = {{0, 2, 1}, {0, 1, 3}};
+  Material red;
+  red.color = {1, 0, 0};
+  scene.objects.push_back({MeshShape{mesh, {}}, red});
+  std::string text = toPovray(scene, {});
+  EXPECT_TRUE(contains(text, "mesh2 {")) << text;
+  EXPECT_TRUE(contains(text, "vertex_vectors { 4,")) << text;
+  EXPECT_TRUE(contains(text, "<0, 2, 1>, <0, 1, 3>")) << text;
+  EXPECT_TRUE(contains(text, "face_indices { 2,")) << text;
+  EXPECT_FALSE(contains(text, "normal_vectors")) << text;
+  EXPECT_TRUE(contains(text.substr(text.find("mesh2 {")), "rgb <1, 0, 0>")) << text;
+  mesh->normals.assign(4, Vec3(0, 0, 1));
+  text = toPovray(scene, {});
+  EXPECT_TRUE(contains(text, "normal_vectors { 4,")) << text;
+}
+
+}  // namespace
+}  // namespace prt

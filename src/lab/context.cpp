@@ -28,6 +28,7 @@ std::vector<double> ExperimentContext::slowdowns() const {
 Scene ExperimentContext::scene(int quickWidth, int quickHeight, int fullWidth,
                                int fullHeight) const {
   Scene scene = loadSceneFile(options_.scenePath);
+  for (const std::string& w : scene.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
   if (options_.quick) {
     scene.image.width = quickWidth;
     scene.image.height = quickHeight;

@@ -29,6 +29,19 @@ RunReport makeReport(const RunInfo& info, const std::vector<Event>& events,
     wr.tasks = w < info.tasksReceived.size() ? info.tasksReceived[w] : 0;
     wr.threads = w < info.threads.size() ? info.threads[w] : 1;
   }
+  double sceneSent = -1, sceneReceived = -1;
+  for (const Event& e : events) {
+    if (e.label != "Scene") continue;
+    if (e.kind == EventKind::MessageSent) {
+      r.sceneBytes = std::max(r.sceneBytes, e.bytes);
+      if (sceneSent < 0 || e.start < sceneSent) sceneSent = e.start;
+    } else if (e.kind == EventKind::MessageReceived && e.worker >= 0) {
+      sceneReceived = std::max(sceneReceived, e.start);
+    }
+  }
+  if (sceneSent >= 0 && sceneReceived >= sceneSent) {
+    r.sceneTransferSeconds = sceneReceived - sceneSent;
+  }
   for (const Event& e : events) {
     if (e.kind == EventKind::WorkerLost) {
       if (e.worker >= 0 && static_cast<size_t>(e.worker) < n) {
@@ -120,6 +133,8 @@ std::string RunReport::toJson() const {
   j["master_speed_index_s"] = info.masterSpeedIndexSeconds;
   j["messages"] = messages;
   j["bytes"] = bytes;
+  j["scene_bytes"] = sceneBytes;
+  j["scene_transfer_s"] = sceneTransferSeconds;
   j["rays"] = info.rays;
   json ws = json::array();
   for (const WorkerReport& w : workers) {
@@ -185,6 +200,10 @@ std::string RunReport::toTable() const {
                 opt(speedup, "%.2f").c_str(), 100 * efficiency, masu,
                 asu ? opt(std::optional<double>(100 * *asu), "%.1f%%").c_str() : "n/a",
                 static_cast<unsigned long long>(messages), static_cast<unsigned long long>(bytes));
+  out += line;
+  std::snprintf(line, sizeof line,
+                "scene: %llu bytes, with every worker %.3f s after it was sent\n",
+                static_cast<unsigned long long>(sceneBytes), sceneTransferSeconds);
   out += line;
   if (!speedup) out += "(speed-up and ASU need --serial-seconds T or --measure-serial)\n";
   if (masuBasis != "speed_index") {

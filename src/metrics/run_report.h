@@ -84,9 +84,14 @@ struct RunReport {
   std::optional<double> speedIndexMasu, speedIndexAsu;  // from the speed indices
   std::optional<double> measuredMasu, measuredAsu;      // from the measured throughput
   uint64_t messages = 0, bytes = 0;
+  // The scene's journey: the encoded size of one Scene message (text and meshes), and the
+  // seconds from the master's first sending of it to the last worker's receipt.
+  uint64_t sceneBytes = 0;
+  double sceneTransferSeconds = 0;
   std::vector<WorkerReport> workers;
 
-  std::string toJson() const;       // keys: elapsed_s, speedup, efficiency, masu, asu, ...
+  std::string toJson() const;       // keys: elapsed_s, speedup, efficiency, masu, asu,
+                                    // scene_bytes, scene_transfer_s, ...
   std::string toTable() const;      // a readable table for the terminal
 };
 

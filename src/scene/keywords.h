@@ -13,7 +13,8 @@
 namespace prt {
 
 inline constexpr std::string_view kDirectives[] = {
-    "camera", "image", "environment", "sampling", "material", "light", "sphere", "box", "plane"};
+    "camera", "image",  "environment", "sampling", "material", "light",
+    "sphere", "box",    "plane",       "mesh",     "triangle"};
 
 inline bool isDirective(std::string_view word) {
   return std::find(std::begin(kDirectives), std::end(kDirectives), word) != std::end(kDirectives);

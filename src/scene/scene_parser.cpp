@@ -9,6 +9,7 @@
 
 #include "scene/block_reader.h"
 #include "scene/keywords.h"
+#include "scene/mesh_block.h"
 #include "scene/number_text.h"
 #include "scene/scene_file.h"
 #include "scene/surface_parser.h"
@@ -17,14 +18,11 @@
 namespace prt {
 namespace {
 
-// Positions and sizes beyond this are surely mistakes, and squaring them must not overflow.
-constexpr double kMaxCoordinate = 1e9;
 constexpr int kMaxImageSide = 32768;
 // An RGBA float image of 2^28 pixels already takes 4 GiB; larger ones do not fit in memory.
 constexpr int64_t kMaxImagePixels = int64_t{1} << 28;
 constexpr const char* kImageExtensions[] = {".png", ".ppm", ".pfm"};
 
-const Range kCoordinate = Range::closed(-kMaxCoordinate, kMaxCoordinate);
 const Range kSize = Range{0, kMaxCoordinate, true, false};  // in (0, kMaxCoordinate]
 
 std::string at(const Token& token) {
@@ -50,7 +48,10 @@ Vec3 unitLength(const Vec3& v) {
 
 class SceneParser {
  public:
-  explicit SceneParser(const SourceText& source) : in_(source) {}
+  SceneParser(const SourceText& source, const ShippedMeshes* shipped)
+      : in_(source),
+        meshes_{in_, materials_, scene_.warnings,
+                std::filesystem::path(source.fileName()).parent_path(), shipped} {}
 
   Scene run() {
     while (!in_.atEnd()) directive(in_.next());
@@ -72,6 +73,8 @@ class SceneParser {
       if (name == "sphere") return sphere(keyword);
       if (name == "box") return box(keyword);
       if (name == "plane") return plane(keyword);
+      if (name == "mesh") return mesh(keyword);
+      if (name == "triangle") return triangle(keyword);
       const std::vector<std::string_view> directives(std::begin(kDirectives),
                                                      std::end(kDirectives));
       in_.fail(keyword, "unknown directive " + describe(keyword) + didYouMean(name, directives) +
@@ -330,9 +333,17 @@ class SceneParser {
     scene_.objects.push_back(object);
   }
 
+  void mesh(const Token& keyword) {
+    scene_.objects.push_back(readMeshBlock(meshes_, keyword));
+  }
+  void triangle(const Token& keyword) {
+    scene_.objects.push_back(readTriangleBlock(meshes_, keyword));
+  }
+
   TokenStream in_;
   Scene scene_;
   MaterialTable materials_;
+  MeshBlocks meshes_;
   const Token* camera_ = nullptr;  // where each once-only block was given, if it was
   const Token* image_ = nullptr;
   const Token* environment_ = nullptr;
@@ -343,7 +354,23 @@ class SceneParser {
 
 Scene parseScene(std::string_view text, const std::string& fileName) {
   const SourceText source(text, fileName);
-  return SceneParser(source).run();
+  return SceneParser(source, nullptr).run();
+}
+
+Scene parseScene(std::string_view text, const std::string& fileName,
+                 const ShippedMeshes& shipped) {
+  const SourceText source(text, fileName);
+  Scene scene = SceneParser(source, &shipped).run();
+  size_t meshes = 0;
+  for (const Object& o : scene.objects) {
+    const auto* m = std::get_if<MeshShape>(&o.shape);
+    meshes += m != nullptr && !m->source.file.empty() ? 1 : 0;
+  }
+  if (meshes != shipped.size()) {
+    throw InputError("the scene has " + std::to_string(meshes) + " meshes but " +
+                     std::to_string(shipped.size()) + " were sent with it");
+  }
+  return scene;
 }
 
 }  // namespace prt

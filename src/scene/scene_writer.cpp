@@ -123,11 +123,26 @@ void writeObject(Writer& out, const Object& object) {
           out.open("box");
           out.vector("min", shape.min);
           out.vector("max", shape.max);
-        } else {
-          static_assert(std::is_same_v<T, PlaneShape>);
+        } else if constexpr (std::is_same_v<T, PlaneShape>) {
           out.open("plane");
           out.vector("point", shape.point);
           out.vector("normal", shape.normal);
+        } else {
+          static_assert(std::is_same_v<T, MeshShape>);
+          const MeshSource& source = shape.source;
+          if (source.file.empty()) {  // a `triangle` block: one triangle, three vertices
+            out.open("triangle");
+            out.vector("vertices", shape.mesh->vertices[0]);
+            out.vector("", shape.mesh->vertices[1]);
+            out.vector("", shape.mesh->vertices[2]);
+          } else {
+            out.open("mesh");
+            out.string("file", source.file);
+            out.vector("scale", source.scale);
+            out.vector("rotate", source.rotateDegrees);
+            out.vector("translate", source.translate);
+            if (source.smooth) out.raw(" smooth");
+          }
         }
       },
       object.shape);

@@ -31,6 +31,10 @@ struct Range {
   std::string describe() const;
 };
 
+// Positions and sizes beyond this are surely mistakes, and squaring them must not overflow.
+inline constexpr double kMaxCoordinate = 1e9;
+inline const Range kCoordinate = Range::closed(-kMaxCoordinate, kMaxCoordinate);
+
 // Each reader consumes the value tokens after the parameter name `param`.
 double readNumber(TokenStream& in, std::string_view param, Range range);
 int readInteger(TokenStream& in, std::string_view param, int min, int max);

@@ -26,10 +26,18 @@ class BinaryTree {
     uint32_t child[2] = {0, 0};  // kItem set: an item; otherwise a node
   };
 
-  explicit BinaryTree(const std::vector<Bounds>& bounds) : bounds_(bounds), items_(bounds.size()) {
+  BinaryTree(const std::vector<Bounds>& bounds, BvhBuild how)
+      : bounds_(bounds), items_(bounds.size()) {
     std::iota(items_.begin(), items_.end(), 0u);
     Bounds box;
-    build(0, static_cast<uint32_t>(items_.size()), 1, box);
+    if (how == BvhBuild::binned) {
+      centres_.reserve(bounds.size());
+      for (const Bounds& b : bounds) centres_.push_back(b.lo + b.hi);
+      nodes.reserve(bounds.size());
+      binned(0, static_cast<uint32_t>(items_.size()), 1, box);
+    } else {
+      build(0, static_cast<uint32_t>(items_.size()), 1, box);
+    }
   }
 
   std::vector<Node> nodes;
@@ -39,10 +47,12 @@ class BinaryTree {
   // Builds the subtree of items_[begin, end), returns the reference to it and its bounds.
   uint32_t build(uint32_t begin, uint32_t end, int level, Bounds& box);
   uint32_t cluster(uint32_t begin, uint32_t end, int level, Bounds& box);
+  uint32_t binned(uint32_t begin, uint32_t end, int level, Bounds& box);
   uint32_t addNode(const Bounds& a, uint32_t childA, const Bounds& b, uint32_t childB);
 
   const std::vector<Bounds>& bounds_;
   std::vector<uint32_t> items_;
+  std::vector<Vec3> centres_;  // twice each box's centre (lo + hi), for the binned build
 };
 
 uint32_t BinaryTree::build(uint32_t begin, uint32_t end, int level, Bounds& box) {
@@ -155,9 +165,100 @@ uint32_t BinaryTree::cluster(uint32_t begin, uint32_t end, int level, Bounds& bo
   return emit(emit, open[0], level);
 }
 
+uint32_t BinaryTree::binned(uint32_t begin, uint32_t end, int level, Bounds& box) {
+  const uint32_t count = end - begin;
+  if (count == 1) {
+    box = bounds_[items_[begin]];
+    return items_[begin] | kItem;
+  }
+  depth = std::max(depth, level);
+  Bounds centres;
+  for (uint32_t i = begin; i < end; ++i) centres.extend(centres_[items_[i]]);
+  int bestAxis = centres.longestAxis();
+  uint32_t mid = 0;
+  if (level <= kSahDepth && count > 2) {
+    constexpr int kBins = 16;
+    Bounds bins[3][kBins];
+    uint32_t counts[3][kBins] = {};
+    double scale[3];
+    // Large sets are binned along their longest axis alone, a third of the work where most
+    // of it is; below kAllAxes items every axis is tried.
+    constexpr uint32_t kAllAxes = 4096;
+    for (int axis = 0; axis < 3; ++axis) {
+      const double extent = centres.hi[axis] - centres.lo[axis];
+      const bool tried = count < kAllAxes || axis == bestAxis;
+      scale[axis] = extent > 0 && tried ? kBins / extent : 0;
+    }
+    auto binOf = [&](uint32_t item, int axis) {
+      const auto b = static_cast<int>((centres_[item][axis] - centres.lo[axis]) * scale[axis]);
+      return std::min(b, kBins - 1);
+    };
+    for (uint32_t i = begin; i < end; ++i) {
+      const uint32_t item = items_[i];
+      for (int axis = 0; axis < 3; ++axis) {
+        if (scale[axis] == 0) continue;
+        const int b = binOf(item, axis);
+        bins[axis][b].extend(bounds_[item]);
+        ++counts[axis][b];
+      }
+    }
+    double bestCost = std::numeric_limits<double>::infinity();
+    int bestSplit = 0;  // bins before it go left
+    for (int axis = 0; axis < 3; ++axis) {
+      if (scale[axis] == 0) continue;
+      double rightArea[kBins];
+      uint32_t rightCount[kBins];
+      Bounds right;
+      uint32_t n = 0;
+      for (int b = kBins; b-- > 1;) {
+        right.extend(bins[axis][b]);
+        n += counts[axis][b];
+        rightArea[b] = right.surfaceArea();
+        rightCount[b] = n;
+      }
+      Bounds left;
+      n = 0;
+      for (int b = 1; b < kBins; ++b) {
+        left.extend(bins[axis][b - 1]);
+        n += counts[axis][b - 1];
+        if (n == 0 || rightCount[b] == 0) continue;
+        const double cost = n * left.surfaceArea() + rightCount[b] * rightArea[b];
+        if (cost < bestCost) {
+          bestCost = cost;
+          bestAxis = axis;
+          bestSplit = b;
+        }
+      }
+    }
+    if (bestSplit > 0) {
+      const auto middle =
+          std::partition(items_.begin() + begin, items_.begin() + end,
+                         [&](uint32_t item) { return binOf(item, bestAxis) < bestSplit; });
+      mid = static_cast<uint32_t>(middle - items_.begin());
+    }
+  }
+  if (mid <= begin || mid >= end) {  // no useful plane (or deep enough): halve at the median
+    mid = begin + count / 2;
+    std::nth_element(items_.begin() + begin, items_.begin() + mid, items_.begin() + end,
+                     [&](uint32_t a, uint32_t b) {
+                       const double ca = centres_[a][bestAxis], cb = centres_[b][bestAxis];
+                       return ca < cb || (ca == cb && a < b);
+                     });
+  }
+  const auto index = static_cast<uint32_t>(nodes.size());
+  nodes.emplace_back();
+  Bounds left, right;
+  const uint32_t first = binned(begin, mid, level + 1, left);
+  const uint32_t second = binned(mid, end, level + 1, right);
+  nodes[index] = {{left, right}, {first, second}};
+  box = left;
+  box.extend(right);
+  return index;
+}
+
 }  // namespace
 
-QuadBvh::QuadBvh(const std::vector<Bounds>& bounds) {
+QuadBvh::QuadBvh(const std::vector<Bounds>& bounds, BvhBuild build) {
   if (bounds.empty()) return;
   PRT_CHECK(bounds.size() < kItem);
   double maxCoordinate = 0;
@@ -170,10 +271,10 @@ QuadBvh::QuadBvh(const std::vector<Bounds>& bounds) {
     depth_ = 1;
     return;
   }
-  const BinaryTree tree(bounds);
+  const BinaryTree tree(bounds, build);
   PRT_CHECK(tree.depth <= kMaxDepth);
   depth_ = tree.depth;
-  nodes_.reserve(tree.nodes.size());
+  nodes_.reserve(tree.nodes.size() / 2 + 1);
 
   // Collapse: a four-way node takes the place of a binary node and its descendants down to
   // four children, opening the child of largest area first (the likeliest to be entered).
@@ -183,10 +284,11 @@ QuadBvh::QuadBvh(const std::vector<Bounds>& bounds) {
   };
   auto collapse = [&](auto&& self, uint32_t binary) -> uint32_t {
     const auto& b = tree.nodes[binary];
-    std::vector<Child> children{{b.box[0], b.child[0]}, {b.box[1], b.child[1]}};
-    while (children.size() < 4) {
+    Child children[4] = {{b.box[0], b.child[0]}, {b.box[1], b.child[1]}, {}, {}};
+    int size = 2;
+    while (size < 4) {
       int open = -1;
-      for (int i = 0; i < static_cast<int>(children.size()); ++i) {
+      for (int i = 0; i < size; ++i) {
         if (!(children[i].ref & kItem) &&
             (open < 0 || children[i].box.surfaceArea() > children[open].box.surfaceArea())) {
           open = i;
@@ -195,19 +297,49 @@ QuadBvh::QuadBvh(const std::vector<Bounds>& bounds) {
       if (open < 0) break;
       const auto& inner = tree.nodes[children[open].ref];
       children[open] = {inner.box[0], inner.child[0]};
-      children.push_back({inner.box[1], inner.child[1]});
+      children[size++] = {inner.box[1], inner.child[1]};
     }
     const auto index = static_cast<uint32_t>(nodes_.size());
     nodes_.emplace_back();
-    for (size_t lane = 0; lane < children.size(); ++lane) {
+    for (int lane = 0; lane < size; ++lane) {
       const uint32_t ref =
           (children[lane].ref & kItem) ? children[lane].ref : self(self, children[lane].ref);
-      nodes_[index].boxes.set(static_cast<int>(lane), children[lane].box);
+      nodes_[index].boxes.set(lane, children[lane].box);
       nodes_[index].child[lane] = ref;
     }
     return index;
   };
   collapse(collapse, 0);
+  nodes_.shrink_to_fit();  // a four-way node takes one to three binary ones
+}
+
+std::vector<uint32_t> QuadBvh::itemOrder() const {
+  std::vector<uint32_t> order;
+  if (nodes_.empty()) return order;
+  std::vector<uint32_t> stack{0};
+  while (!stack.empty()) {
+    const Node& n = nodes_[stack.back()];
+    stack.pop_back();
+    for (int lane = 3; lane >= 0; --lane) {  // pushed last to first: popped first to last
+      const uint32_t c = n.child[lane];
+      if (c == kEmpty) continue;
+      if (c & kItem) continue;
+      stack.push_back(c);
+    }
+    for (int lane = 0; lane < 4; ++lane) {
+      const uint32_t c = n.child[lane];
+      if (c != kEmpty && (c & kItem)) order.push_back(c & ~kItem);
+    }
+  }
+  return order;
+}
+
+void QuadBvh::renameItems(const std::vector<uint32_t>& newIndex) {
+  for (Node& n : nodes_) {
+    for (uint32_t& c : n.child) {
+      if (c != kEmpty && (c & kItem)) c = newIndex[c & ~kItem] | kItem;
+    }
+  }
 }
 
 }  // namespace prt

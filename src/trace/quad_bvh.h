@@ -16,11 +16,18 @@
 
 namespace prt {
 
+// How the binary tree is split. `careful` sweeps every split along the three axes and merges
+// small sets bottom-up: the best trees for the few hundred objects of a scene, but time and
+// memory grow faster than the count. `binned` evaluates the surface area heuristic at 16
+// planes per axis (Wald 2007; for sets of 4096 items or more, along the longest axis only),
+// linear per level: a million triangles of a mesh in about a second (bench/mesh_bench.cpp).
+enum class BvhBuild { careful, binned };
+
 class QuadBvh {
  public:
   QuadBvh() = default;
   // `bounds[i]` is the box of item i; items are referred to by their index.
-  explicit QuadBvh(const std::vector<Bounds>& bounds);
+  explicit QuadBvh(const std::vector<Bounds>& bounds, BvhBuild build = BvhBuild::careful);
 
   // Calls visit(item) for (a superset of) the items whose boxes hitsBounds says the ray meets
   // within (tMin, tMax()). visit returns the new tMax (to shrink the search for the nearest
@@ -33,6 +40,14 @@ class QuadBvh {
 
   size_t nodeCount() const { return nodes_.size(); }
   int depth() const { return depth_; }
+  size_t bytes() const { return nodes_.capacity() * sizeof(Node); }
+
+  // The items in the order a traversal that enters every child, first lane first, meets them;
+  // and the same tree with item i renamed newIndex[i] (a permutation). Together they let a
+  // caller store its items in the tree's order, so that the items a ray meets lie close in
+  // memory.
+  std::vector<uint32_t> itemOrder() const;
+  void renameItems(const std::vector<uint32_t>& newIndex);
 
  private:
   static constexpr uint32_t kItem = 1u << 31;  // child reference: set for an item index

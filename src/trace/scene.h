@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/vec3.h"
+#include "trace/triangle_mesh.h"
 
 namespace prt {
 
@@ -68,7 +69,8 @@ struct PlaneShape {  // one-sided: visible, and opaque to shadow rays, only from
   Vec3 normal{0, 1, 0};  // unit length
   bool operator==(const PlaneShape&) const = default;
 };
-using Shape = std::variant<SphereShape, BoxShape, PlaneShape>;
+// A triangle mesh (trace/triangle_mesh.h): closed or not, convex or not.
+using Shape = std::variant<SphereShape, BoxShape, PlaneShape, MeshShape>;
 
 struct Object {
   Shape shape;
@@ -106,6 +108,9 @@ struct Scene {
   Sampling sampling;
   std::vector<Light> lights;
   std::vector<Object> objects;
+  // What reading the scene skipped and why (triangles of a mesh file), for the user to see;
+  // "file:line: what". Not part of the scene itself: never written or sent.
+  std::vector<std::string> warnings;
 };
 
 }  // namespace prt

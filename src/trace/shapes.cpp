@@ -1,5 +1,7 @@
 #include "trace/shapes.h"
 
+#include "trace/triangle.h"
+
 namespace prt {
 namespace {
 
@@ -44,6 +46,37 @@ Crossings intersect(const PlaneShape& p, const Ray& ray, double tMin, double tMa
   return c;
 }
 
+Crossings intersect(const MeshShape& m, const Ray& ray, double tMin, double tMax) {
+  const ShearedRay sheared(ray);
+  const TriangleMesh& mesh = *m.mesh;
+  double t[2] = {tMax, tMax};
+  uint32_t which[2] = {0, 0};
+  int count = 0;
+  for (uint32_t i = 0; i < mesh.triangles.size(); ++i) {
+    const auto& v = mesh.triangles[i];
+    const TriangleHit h =
+        triangleHit(sheared, mesh.vertices[v[0]], mesh.vertices[v[1]], mesh.vertices[v[2]]);
+    if (!h.hit || !(h.t > tMin && h.t < tMax)) continue;
+    if (count < 2) ++count;
+    if (h.t < t[0]) {
+      t[1] = t[0];
+      which[1] = which[0];
+      t[0] = h.t;
+      which[0] = i;
+    } else if (h.t < t[1] && count == 2) {
+      t[1] = h.t;
+      which[1] = i;
+    }
+  }
+  Crossings c;
+  for (int k = 0; k < count; ++k) {
+    const auto& v = mesh.triangles[which[k]];
+    const Vec3& a = mesh.vertices[v[0]];
+    add(c, t[k], normalize(cross(mesh.vertices[v[1]] - a, mesh.vertices[v[2]] - a)));
+  }
+  return c;
+}
+
 Bounds boundsOf(const Shape& shape) {
   Bounds b;
   if (const auto* s = std::get_if<SphereShape>(&shape)) {
@@ -52,6 +85,10 @@ Bounds boundsOf(const Shape& shape) {
   } else if (const auto* x = std::get_if<BoxShape>(&shape)) {
     b.extend(x->min);
     b.extend(x->max);
+  } else if (const auto* m = std::get_if<MeshShape>(&shape)) {
+    for (const auto& t : m->mesh->triangles) {
+      for (const uint32_t v : t) b.extend(m->mesh->vertices[v]);
+    }
   }
   return b;
 }

@@ -28,8 +28,12 @@ Crossings intersect(const SphereShape& s, const Ray& ray, double tMin, double tM
 Crossings intersect(const BoxShape& b, const Ray& ray, double tMin, double tMax);
 // One-sided: only rays travelling against the normal (arriving from the front) cross it.
 Crossings intersect(const PlaneShape& p, const Ray& ray, double tMin, double tMax);
+// A mesh may be crossed many times: its two nearest crossings (ties to the lower triangle
+// index), each triangle tried in turn, with the geometric normals (World's MeshBvh answers
+// the same nearest crossing through its tree).
+Crossings intersect(const MeshShape& m, const Ray& ray, double tMin, double tMax);
 
-// Bounds of a shape; planes are unbounded and return an empty (inverted) box.
+// Bounds of a shape (a mesh: of its triangles); planes are unbounded and return an empty (inverted) box.
 Bounds boundsOf(const Shape& shape);
 bool isBounded(const Shape& shape);
 

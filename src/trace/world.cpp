@@ -1,6 +1,7 @@
 #include "trace/world.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <utility>
@@ -86,9 +87,19 @@ World::World(Scene scene) : scene_(std::move(scene)) {
     const double transmissivity = o.material.transmissivity;
     if (const auto* s = std::get_if<SphereShape>(&o.shape)) {
       items_.push_back({s->center, Vec3(s->radius, 1.0 / s->radius, 0), boundsOf(o.shape),
-                        transmissivity, i, true});
+                        transmissivity, i, Kind::sphere});
     } else if (const auto* b = std::get_if<BoxShape>(&o.shape)) {
-      items_.push_back({b->min, b->max, boundsOf(o.shape), transmissivity, i, false});
+      items_.push_back({b->min, b->max, boundsOf(o.shape), transmissivity, i, Kind::box});
+    } else if (const auto* m = std::get_if<MeshShape>(&o.shape)) {
+      const auto start = std::chrono::steady_clock::now();
+      meshes_.push_back(std::make_unique<MeshBvh>(m->mesh));
+      const MeshBvh& mesh = *meshes_.back();
+      meshStats_.buildSeconds +=
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      ++meshStats_.meshes;
+      meshStats_.triangles += mesh.triangleCount();
+      meshStats_.bytes += mesh.bytes();
+      items_.push_back({Vec3(), Vec3(), mesh.bounds(), transmissivity, i, Kind::mesh, &mesh});
     } else {
       const auto& p = std::get<PlaneShape>(o.shape);
       planes_.push_back({p.point, p.normal, transmissivity, i});
@@ -179,6 +190,7 @@ bool World::intersect(const Ray& ray, double tMin, double tMax, Hit& hit,
   uint32_t bestRank = 0;
   const Plane* bestPlane = nullptr;
   const Item* bestItem = nullptr;
+  uint32_t bestTriangle = 0;
   for (const Plane& p : planes_) {
     const double t = planeDistance(p.point, p.normal, ray);
     if (t > tMin && t < nearest) {
@@ -189,8 +201,19 @@ bool World::intersect(const Ray& ray, double tMin, double tMax, Hit& hit,
   const uint32_t* ranks = ranks_.data() + octantOf(ray.direction) * items_.size();
   candidates(nearest, [&](uint32_t index) {
     const Item& item = items_[index];
-    const double t = item.sphere ? sphereRoots(item.a, item.b.x, ray).firstAfter(tMin)
-                                 : boxSpan(item.a, item.b, ray).firstAfter(tMin);
+    if (item.kind == Kind::mesh) {
+      double t = nearest;
+      uint32_t triangle = 0;
+      if (!item.mesh->nearest(ray, tMin, t, triangle)) return nearest;
+      if (!(t < nearest || ranks[index] < bestRank)) return nearest;  // t == nearest: a tie
+      nearest = t;
+      bestRank = ranks[index];
+      bestItem = &item;
+      bestTriangle = triangle;
+      return nearest;
+    }
+    const double t = item.kind == Kind::sphere ? sphereRoots(item.a, item.b.x, ray).firstAfter(tMin)
+                                               : boxSpan(item.a, item.b, ray).firstAfter(tMin);
     // Farther, or as far but later in the order (NaN, no crossing, fails both tests).
     if (!(t < nearest || (t == nearest && ranks[index] < bestRank))) return nearest;
     // The paper's per-object box test, which the object had to pass before.
@@ -203,7 +226,9 @@ bool World::intersect(const Ray& ray, double tMin, double tMax, Hit& hit,
   if (bestItem != nullptr) {
     // The normal as intersect(shape) gives it for its first crossing, which is this one.
     hit.object = bestItem->object;
-    if (bestItem->sphere) {
+    if (bestItem->kind == Kind::mesh) {
+      hit.normal = bestItem->mesh->normal(ray, bestTriangle);
+    } else if (bestItem->kind == Kind::sphere) {
       hit.normal = (ray.at(nearest) - bestItem->a) * bestItem->b.y;  // times 1 / radius
     } else {
       const BoxSlabs s = boxSlabs(bestItem->a, bestItem->b, ray);
@@ -246,16 +271,22 @@ double World::transmittance(const Ray& ray, double tMin, double distance,
   candidates([&](uint32_t index) {
     const Item& item = items[index];
     int crossings = 0;
-    if (item.sphere) {
+    if (item.kind == Kind::sphere) {
       const SphereRoots r = sphereRoots(item.a, item.b.x, ray);
       if (!r.hit) return distance;
       crossings = (r.t0 > tMin && r.t0 < distance) + (r.t1 > tMin && r.t1 < distance);
-    } else {
+    } else if (item.kind == Kind::box) {
       const BoxSpan s = boxSpan(item.a, item.b, ray);
       if (!s.hit) return distance;
       crossings = s.nearCrosses(tMin, distance) + s.farCrosses(tMin, distance);
+    } else {
+      crossings = item.mesh->crossings(ray, tMin, distance, item.transmissivity == 0);
+      if (crossings == 0) return distance;
     }
-    if (crossings == 0 || !hitsBounds(item.box, RayQuery(ray), tMin, distance)) return distance;
+    if (crossings == 0 ||
+        (item.kind != Kind::mesh && !hitsBounds(item.box, RayQuery(ray), tMin, distance))) {
+      return distance;
+    }
     if (item.transmissivity == 0) {  // nothing passes, whatever else is crossed
       opaque = true;
       return -1.0;

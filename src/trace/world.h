@@ -12,9 +12,11 @@
 // rendered before the faster QuadBvh replaced it for traversal.
 
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <vector>
 
+#include "trace/mesh_bvh.h"
 #include "trace/quad_bvh.h"
 #include "trace/scene.h"
 #include "trace/shadow_shafts.h"
@@ -51,6 +53,14 @@ class World {
   // The boxes of the bounded objects, which the BVH holds as its items.
   std::vector<Bounds> itemBounds() const;
 
+  // What the meshes cost to prepare: their triangles, the seconds their trees took to build
+  // (on the thread that built the World) and the bytes those trees and triangles hold.
+  struct MeshStats {
+    size_t meshes = 0, triangles = 0, bytes = 0;
+    double buildSeconds = 0;
+  };
+  const MeshStats& meshStats() const { return meshStats_; }
+
   // Fraction of light that survives from ray.origin to distance `distance` along the ray: the
   // product of the transmissivities of every surface crossed (0 as soon as one is opaque).
   double transmittance(const Ray& ray, double tMin, double distance) const;
@@ -70,12 +80,14 @@ class World {
 
  private:
   // A bounded object as the BVH's item, flattened for the hot loops.
+  enum class Kind : uint8_t { box, sphere, mesh };
   struct Item {
-    Vec3 a, b;   // sphere: centre, (radius, 1 / radius, 0); box: min, max
-    Bounds box;  // for the paper's per-object box test
+    Vec3 a, b;   // sphere: centre, (radius, 1 / radius, 0); box: min, max; mesh: unused
+    Bounds box;  // for the paper's per-object box test (a mesh's tree tests boxes itself)
     double transmissivity = 0;
     uint32_t object = 0;
-    bool sphere = false;
+    Kind kind = Kind::box;
+    const MeshBvh* mesh = nullptr;  // for a mesh; owned by meshes_
   };
   struct Plane {
     Vec3 point, normal;
@@ -95,6 +107,8 @@ class World {
   QuadBvh bvh_;
   ShadowShafts shafts_;
   std::vector<Item> items_;
+  std::vector<std::unique_ptr<MeshBvh>> meshes_;
+  MeshStats meshStats_;
   Bounds itemsBox_;  // around all of them
   std::vector<Plane> planes_;
   // Per item: its box widened by a margin, and the items whose boxes come within twice that
