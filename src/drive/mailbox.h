@@ -32,7 +32,11 @@ class Mailbox {
   // Waits until `deadline` at most for mail.
   std::optional<Mail> popUntil(std::chrono::steady_clock::time_point deadline) {
     std::unique_lock lock(mutex_);
-    ready_.wait_until(lock, deadline, [&] { return !queue_.empty(); });
+    // A deadline already past is a poll: no wait at all (a timed wait on an expired deadline
+    // still sleeps for the kernel's timer slack, some 50 us, on every batch).
+    if (queue_.empty() && std::chrono::steady_clock::now() < deadline) {
+      ready_.wait_until(lock, deadline, [&] { return !queue_.empty(); });
+    }
     if (queue_.empty()) return std::nullopt;
     Mail m = std::move(queue_.front());
     queue_.pop_front();

@@ -4,6 +4,7 @@
 // render a batch — all under the worker's slowdown, on `threads` threads (a machine's cores).
 // One engine per worker; not shared.
 
+#include <functional>
 #include <memory>
 #include <utility>
 #include <vector>
@@ -38,7 +39,10 @@ class WorkerEngine {
   double measureSpeedIndex();
   // Renders `batch` on the worker's threads; returns 3 floats per pixel. `seconds` receives the wall
   // time including the slowdown wait, `rays` the rays traced.
-  std::vector<float> render(const TaskSet& batch, double& seconds, uint64_t& rays);
+  // With one thread, `between` (if set) is called between pieces of the batch on this thread,
+  // so the caller can keep sending heartbeats while it renders without a second thread.
+  std::vector<float> render(const TaskSet& batch, double& seconds, uint64_t& rays,
+                            const std::function<void()>& between = {});
 
 
  private:
