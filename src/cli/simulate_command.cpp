@@ -32,6 +32,7 @@ struct SimulateOptions {
   std::optional<int> height;  // default: the cost map's, or 480
   StrategyFlags strategyFlags;          // --strategy and the strategies' options
   std::string speedIndexRun = "auto";   // on | off | auto (off for the adaptive strategies)
+  std::string endgame = "off";          // on | off
   std::string speedAt;                  // --speed-at W:T:SPEED,...
   std::vector<double> speeds;           // per worker; empty: see slowShare, lognormal, else all 1
   std::optional<double> slowShare;      // fraction of the workers that are slow
@@ -108,6 +109,7 @@ int runSimulate(const SimulateOptions& o) {
   options.speedIndexRun = o.speedIndexRun == "auto" ? runsSpeedIndexByDefault(options.strategy)
                                                     : o.speedIndexRun == "on";
   options.batchPixels = o.batchPixels;
+  options.endgame = o.endgame == "on";
   options.batchOverheadSeconds = o.batchOverheadMicroseconds * 1e-6;
   options.baseSpeedIndexSeconds = o.speedIndexSeconds;
   options.speedIndexSeconds = o.speedIndices;
@@ -184,6 +186,11 @@ Action addSimulateCommand(CLI::App& app, const std::string& commandLine) {
                   "Image height (synthetic map: default 480; with --cost-map: must match)")
       ->check(CLI::Range(1, 32768));
   addStrategyFlags(*cmd, o->strategyFlags, "Strategy");
+  cmd->add_option("--endgame", o->endgame,
+                  "on: when nothing is left to hand out, an idle worker renders a copy of the "
+                  "tasks expected to finish last (the first result wins), as prt render does")
+      ->check(CLI::IsMember({"on", "off"}))
+      ->capture_default_str();
   cmd->add_option("--speed-index-run", o->speedIndexRun,
                   "Whether the workers run a speed index first: on, off (they start at once; "
                   "MASU and ASU then come from measured throughput) or auto (off for the "

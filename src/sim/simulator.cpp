@@ -36,6 +36,12 @@ struct SimWorker {
   std::deque<Mail> mailbox;
 };
 
+MasterOptions masterOptions(const SimulationOptions& options) {
+  MasterOptions m;
+  m.endgame = options.endgame;
+  return m;
+}
+
 class Simulation {
  public:
   Simulation(const CostMap& costs, const SimulationOptions& options)
@@ -43,7 +49,8 @@ class Simulation {
         options_(options),
         net_(workerCount(), options.network),
         master_(makeStrategy(options.strategy, options.strategyOptions), workerCount(),
-                costs.pixelCount(), SceneMsg{std::string(options.sceneBytes, ' '), 1, 1}, nullptr) {
+                costs.pixelCount(), SceneMsg{std::string(options.sceneBytes, ' '), 1, 1}, nullptr,
+                masterOptions(options)) {
     for (int w = 0; w < workerCount(); ++w) {
       const auto i = static_cast<size_t>(w);
       const double speed = options.speeds[i];
@@ -207,6 +214,8 @@ class Simulation {
     info.workerSpeedIndexSeconds = master_.speedIndices();
     info.serialSeconds = costs_.totalSeconds();
     info.speedIndexRun = options_.speedIndexRun;
+    info.faults.endgameCopies = master_.endgameCopies();
+    info.faults.duplicatePixels = master_.ledger().duplicates();
     for (const SimWorker& w : workers_) {
       info.slowdowns.push_back(1.0 / w.speed);
       info.tasksReceived.push_back(w.machine.tasksReceived());

@@ -48,6 +48,7 @@ struct SimulationOptions {
   std::vector<SpeedChange> speedChanges;  // --speed-at: worker W runs at speed X from T s on
   bool speedIndexRun = true;              // false: workers set up at once and report equal
                                           // indices (for strategies that need none)
+  bool endgame = false;                   // --endgame: copies of the last tasks (Master)
   NetworkOptions network;
   uint64_t sceneBytes = 4096;  // the scene text the master sends to each worker
 };
