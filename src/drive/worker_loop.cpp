@@ -135,7 +135,11 @@ class WorkerLoop {
     doing_ = Doing::Batch;
     batch_ = worker_.nextBatch();
     effectStart_ = net_.now();
-    if (engine_.threads() == 1) {
+    // A batch of several threads renders here too when the last one was short (the hand-off
+    // would cost more than it saves), and on the effect thread when it may outlast a
+    // heartbeat interval, so that heartbeats go out while it renders.
+    const bool inline_ = engine_.threads() == 1 || lastBatchSeconds_ < options_.heartbeatSeconds / 4;
+    if (inline_) {
       // One thread renders here, sending heartbeats between pieces: handing each batch to
       // another thread and back costs two wake-ups, which on small batches is more than the
       // batch (about 85 us a batch measured on this 2-core VM).
@@ -166,6 +170,7 @@ class WorkerLoop {
   }
 
   void finishBatch() {
+    lastBatchSeconds_ = computeSeconds_;
     log_.add({EventKind::Compute, id_, effectStart_, effectStart_ + computeSeconds_,
               batch_.size(), 0, 0, ""});
     rendered_ += batch_.size();
@@ -198,6 +203,7 @@ class WorkerLoop {
   uint64_t rendered_ = 0;
   uint64_t rays_ = 0;
   bool masterGone_ = false;  // the transport said so while a batch rendered here
+  double lastBatchSeconds_ = 1e9;  // the last batch's time (none yet: assume a long one)
 
   // The effect in progress; written by the effect thread, read here after it is done.
   Doing doing_ = Doing::Nothing;
