@@ -2,7 +2,7 @@
 # Installs dependencies, builds, and runs the main job: the benchmark scene (the paper's test
 # case A) rendered by a master and four emulated workers of different speeds (two at half
 # speed, two at a quarter: 1.5 cores' worth, faithful on a 2-core machine), with the
-# load-balancing report of the default strategy, then a side-by-side of what balancing buys:
+# load-balancing report of the default strategy and its page (out/run.html), then a side-by-side of what balancing buys:
 # scatter, hybrid, the paper's reservoir and the default on the same emulated cluster, against
 # the same serial time. Outputs land in out/.
 set -euo pipefail
@@ -11,9 +11,10 @@ bash scripts/install-deps.sh
 bash scripts/build.sh release
 mkdir -p out
 build/prt render scenes/complex.scene --case A --workers 4 --slowdown 2,2,4,4 --measure-serial \
-  --report out/report.json --trace out/trace.json --ownership out/ownership.png \
-  -o out/complex.png "$@"
-echo "wrote out/complex.png, out/ownership.png, out/report.json, out/trace.json (open in Perfetto)"
+  --report out/report.json --html out/run.html --trace out/trace.json \
+  --ownership out/ownership.png -o out/complex.png "$@"
+echo "wrote out/run.html (the run's page: open it in any browser, no network needed),"
+echo "      out/complex.png, out/ownership.png, out/report.json, out/trace.json (Perfetto)"
 
 # The side-by-side: one run each, the serial time from the run above.
 value() { grep -o "\"$1\": *[-0-9.e+]*" "$2" | head -1 | sed 's/.*: *//'; }
