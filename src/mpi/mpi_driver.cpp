@@ -1,6 +1,8 @@
 #include "mpi/mpi_driver.h"
 
 #include <fcntl.h>
+#include <poll.h>
+#include <sys/syscall.h>
 #include <signal.h>
 #include <unistd.h>
 
@@ -52,9 +54,9 @@ std::string launcherName(pid_t pid) {
 // Forks a watchdog that, `graceSeconds` from now, sends SIGTERM to the launcher that started
 // this rank if it is still running — the one way left to end a job whose lost rank hangs
 // under --enable-recovery (MPI_Abort does not end it then). mpirun forwards the signal to the
-// job, so the hung process ends too. A launcher that returned in time is left alone; the
-// watchdog checks that the pid is still the launcher's before signalling. False when this
-// rank was not started by a launcher it recognises.
+// job, so the hung process ends too. A launcher that returned in time is left alone: the
+// watchdog holds a pidfd of it, so a later process with the same pid is never signalled.
+// False when this rank was not started by a launcher it recognises.
 bool endLauncherIfStillRunningAfter(double graceSeconds) {
   const pid_t launcher = ::getppid();
   const std::string name = launcherName(launcher);
@@ -62,27 +64,30 @@ bool endLauncherIfStillRunningAfter(double graceSeconds) {
       name != "prterun") {
     return false;
   }
+  // A pidfd names this very process: once it ends, a new process that reuses its pid is
+  // never signalled.
+  const int launcherFd = static_cast<int>(::syscall(SYS_pidfd_open, launcher, 0));
+  if (launcherFd < 0) return false;
   std::fflush(nullptr);
   const pid_t child = ::fork();
-  if (child != 0) return child > 0;
+  if (child != 0) {
+    ::close(launcherFd);
+    return child > 0;
+  }
   // The watchdog: no MPI, no inherited output pipes (mpirun waits for their end), its own
   // session so the job's signals do not reach it.
   ::setsid();
   const int devnull = ::open("/dev/null", O_RDWR);
   for (int fd = 0; fd < 1024; ++fd) {
-    if (fd != devnull) ::close(fd);
+    if (fd != devnull && fd != launcherFd) ::close(fd);
   }
   ::dup2(devnull, 0);
   ::dup2(devnull, 1);
   ::dup2(devnull, 2);
-  const auto deadline = std::chrono::steady_clock::now() +
-                        std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                            std::chrono::duration<double>(graceSeconds));
-  while (std::chrono::steady_clock::now() < deadline) {
-    if (::kill(launcher, 0) != 0 || launcherName(launcher) != name) ::_exit(0);
-    std::this_thread::sleep_for(std::chrono::milliseconds(200));
-  }
-  if (launcherName(launcher) == name) ::kill(launcher, SIGTERM);
+  // The pidfd becomes readable when the launcher ends: wait for that, or the grace period.
+  pollfd ended{launcherFd, POLLIN, 0};
+  const int waited = ::poll(&ended, 1, static_cast<int>(graceSeconds * 1000));
+  if (waited == 0) ::syscall(SYS_pidfd_send_signal, launcherFd, SIGTERM, nullptr, 0);
   ::_exit(0);
 }
 

@@ -18,17 +18,27 @@ mkdir -p "$work"
 cd "$work"
 hosts=$work/hosts
 job=
+step="making the hosts"
 cleanup() {
+  status=$?
   [ -n "$job" ] && { pkill -9 -P "$job" 2>/dev/null || true; kill -9 "$job" 2>/dev/null || true; }
   bash "$cluster" down "$hosts" >/dev/null 2>&1 || true
+  if [ "$status" -ne 0 ] && [ "$status" -ne 77 ]; then
+    echo "netns test: ended with status $status while $step" >&2
+    [ -f "$work/err.txt" ] && grep -v "PMIX ERROR" "$work/err.txt" >&2
+  fi
+  exit "$status"
 }
-trap cleanup EXIT INT TERM
+trap cleanup EXIT
+trap 'echo "netns test: signal received while $step" >&2; exit 1' INT TERM HUP
 bash "$cluster" up 3 "$hosts" || skip "could not make the network namespaces"
 
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 geometry="--width 64 --height 48 --spp 16 --drt 2"
+step="rendering the serial image"
 # shellcheck disable=SC2086
 "$prt" render "$scene" $geometry -q -o serial.pfm
+step="rendering across the hosts"
 # shellcheck disable=SC2086,SC2046
 "$mpiexec" $(cat "$hosts/mpirun-flags") --enable-recovery --hostfile "$hosts/hostfile" -np 3 \
   "$prt" render "$scene" $geometry -q --slowdown 30,30 --batch 8 --worker-timeout 2 -o out.pfm \
@@ -40,7 +50,9 @@ for i in $(seq 1 300); do
   sleep 0.1
 done
 [ "$progress" -eq 1 ] || { cat err.txt >&2; fail "no progress across the hosts within 30 s"; }
+step="cutting prt-h2 off"
 bash "$cluster" link-down 2  # worker rank 2 (worker 1) is on prt-h2
+step="waiting for the image without prt-h2"
 echo "link of prt-h2 down"
 # The master finishes the image with the hosts it can reach; mpirun itself may wait for the
 # cut-off host's daemon long after, which is not the image's concern.
@@ -50,6 +62,7 @@ for i in $(seq 1 600); do
   sleep 0.1
 done
 grep -v "PMIX ERROR" err.txt >&2 || true
+step="checking the outcome"
 if [ -f out.pfm ]; then
   cmp serial.pfm out.pfm || fail "the image differs from the serial one"
   python3 - <<'PY'
