@@ -39,17 +39,33 @@ step="rendering the serial image"
 # shellcheck disable=SC2086
 "$prt" render "$scene" $geometry -q -o serial.pfm
 step="rendering across the hosts"
-# shellcheck disable=SC2086,SC2046
-"$mpiexec" $(cat "$hosts/mpirun-flags") --enable-recovery --hostfile "$hosts/hostfile" -np 3 \
-  "$prt" render "$scene" $geometry -q --slowdown 30,30 --batch 8 --worker-timeout 2 -o out.pfm \
-  --checkpoint ck --checkpoint-every 0.1 --report report.json >out.txt 2>err.txt &
-job=$!
-progress=0
-for i in $(seq 1 300); do
-  if [ -f ck ] && [ "$(stat -c %s ck)" -gt 3000 ]; then progress=1; break; fi
-  sleep 0.1
-done
-[ "$progress" -eq 1 ] || { cat err.txt >&2; fail "no progress across the hosts within 30 s"; }
+# Starts the run across the hosts and waits up to 30 s for its first checkpointed pixels
+# (scatter: worker 1 holds half the image until it renders it, so the cut below always finds
+# it holding unfinished pixels). Two
+# tries, each on hosts made afresh: the start of a job across namespaces (daemons launched
+# through the agent, TCP set up on the bridge) has been seen to stall once in many runs.
+start_run() {
+  rm -f ck out.pfm report.json
+  # shellcheck disable=SC2086,SC2046
+  "$mpiexec" $(cat "$hosts/mpirun-flags") --enable-recovery --hostfile "$hosts/hostfile" -np 3 \
+    "$prt" render "$scene" $geometry -q --strategy scatter --slowdown 60,60 --batch 8 \
+    --worker-timeout 2 \
+    -o out.pfm --checkpoint ck --checkpoint-every 0.1 --report report.json >out.txt 2>err.txt &
+  job=$!
+  for i in $(seq 1 300); do
+    if [ -f ck ] && [ "$(stat -c %s ck 2>/dev/null || echo 0)" -gt 3000 ]; then return 0; fi
+    sleep 0.1
+  done
+  return 1
+}
+if ! start_run; then
+  echo "netns test: no progress across the hosts within 30 s; its output:" >&2
+  grep -v "PMIX ERROR" out.txt err.txt >&2 || true
+  pkill -9 -P "$job" 2>/dev/null || true
+  kill -9 "$job" 2>/dev/null || true
+  bash "$cluster" up 3 "$hosts" >/dev/null || fail "could not make the hosts again"
+  start_run || { grep -v "PMIX ERROR" err.txt >&2; fail "no progress across the hosts within 30 s, twice"; }
+fi
 step="cutting prt-h2 off"
 bash "$cluster" link-down 2  # worker rank 2 (worker 1) is on prt-h2
 step="waiting for the image without prt-h2"
