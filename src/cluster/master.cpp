@@ -87,7 +87,7 @@ void Master::apply(const Decisions& decisions, Outbox& out) {
 // its speed index; the asking worker gets a copy of the back of that worker's queue (which
 // that worker renders last), sized so that both would finish together at their speed indices.
 // Each task is copied at most once, so the waste is bounded by one copy of the endgame.
-bool Master::endgameCopy(int worker, Outbox& out) {
+void Master::endgameCopy(int worker, Outbox& out) {
   int slowest = -1;
   double latest = 0;
   TaskSet candidates;
@@ -102,7 +102,7 @@ bool Master::endgameCopy(int worker, Outbox& out) {
       candidates = left;
     }
   }
-  if (slowest < 0 || candidates.size() < 2) return false;
+  if (slowest < 0 || candidates.size() < 2) return;
   const double mine = std::max(speedIndices_[static_cast<size_t>(worker)], 1e-12);
   const double theirs = std::max(speedIndices_[static_cast<size_t>(slowest)], 1e-12);
   // Rates are 1 / speed index: my share of what is left is theirs / (mine + theirs).
@@ -114,7 +114,6 @@ bool Master::endgameCopy(int worker, Outbox& out) {
   endgameServed_[static_cast<size_t>(slowest)] = true;  // its tail is covered now
   endgameCopies_ += copy.size();
   assign(worker, copy, out);
-  return true;
 }
 
 void Master::startStrategy(Outbox& out) {

@@ -74,7 +74,7 @@ class Master {
   void sendToAll(const Message& m, Outbox& out);
   void finishIfComplete(Outbox& out);
   void answerQueryIfComplete(Outbox& out);
-  bool endgameCopy(int worker, Outbox& out);
+  void endgameCopy(int worker, Outbox& out);
 
   std::unique_ptr<Strategy> strategy_;
   SceneMsg scene_;
@@ -92,7 +92,7 @@ class Master {
   bool queryOpen_ = false;
   std::vector<bool> answered_;
   std::vector<uint64_t> queueLengths_;
-  std::vector<bool> endgameServed_;  // per worker: holds an endgame copy it has not finished
+  std::vector<bool> endgameServed_;  // per worker: its queue's tail has been copied to another
   uint64_t endgameCopies_ = 0;
 };
 

@@ -116,7 +116,7 @@ std::optional<Checkpoint> readCheckpoint(const std::string& path, const Checkpoi
     c.image = Image(width, height);
     c.owner.assign(c.image.pixelCount(), -1);
     const auto runs = r.pod<uint64_t>();
-    r.need(runs * 24);
+    r.needItems(runs, 24);
     for (uint64_t i = 0; i < runs; ++i) {
       TaskRun run;
       run.first = r.pod<uint64_t>();
@@ -128,7 +128,7 @@ std::optional<Checkpoint> readCheckpoint(const std::string& path, const Checkpoi
       }
       c.done.append(run);
     }
-    r.need(c.done.size() * (3 * sizeof(float) + sizeof(int16_t)));
+    r.needItems(c.done.size(), 3 * sizeof(float) + sizeof(int16_t));
     auto data = c.image.data();
     c.done.forEach([&](uint64_t p) { r.raw(&data[3 * p], 3 * sizeof(float)); });
     c.done.forEach([&](uint64_t p) { c.owner[p] = r.pod<int16_t>(); });

@@ -42,9 +42,10 @@ class MasterLoop {
       const double now = net_.now();
       sendOut(master_.expireLeases(now, options_.leaseSeconds));
       if (now >= nextBeat) {
-        for (int w = 0; w < master_.workerCount(); ++w) {
-          if (master_.isLive(w)) net_.send(w, Channel::Protocol, encode(HeartbeatMsg{}));
-        }
+        const Bytes beat = encode(HeartbeatMsg{});
+        // To every worker, as Master::sendToAll does: one wrongly presumed lost must not
+        // conclude that the master is gone.
+        for (int w = 0; w < master_.workerCount(); ++w) net_.send(w, Channel::Protocol, beat);
         nextBeat = now + options_.heartbeatSeconds;
       }
       const size_t losses = master_.ledger().losses().size();

@@ -156,9 +156,7 @@ int runMpiWorker(MpiSession& session, const ParallelOptions& options) {
   const int id = endpointOf(session.rank());
   try {
     MpiLink link(session.comm().comm);
-    WorkerFaultActions faults;
-    faults.crash = [&] { failAsInjected(*options.faults.begin(), id); };
-    faults.hang = faults.crash;
+    WorkerFaultActions faults;  // set only for this rank's injected fault, if any
     ParallelOptions mine = options;
     // A slowdown list of the wrong length is the master's to report: it releases us.
     if (mine.slowdowns.size() != static_cast<size_t>(session.workerCount())) mine.slowdowns.clear();

@@ -100,7 +100,6 @@ class MpiLink final : public Transport {
   std::optional<int32_t> release() const { return release_; }
   // Waits until `deadline` for a release from the master (after the run).
   std::optional<int32_t> awaitRelease(double deadline);
-  MpiTransport& raw() { return net_; }
 
  private:
   MpiTransport net_;
