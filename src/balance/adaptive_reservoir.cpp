@@ -63,18 +63,24 @@ uint64_t AdaptiveReservoirStrategy::initialSize(int worker) {
 std::vector<double> AdaptiveReservoirStrategy::rates() const {
   const int workerCount = workers().workerCount();
   std::vector<double> out(static_cast<size_t>(workerCount), 0.0);
-  double sum = 0;
+  const std::vector<double>& index = speedIndexSeconds();
+  double rateTimesIndex = 0;
   int measured = 0;
   for (int w : workers().liveList()) {
     if (throughput().measured(w)) {
       out[static_cast<size_t>(w)] = throughput().rate(w);
-      sum += out[static_cast<size_t>(w)];
+      rateTimesIndex += out[static_cast<size_t>(w)] * index[static_cast<size_t>(w)];
       ++measured;
     }
   }
   if (measured == 0) return out;
+  // A worker not measured yet (one that just joined, above all) is taken to run as the
+  // measured ones do per unit of speed index: rate x speed index averaged over them, divided
+  // by its own index. With equal indices (no index run) that is their mean rate.
   for (int w : workers().liveList()) {
-    if (!throughput().measured(w)) out[static_cast<size_t>(w)] = sum / measured;
+    if (!throughput().measured(w)) {
+      out[static_cast<size_t>(w)] = rateTimesIndex / measured / index[static_cast<size_t>(w)];
+    }
   }
   return out;
 }

@@ -7,7 +7,9 @@
 //    of labour when one was run (the indices differ), else evenly. No speed-index wait is
 //    needed: run with --speed-index none and it starts with the scene.
 //  - Learning: each worker's rate is its tasks per second over its recent results
-//    (throughput.h); a worker not measured yet is assumed to run at the mean measured rate.
+//    (throughput.h); a worker not measured yet (at the start, or just joined) is assumed to
+//    run as the measured ones do per unit of speed index: the mean of their rate x speed
+//    index, over its own index (the mean measured rate when the indices are equal).
 //    The pool is in interleaved order (interleaved_order.h), so every hand-out samples the
 //    whole image and rates measured on one hand-out hold for the next.
 //  - Sizing, so that all finish together: a request from worker w finds the common finishing
@@ -27,7 +29,8 @@
 //    A worker that slows down after its last hand-out is thus relieved by the others
 //    instead of finishing alone.
 //
-// Lost workers: see PooledStrategy.
+// Lost and joining workers: see PooledStrategy. A newcomer's first request is sized from its
+// speed index as above, or steals once the reserve is empty.
 
 #include <cstdint>
 #include <optional>

@@ -21,18 +21,15 @@ class FakeMaster {
  public:
   FakeMaster(Strategy& strategy, const FakeRunConfig& config)
       : strategy_(strategy), config_(config) {
-    const double slowest =
+    slowest_ =
         *std::max_element(config.speedIndexSeconds.begin(), config.speedIndexSeconds.end());
-    for (double s : config.speedIndexSeconds) {
-      FakeWorker w;
-      w.rate = static_cast<uint64_t>(std::clamp(std::lround(slowest / s), 1L, 64L));
-      workers_.push_back(w);
-    }
+    for (double s : config.speedIndexSeconds) workers_.push_back(makeWorker(s));
     const auto n = static_cast<size_t>(config.taskCount);
     result_.renderCount.assign(n, 0);
     result_.assignCount.assign(n, 0);
     result_.recoveredCount.assign(n, 0);
     result_.lastBusyRound.assign(workers_.size(), 0);
+    result_.renderedBy.assign(workers_.size(), 0);
   }
 
   FakeRunResult run() {
@@ -44,6 +41,7 @@ class FakeMaster {
     while (result_.rounds < maxRounds && result_.errors.empty()) {
       ++result_.rounds;
       if (pendingQuery_) answerQuery();
+      admitArrivals();
       maybeLoseWorker();
       for (int w : visitOrder()) visit(w);
       if (quiescent()) {
@@ -61,6 +59,34 @@ class FakeMaster {
 
  private:
   void error(const std::string& message) { result_.errors.push_back(message); }
+
+  FakeWorker makeWorker(double speedIndexSeconds) const {
+    FakeWorker w;
+    w.rate = static_cast<uint64_t>(std::clamp(std::lround(slowest_ / speedIndexSeconds), 1L, 64L));
+    return w;
+  }
+
+  // Arrivals due this round join as the master introduces them: onWorkerJoined, then a
+  // request of their own unless they were given tasks at once.
+  void admitArrivals() {
+    const auto& arrivals = config_.arrivals;
+    while (nextArrival_ < arrivals.size() && arrivals[nextArrival_].atRound <= result_.rounds) {
+      const double s = arrivals[nextArrival_++].speedIndexSeconds;
+      const int id = static_cast<int>(workers_.size());
+      workers_.push_back(makeWorker(s));
+      workers_.back().needsRequest = false;
+      result_.lastBusyRound.push_back(0);
+      result_.renderedBy.push_back(0);
+      ++result_.joined;
+      apply(strategy_.onWorkerJoined(id, config_.hideSpeedIndex ? 1.0 : s));
+      FakeWorker& w = workers_[static_cast<size_t>(id)];
+      if (w.queue.empty() && !w.outstanding) {
+        w.outstanding = true;
+        ++result_.requests;
+        apply(strategy_.onRequest(id));
+      }
+    }
+  }
 
   bool liveWorker(int w, const char* what) {
     if (w < 0 || static_cast<size_t>(w) >= workers_.size() ||
@@ -122,6 +148,7 @@ class FakeMaster {
   void maybeLoseWorker() {
     const int lost = config_.lostWorker;
     if (lost < 0 || lostDone_ || rendered_ < config_.loseAfterRendered) return;
+    if (static_cast<size_t>(lost) >= workers_.size()) return;  // has not joined yet
     lostDone_ = true;
     FakeWorker& w = workers_[static_cast<size_t>(lost)];
     w.lost = true;
@@ -154,6 +181,7 @@ class FakeMaster {
     TaskSet done = w.queue.takeFront(rate);
     done.forEach([&](uint64_t t) { ++result_.renderCount[static_cast<size_t>(t)]; });
     rendered_ += done.size();
+    result_.renderedBy[static_cast<size_t>(index)] += done.size();
     if (!done.empty()) {
       result_.lastBusyRound[static_cast<size_t>(index)] = result_.rounds;
       // A round is one second; a worker that ran out part-way used a share of it.
@@ -170,13 +198,25 @@ class FakeMaster {
 
   bool quiescent() const {
     if (pendingQuery_) return false;
+    // The run goes on until every scripted arrival has joined, as a real one would not know.
+    if (nextArrival_ < config_.arrivals.size() &&
+        result_.renderCount.size() > 0 && !allRendered()) {
+      return false;
+    }
     return std::all_of(workers_.begin(), workers_.end(), [](const FakeWorker& w) {
       return w.lost || (w.queue.empty() && !w.needsRequest);
     });
   }
 
+  bool allRendered() const {
+    return std::all_of(result_.renderCount.begin(), result_.renderCount.end(),
+                       [](uint32_t c) { return c > 0; });
+  }
+
   Strategy& strategy_;
   const FakeRunConfig& config_;
+  double slowest_ = 1;
+  size_t nextArrival_ = 0;
   std::vector<FakeWorker> workers_;
   FakeRunResult result_;
   uint64_t rendered_ = 0;

@@ -147,4 +147,11 @@ Decisions HybridStrategy::onWorkerLost(int worker, const TaskSet& unfinished) {
   return StaticStrategy::onWorkerLost(worker, unfinished);
 }
 
+Decisions HybridStrategy::onWorkerJoined(int worker, double speedIndexSeconds) {
+  Decisions out = StaticStrategy::onWorkerJoined(worker, speedIndexSeconds);
+  speedIndexSeconds_.push_back(speedIndexSeconds);
+  waiting_.push_back(false);
+  return out;
+}
+
 }  // namespace prt

@@ -49,6 +49,7 @@ class HybridStrategy final : public StaticStrategy {
   Decisions onRequest(int worker) override;
   Decisions onQueueLengths(const std::vector<uint64_t>& lengths) override;
   Decisions onWorkerLost(int worker, const TaskSet& unfinished) override;
+  Decisions onWorkerJoined(int worker, double speedIndexSeconds) override;
 
  protected:
   std::vector<TaskSet> shares(const StartInfo& info) const override;

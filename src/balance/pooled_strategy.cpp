@@ -76,6 +76,19 @@ Decisions PooledStrategy::onWorkerLost(int worker, const TaskSet& unfinished) {
   return out;
 }
 
+Decisions PooledStrategy::onWorkerJoined(int worker, double speedIndexSeconds) {
+  validateJoin(worker, workers_.workerCount(), speedIndexSeconds);
+  workers_.add();
+  throughput_.add();
+  idle_.push_back(false);
+  waiting_.push_back(false);
+  inbound_.push_back(false);
+  victim_.push_back(-1);
+  speedIndexSeconds_.push_back(speedIndexSeconds);
+  onLiveWorkersChanged();
+  return {};
+}
+
 Decisions PooledStrategy::onResults(int worker, const TaskSet& tasks, double computeSeconds) {
   if (!workers_.isLive(worker)) return {};
   throughput_.returned(worker, tasks.size(), computeSeconds);

@@ -16,6 +16,7 @@
 // Lost workers: their unfinished tasks go back to the FRONT of the pool (so they go out
 // first) and every live worker that was told NoMoreWork, and so would never ask again, is
 // served at once as if it had just asked. A request from a lost worker gets NoMoreWork.
+// A worker that joins is one more live worker, with its speed index; it asks next.
 // Not thread-safe.
 
 #include <cstdint>
@@ -34,6 +35,8 @@ class PooledStrategy : public Strategy {
   Decisions onRequest(int worker) final;
   Decisions onWorkerLost(int worker, const TaskSet& unfinished) final;
   Decisions onResults(int worker, const TaskSet& tasks, double computeSeconds) final;
+  // The newcomer is live and idle; its request, which follows, is served like any other.
+  Decisions onWorkerJoined(int worker, double speedIndexSeconds) final;
 
  protected:
   // The order in which tasks sit in the pool; hand-outs take its front. Called first by
@@ -48,7 +51,8 @@ class PooledStrategy : public Strategy {
   // Tasks a hand-out to live `worker` takes from the non-empty pool; the caller clamps the
   // answer to [1, remaining()]. Called exactly once per hand-out, so it may keep state.
   virtual uint64_t handOutSize(int worker) = 0;
-  // Called after a worker is marked lost and its tasks are back in the pool.
+  // Called after a worker is marked lost and its tasks are back in the pool, and after a
+  // worker joins (before its first request).
   virtual void onLiveWorkersChanged() {}
   // The pool is empty and live `worker` asks: a Transfer of tasks from a live peer's queue to
   // it, with count >= 1, or nothing (NoMoreWork). Defaults to nothing.
@@ -62,6 +66,7 @@ class PooledStrategy : public Strategy {
   // True while tasks stolen for `worker` may still be on their way to it: its count includes
   // them, but its queue may not, so it is no victim yet.
   bool awaitingSteal(int worker) const { return inbound_[static_cast<size_t>(worker)]; }
+  const std::vector<double>& speedIndexSeconds() const { return speedIndexSeconds_; }
   // The reservoir's division of labour over the live workers; 0 for lost workers.
   std::vector<double> liveDivisionOfLabor() const;
 

@@ -27,4 +27,10 @@ Decisions StaticStrategy::onWorkerLost(int worker, const TaskSet& unfinished) {
   return spreadOverLiveWorkers(unfinished, workers_);
 }
 
+Decisions StaticStrategy::onWorkerJoined(int worker, double speedIndexSeconds) {
+  validateJoin(worker, workers_.workerCount(), speedIndexSeconds);
+  workers_.add();
+  return {};
+}
+
 }  // namespace prt

@@ -5,8 +5,9 @@
 // object therefore runs unchanged under the local-thread driver, the MPI driver and the
 // simulator, and is unit-tested with scripted events.
 //
-// Tasks are pixel indices 0 .. taskCount-1 in scan-line order. Workers are 0 .. c-1.
-// Not thread-safe: one master owns one strategy.
+// Tasks are pixel indices 0 .. taskCount-1 in scan-line order. Workers are 0 .. c-1, where c
+// starts as the size of StartInfo::speedIndexSeconds and grows by one with every worker that
+// joins the running render (onWorkerJoined). Not thread-safe: one master owns one strategy.
 
 #include <cstdint>
 #include <memory>
@@ -104,6 +105,22 @@ class Strategy {
   // (a transfer in flight); they are treated the same way. When no worker is left alive it
   // returns nothing: the master reports the failure.
   virtual Decisions onWorkerLost(int worker, const TaskSet& unfinished) = 0;
+
+  // A worker joins the running render (after start()): it is worker c, the next index, with
+  // speed index `speedIndexSeconds` (> 0, finite; lower is faster). It holds nothing. The
+  // decisions say what it gets at once; right after this call the master enters a request
+  // for it, as for every worker given nothing at the start, so a strategy that returns
+  // nothing here answers that request instead. What the strategies do:
+  //  - dynamic and adaptive ones (PooledStrategy) count it among the live workers and answer
+  //    its request like any other: the reservoir gives it a share of what remains in the
+  //    reservoir by its speed index (its division of labour among the live workers), the
+  //    others their usual hand-out, or a steal once the pool is empty;
+  //  - static ones (scatter, scatter-weighted, blocks) give it nothing: the image was divided
+  //    at the start; it renders only the tasks of workers lost later (spread over the live
+  //    workers, it among them);
+  //  - the hybrids give it nothing at once: its request starts a diffusion round, which
+  //    moves tasks to it from the longest queues.
+  virtual Decisions onWorkerJoined(int worker, double speedIndexSeconds) = 0;
 };
 
 // Creates a strategy by name (registry.h lists the rows); an unknown name or an option outside

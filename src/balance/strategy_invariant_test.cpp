@@ -1,16 +1,19 @@
 // Properties every strategy must have, whatever the image size, worker count and speeds:
 // every task is rendered exactly once, nothing is assigned to a lost worker, every request is
-// answered, and a run ends in a bounded number of rounds.
+// answered, and a run ends in a bounded number of rounds — also when workers join the running
+// render, and when some of those are lost.
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <ostream>
 #include <string>
 #include <vector>
 
 #include "balance/fake_master.h"
 #include "balance/strategy.h"
+#include "core/input_error.h"
 #include "core/rng.h"
 
 namespace prt {
@@ -78,6 +81,10 @@ std::string describe(const testing::FakeRunConfig& c) {
   std::string s = "tasks " + std::to_string(c.taskCount) + ", speeds {";
   for (double v : c.speedIndexSeconds) s += std::to_string(v) + " ";
   s += "}";
+  for (const testing::FakeArrival& a : c.arrivals) {
+    s += ", a worker of index " + std::to_string(a.speedIndexSeconds) + " joins at round " +
+         std::to_string(a.atRound);
+  }
   if (c.lostWorker >= 0) {
     s += ", worker " + std::to_string(c.lostWorker) + " lost after " +
          std::to_string(c.loseAfterRendered);
@@ -139,6 +146,45 @@ TEST_P(StrategyInvariantTest, WorkerLostMidwayOrAtOnce) {
       }
     }
   }
+}
+
+TEST_P(StrategyInvariantTest, WorkersJoiningMidwayKeepEveryInvariant) {
+  for (uint64_t tasks : kTaskCounts) {
+    for (int workers = 1; workers <= 6; ++workers) {
+      for (const std::vector<double>& speeds : speedLists(workers)) {
+        testing::FakeRunConfig config{.taskCount = tasks, .speedIndexSeconds = speeds};
+        config.arrivals = {{1, 0.5}, {3, 4.0}, {3, 1.0}};
+        config.seed = tasks * 17 + static_cast<uint64_t>(workers);
+        if (!checkRun(GetParam(), config)) return;
+      }
+    }
+  }
+}
+
+TEST_P(StrategyInvariantTest, ArrivalsAndLossesInOneRun) {
+  for (uint64_t tasks : kTaskCounts) {
+    for (int workers = 1; workers <= 6; ++workers) {
+      const std::vector<double> speeds(static_cast<size_t>(workers), 2.0);
+      // Lose an initial worker (when there is more than one) or the first joiner.
+      for (int lost : {workers > 1 ? 0 : workers, workers}) {
+        testing::FakeRunConfig config{.taskCount = tasks, .speedIndexSeconds = speeds};
+        config.arrivals = {{2, 1.0}, {2, 0.5}, {5, 2.0}};
+        config.lostWorker = lost;
+        config.loseAfterRendered = tasks / 4;
+        config.seed = tasks * 13 + static_cast<uint64_t>(workers);
+        if (!checkRun(GetParam(), config)) return;
+      }
+    }
+  }
+}
+
+TEST_P(StrategyInvariantTest, JoinOutOfTurnOrWithoutASpeedIsRefused) {
+  auto strategy = makeStrategy(GetParam().name, GetParam().options);
+  strategy->start(StartInfo{100, {1.0, 2.0}});
+  EXPECT_THROW(strategy->onWorkerJoined(3, 1.0), InputError);
+  EXPECT_THROW(strategy->onWorkerJoined(2, 0.0), InputError);
+  EXPECT_THROW(strategy->onWorkerJoined(2, std::nan("")), InputError);
+  EXPECT_NO_THROW(strategy->onWorkerJoined(2, 1.0));
 }
 
 TEST_P(StrategyInvariantTest, AllWorkersLostGivesNothing) {

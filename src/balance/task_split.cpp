@@ -63,4 +63,16 @@ void validateStartInfo(const StartInfo& info) {
   }
 }
 
+void validateJoin(int worker, int current, double speedIndexSeconds) {
+  if (worker != current) {
+    throw InputError("worker " + std::to_string(worker) + " cannot join: the next worker is " +
+                     std::to_string(current));
+  }
+  if (!(std::isfinite(speedIndexSeconds) && speedIndexSeconds > 0)) {
+    throw InputError("speed index of joining worker " + std::to_string(worker) + " is " +
+                     std::to_string(speedIndexSeconds) +
+                     "; it must be a positive number of seconds");
+  }
+}
+
 }  // namespace prt

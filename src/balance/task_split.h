@@ -14,10 +14,16 @@ namespace prt {
 // most one, the larger pieces first. Pieces may be empty when parts > tasks.size().
 std::vector<TaskSet> splitEvenly(const TaskSet& tasks, uint64_t parts);
 
-// Which of the c workers are alive. Everyone starts alive; a lost worker never comes back.
+// Which of the c workers are alive. Everyone starts alive; a lost worker never comes back; a
+// worker that joins is added live at the end.
 class LiveWorkers {
  public:
   void reset(int workerCount) { live_.assign(static_cast<size_t>(workerCount), true); }
+  // A worker joins: it is live, with the next index, which is returned.
+  int add() {
+    live_.push_back(true);
+    return workerCount() - 1;
+  }
   int workerCount() const { return static_cast<int>(live_.size()); }
   bool isLive(int worker) const;
   void markLost(int worker);  // ignores unknown workers
@@ -35,5 +41,8 @@ Decisions spreadOverLiveWorkers(const TaskSet& tasks, const LiveWorkers& workers
 // Throws InputError unless there is at least one worker and every speed index is positive
 // and finite.
 void validateStartInfo(const StartInfo& info);
+// Throws InputError unless `worker` is the next index after `current` workers and its speed
+// index is positive and finite (Strategy::onWorkerJoined's contract).
+void validateJoin(int worker, int current, double speedIndexSeconds);
 
 }  // namespace prt

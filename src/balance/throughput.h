@@ -30,6 +30,7 @@ class Throughput {
   static constexpr double kRecentDecay = 0.7;
 
   void reset(int workerCount);
+  void add() { workers_.emplace_back(); }  // a worker joins, knowing nothing yet
   int workerCount() const { return static_cast<int>(workers_.size()); }
 
   void given(int worker, uint64_t tasks);                   // an Assign
