@@ -17,6 +17,15 @@ size_t Ledger::index(int worker) const {
   return static_cast<size_t>(worker);
 }
 
+int Ledger::addWorker(double now) {
+  Holding h;
+  h.lastHeard = now;
+  h.joinedAt = now;
+  workers_.push_back(std::move(h));
+  ++liveCount_;
+  return workerCount() - 1;
+}
+
 void Ledger::seedDone(const TaskSet& done) {
   done.forEach([&](uint64_t t) {
     PRT_CHECK(t < taskCount());

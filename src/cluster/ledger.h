@@ -7,10 +7,12 @@
 // Tasks here are pixels. A task may be held by several workers at once (a lost worker's tasks
 // reissued while it is in fact only slow; an endgame duplicate): the first result for a pixel
 // is accepted, every later copy is dropped. A lost worker stays lost, but a late result from
-// it is still accepted where it is the first.
+// it is still accepted where it is the first. Workers that join the running render are
+// added at the end (the next index), live, their lease starting when they join.
 // Not thread-safe: one master owns one ledger.
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -31,6 +33,11 @@ class Ledger {
 
   int workerCount() const { return static_cast<int>(workers_.size()); }
   uint64_t taskCount() const { return done_.size(); }
+
+  // A worker joins at `now`: live, holding nothing, its lease starting now. Returns its index.
+  int addWorker(double now);
+  // When `worker` joined; nothing for the workers the run started with.
+  std::optional<double> joinedAt(int worker) const { return workers_[index(worker)].joinedAt; }
 
   // Tasks finished before this run started (a resumed checkpoint): never handed out.
   void seedDone(const TaskSet& done);
@@ -80,6 +87,7 @@ class Ledger {
   struct Holding {
     bool live = true;
     double lastHeard = 0;
+    std::optional<double> joinedAt;
     TaskSet given;     // every task it received, in order (assignments, transfers in)
     TaskSet moved;     // tasks it sent to peers
     uint64_t returned = 0;  // tasks it returned results for

@@ -75,5 +75,22 @@ TEST(LedgerTest, SeededTasksAreDoneAndTheTailIsTakenFromTheBack) {
   EXPECT_EQ(ledger.unfinishedTail(0, 100), TaskSet::range(6, 5));
 }
 
+TEST(LedgerTest, AWorkerThatJoinsIsLiveWithItsOwnLeaseAndCanBeLost) {
+  Ledger ledger(1, 10);
+  ledger.startLeases(0);
+  EXPECT_FALSE(ledger.joinedAt(0).has_value());
+  EXPECT_EQ(ledger.addWorker(4.0), 1);
+  EXPECT_EQ(ledger.workerCount(), 2);
+  EXPECT_EQ(ledger.liveCount(), 2);
+  EXPECT_EQ(ledger.joinedAt(1), 4.0);
+  // Its lease starts when it joins: at 6 s only worker 0, silent since 0, has run out.
+  EXPECT_EQ(ledger.expired(6.0, 5.0), (std::vector<int>{0}));
+  EXPECT_EQ(ledger.nextExpiry(5.0), 5.0);
+  ledger.gave(1, TaskSet::range(0, 5));
+  ledger.accept(1, TaskSet::range(0, 2));
+  EXPECT_EQ(ledger.markLost(1, 7.0, "silent"), TaskSet::range(2, 3));
+  EXPECT_EQ(ledger.liveCount(), 1);
+}
+
 }  // namespace
 }  // namespace prt

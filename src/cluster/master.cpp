@@ -126,6 +126,7 @@ void Master::startStrategy(Outbox& out) {
   for (int w = 0; w < workerCount(); ++w) {
     if (!isLive(w)) speeds[static_cast<size_t>(w)] = slowest;
   }
+  strategyWorkers_ = workerCount();
   apply(strategy_->start(StartInfo{map_.taskCount(), speeds}), out);
   for (int w = 0; w < workerCount(); ++w) {
     if (!isLive(w)) apply(strategy_->onWorkerLost(w, TaskSet{}), out);
@@ -153,7 +154,53 @@ void Master::answerQueryIfComplete(Outbox& out) {
   }
   queryOpen_ = false;
   if (stopped_) return;
-  apply(strategy_->onQueueLengths(queueLengths_), out);
+  apply(strategy_->onQueueLengths(strategyQueueLengths()), out);
+}
+
+// The lengths of the workers the strategy knows of (a joiner it has not heard of yet is left
+// out; one it heard of during the query was not asked, and holds 0).
+std::vector<uint64_t> Master::strategyQueueLengths() const {
+  return {queueLengths_.begin(), queueLengths_.begin() + strategyWorkers_};
+}
+
+Outbox Master::onWorkerJoined(int worker, double now) {
+  PRT_CHECK(worker == workerCount());
+  Outbox out;
+  ledger_.addWorker(now);
+  speedIndices_.push_back(0.0);
+  answered_.push_back(true);  // not asked by a query already open
+  queueLengths_.push_back(0);
+  endgameServed_.push_back(false);
+  if (stopped_) {
+    out.push_back({worker, StopMsg{}});
+    return out;
+  }
+  if (!started_) ++speedIndicesMissing_;  // one of the starting workers, then
+  out.push_back({worker, scene_});
+  return out;
+}
+
+// Joiners whose speed index is in are introduced to the strategy in index order (a lost one
+// is introduced and lost at once, so the numbering stays whole); each then asks, as a
+// starting worker given nothing does.
+void Master::introduceJoiners(Outbox& out) {
+  if (!started_) return;
+  while (strategyWorkers_ < workerCount()) {
+    const int w = strategyWorkers_;
+    const double speed = speedIndices_[static_cast<size_t>(w)];
+    if (isLive(w) && speed == 0.0) return;  // still measuring
+    ++strategyWorkers_;
+    if (stopped_) continue;
+    if (!isLive(w)) {
+      double slowest = 0;
+      for (double v : speedIndices_) slowest = std::max(slowest, v);
+      apply(strategy_->onWorkerJoined(w, slowest > 0 ? slowest : 1.0), out);
+      apply(strategy_->onWorkerLost(w, TaskSet{}), out);
+      continue;
+    }
+    apply(strategy_->onWorkerJoined(w, speed), out);
+    if (isLive(w) && !ledger_.holdsWork(w) && !complete()) apply(strategy_->onRequest(w), out);
+  }
 }
 
 Outbox Master::onMessage(int from, const Message& message, double now) {
@@ -197,9 +244,17 @@ Outbox Master::onMessage(int from, const Message& message, double now) {
   }
   if (!isLive(from)) return out;  // a worker presumed lost: nothing else from it counts
   if (const auto* s = std::get_if<SpeedIndexMsg>(&message)) {
-    if (speedIndices_[w] == 0.0) --speedIndicesMissing_;
+    if (!(std::isfinite(s->seconds) && s->seconds > 0)) {
+      lose(from, now, "sent an invalid speed index", out);
+      return out;
+    }
+    const bool first = speedIndices_[w] == 0.0;
     speedIndices_[w] = s->seconds;
-    if (speedIndicesMissing_ == 0 && !started_) startStrategy(out);
+    if (!started_) {
+      if (first) --speedIndicesMissing_;
+      if (speedIndicesMissing_ == 0) startStrategy(out);
+    }
+    introduceJoiners(out);
   } else if (std::holds_alternative<RequestMsg>(message)) {
     if (started_ && !stopped_) apply(strategy_->onRequest(from), out);
   } else if (const auto* q = std::get_if<QueueLengthMsg>(&message)) {
@@ -241,7 +296,9 @@ void Master::lose(int worker, double now, const std::string& reason, Outbox& out
     answered_[w] = true;
     queueLengths_[w] = 0;
   }
-  if (!stopped_ && ledger_.liveCount() > 0) {
+  if (worker >= strategyWorkers_) {
+    introduceJoiners(out);  // a joiner the strategy had not heard of: it held nothing
+  } else if (!stopped_ && ledger_.liveCount() > 0) {
     apply(strategy_->onWorkerLost(worker, map_.toTasks(unfinished)), out);
   }
   answerQueryIfComplete(out);

@@ -11,6 +11,12 @@
 // lease). Its unfinished tasks go back through the strategy to the live workers — also when
 // no live worker holds anything, since every worker the strategy gave nothing at the start is
 // entered as having asked. A result is accepted once: a late or duplicate copy is dropped.
+//
+// Joining: a worker may join the running render (onWorkerJoined), numbered in arrival order
+// after the others. It gets the scene; once its speed index is in, the strategy hears of it
+// (Strategy::onWorkerJoined, in index order) and its request is entered. One that joins
+// before the strategy started counts as one of the starting workers; one that joins after the
+// image is complete is told to stop.
 // Not thread-safe: one driver thread calls it.
 
 #include <cstdint>
@@ -49,6 +55,9 @@ class Master {
   Outbox onWorkerLost(int worker, double now, const std::string& reason);
   // Declares lost every live worker silent for more than `leaseSeconds`.
   Outbox expireLeases(double now, double leaseSeconds);
+  // A worker joins at `now`; `worker` must be workerCount() (drivers number joiners in
+  // arrival order). Its lease starts now.
+  Outbox onWorkerJoined(int worker, double now);
 
   bool complete() const { return ledger_.complete(); }
   // Every worker is lost and tasks remain: the run cannot finish.
@@ -75,6 +84,8 @@ class Master {
   void finishIfComplete(Outbox& out);
   void answerQueryIfComplete(Outbox& out);
   void endgameCopy(int worker, Outbox& out);
+  void introduceJoiners(Outbox& out);
+  std::vector<uint64_t> strategyQueueLengths() const;
 
   std::unique_ptr<Strategy> strategy_;
   SceneMsg scene_;
@@ -87,6 +98,7 @@ class Master {
   std::vector<double> speedIndices_;
   int speedIndicesMissing_;
   bool started_ = false;  // strategy started (all speed indices in)
+  int strategyWorkers_ = 0;  // workers the strategy knows of: 0 .. strategyWorkers_-1
   bool stopped_ = false;  // StopMsg sent
 
   bool queryOpen_ = false;

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <deque>
 
 #include "cluster/master.h"
@@ -17,16 +18,19 @@ struct InMemoryRun {
   bool complete = false;
   uint64_t steps = 0;
   uint64_t messages = 0;
+  int joined = 0;
 };
 
 // Worker w renders one batch every (1 + w % 3) rounds, so workers have different speeds.
-// `loseAfterBatches[w]` > 0 makes worker w vanish after that many batches.
+// `loseAfterBatches[w]` > 0 makes worker w vanish after that many batches. Each entry of
+// `joinRounds` makes one more worker join at the start of that round (workers, workers+1, ...).
 InMemoryRun runInMemory(const std::string& strategy, int workers, uint64_t pixels,
                         std::vector<int> loseAfterBatches = {}, MasterOptions options = {},
-                        StrategyOptions strategyOptions = StrategyOptions{80, 5}) {
+                        StrategyOptions strategyOptions = StrategyOptions{80, 5},
+                        const std::vector<uint64_t>& joinRounds = {}) {
   InMemoryRun run;
   run.deliveries.assign(pixels, 0);
-  loseAfterBatches.resize(static_cast<size_t>(workers), 0);
+  loseAfterBatches.resize(static_cast<size_t>(workers) + joinRounds.size(), 0);
   Master master(makeStrategy(strategy, strategyOptions), workers, pixels,
                 SceneMsg{"scene", 1, 1}, [&](int, const TaskSet& tasks, const std::vector<float>& rgb) {
                   size_t i = 0;
@@ -47,6 +51,15 @@ InMemoryRun runInMemory(const std::string& strategy, int workers, uint64_t pixel
   };
   post(kMaster, master.start(0));
   for (uint64_t round = 0; round < 1000000 && !master.complete() && !master.failed(); ++round) {
+    for (uint64_t at : joinRounds) {
+      if (at != round) continue;
+      const int id = static_cast<int>(ws.size());
+      ws.emplace_back(id, WorkerOptions{7});
+      batches.push_back(0);
+      gone.push_back(false);
+      post(kMaster, master.onWorkerJoined(id, static_cast<double>(round)));
+      ++run.joined;
+    }
     while (!network.empty()) {
       InFlight m = std::move(network.front());
       network.pop_front();
@@ -57,7 +70,7 @@ InMemoryRun runInMemory(const std::string& strategy, int workers, uint64_t pixel
         post(m.envelope.to, ws[static_cast<size_t>(m.envelope.to)].onMessage(m.from, m.envelope.message));
       }
     }
-    for (int w = 0; w < workers; ++w) {
+    for (int w = 0; w < static_cast<int>(ws.size()); ++w) {
       Worker& worker = ws[static_cast<size_t>(w)];
       if (gone[static_cast<size_t>(w)]) continue;
       if (worker.needsSetup()) {
@@ -160,6 +173,30 @@ TEST_P(MasterWorkerTest, ResumedPixelsAreNotRenderedAgain) {
   }
 }
 
+// Workers join before the start, early and late; every pixel arrives once.
+TEST_P(MasterWorkerTest, JoinersAreServedAndEveryPixelArrivesOnce) {
+  for (int workers : {1, 2}) {
+    const InMemoryRun run =
+        runInMemory(GetParam(), workers, 600, {}, {}, StrategyOptions{80, 5}, {0, 3, 3});
+    ASSERT_TRUE(run.complete) << workers << " workers";
+    EXPECT_EQ(run.joined, 3) << "the run ended before round 40";
+    for (uint64_t p = 0; p < 600; ++p) ASSERT_EQ(run.deliveries[p], 1) << "pixel " << p;
+  }
+}
+
+// Arrivals and losses in one run: a starting worker and a joiner vanish.
+TEST_P(MasterWorkerTest, ArrivalsAndLossesTogether) {
+  for (bool endgame : {false, true}) {
+    MasterOptions options;
+    options.endgame = endgame;
+    // Workers 0, 1 start; 2, 3, 4 join at rounds 2, 5, 5; 0 and 3 are lost.
+    const InMemoryRun run = runInMemory(GetParam(), 2, 500, {2, 0, 0, 1}, options,
+                                        StrategyOptions{80, 5}, {2, 5, 5});
+    ASSERT_TRUE(run.complete) << (endgame ? "endgame" : "");
+    for (uint64_t p = 0; p < 500; ++p) ASSERT_EQ(run.deliveries[p], 1) << "pixel " << p;
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(AllStrategies, MasterWorkerTest, ::testing::ValuesIn(strategyNames()));
 
 TEST(MasterTest, WorkerLostBeforeTheStartGetsNothing) {
@@ -180,6 +217,39 @@ TEST(MasterTest, WorkerLostBeforeTheStartGetsNothing) {
     EXPECT_TRUE(master.isLive(0));
     EXPECT_FALSE(master.isLive(1));
   }
+}
+
+TEST(MasterTest, AJoinerGetsTheSceneThenTasksAndOneAfterTheEndIsStopped) {
+  Master master(makeStrategy("self", StrategyOptions{.chunk = 10}), 1, 100, SceneMsg{"s", 1, 1},
+                nullptr);
+  master.start(0);
+  master.onMessage(0, SpeedIndexMsg{0.1}, 0.1);  // the strategy starts: worker 0 gets 10
+  Outbox joined = master.onWorkerJoined(1, 1.0);
+  ASSERT_EQ(joined.size(), 1u);
+  EXPECT_EQ(joined[0].to, 1);
+  EXPECT_TRUE(std::holds_alternative<SceneMsg>(joined[0].message));
+  EXPECT_EQ(master.workerCount(), 2);
+  EXPECT_EQ(master.ledger().joinedAt(1), 1.0);
+  // Out of turn: a driver numbers joiners in arrival order.
+  EXPECT_DEATH(master.onWorkerJoined(3, 1.0), "");
+  const Outbox served = master.onMessage(1, SpeedIndexMsg{0.1}, 1.5);
+  ASSERT_EQ(served.size(), 1u);
+  EXPECT_EQ(served[0].to, 1);
+  ASSERT_TRUE(std::holds_alternative<TasksMsg>(served[0].message));
+  EXPECT_EQ(std::get<TasksMsg>(served[0].message).tasks, TaskSet::range(10, 10));
+  // A speed index that is no number: the joiner is lost, its tasks go back to the pool.
+  master.onWorkerJoined(2, 2.0);
+  master.onMessage(2, SpeedIndexMsg{std::nan("")}, 2.1);
+  EXPECT_FALSE(master.isLive(2));
+  // Finish, then another arrives: it is told to stop.
+  Master small(makeStrategy("blocks", {}), 1, 4, SceneMsg{}, nullptr);
+  small.start(0);
+  small.onMessage(0, SpeedIndexMsg{0.1}, 0);
+  small.onMessage(0, ResultsMsg{TaskSet::range(0, 4), std::vector<float>(12, 0.f)}, 1);
+  ASSERT_TRUE(small.complete());
+  const Outbox late = small.onWorkerJoined(1, 2);
+  ASSERT_EQ(late.size(), 1u);
+  EXPECT_TRUE(std::holds_alternative<StopMsg>(late[0].message));
 }
 
 TEST(MasterTest, EveryWorkerLostIsAFailureNotAHang) {
