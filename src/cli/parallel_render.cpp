@@ -93,6 +93,16 @@ void addParallelOptions(CLI::App& cmd, RenderOptions& o) {
                  "Speeds that change mid-render: W:T:K,... makes worker W run K times slower "
                  "(K >= 1, instead of its --slowdown) from T seconds after its start")
       ->group(parallel);
+  cmd.add_option("--join-at", o.joinAt,
+                 "Workers that join the running render (local driver): T:K,... starts K more "
+                 "workers T seconds in, numbered after the others in the order they join "
+                 "(--slowdown then lists every worker, joiners included)")
+      ->group(parallel);
+  cmd.add_option("--accept-workers", o.acceptWorkersPath,
+                 "Under mpirun: open an MPI port and write its name to FILE, so that "
+                 "`mpirun -np K prt join FILE` adds K workers to the running render (both "
+                 "jobs need the same --ompi-server; see the README)")
+      ->group(parallel);
   cmd.add_option("--speed-index", o.speedIndex,
                  "Speed index the workers measure: hanoi (the paper's Towers of Hanoi run), "
                  "probe (rendering a fixed sample of the image's pixels), none (start at once; "
@@ -171,8 +181,9 @@ ParallelOptions toParallelOptions(const RenderOptions& o, int workers) {
   p.strategy = o.strategyFlags.name();
   p.strategyOptions = strategyOptionsFrom(o.strategyFlags);
   p.slowdowns = o.slowdowns;
+  if (!o.joinAt.empty()) p.joins = parseJoinWaves(o.joinAt, "--join-at");
   if (!o.slowdownAt.empty()) {
-    p.slowdownChanges = parseSpeedChanges(o.slowdownAt, "--slowdown-at", workers, 1);
+    p.slowdownChanges = parseSpeedChanges(o.slowdownAt, "--slowdown-at", p.totalWorkers(), 1);
   }
   const bool automatic = o.speedIndex == "auto";
   p.speedIndexKind =

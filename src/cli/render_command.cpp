@@ -118,6 +118,13 @@ int runRender(const RenderOptions& o) {
     throw InputError("--workers cannot be used under mpirun: the worker count is the number of "
                      "ranks minus one (rank 0 is the master)");
   }
+  if (mpi && !o.joinAt.empty()) {
+    throw InputError("--join-at starts threads that join a local render; under mpirun, add "
+                     "workers with --accept-workers FILE and `mpirun -np K prt join FILE`");
+  }
+  if (!mpi && !o.acceptWorkersPath.empty()) {
+    throw InputError("--accept-workers opens an MPI port: run the render under mpirun");
+  }
   // --- MPI hook: only rank 0 reads the scene file; the workers get the scene from it.
   if (mpi) {
     return renderParallelMpi(o, [&] {
@@ -133,11 +140,11 @@ int runRender(const RenderOptions& o) {
   const bool parallel = o.workers || o.strategyFlags.strategy;
   for (const bool parallelOnly : {!o.reportPath.empty(), !o.tracePath.empty(),
                                   !o.ownershipPath.empty(), !o.htmlPath.empty(),
-                                  !o.slowdowns.empty(), !o.faults.empty()}) {
+                                  !o.slowdowns.empty(), !o.faults.empty(), !o.joinAt.empty()}) {
     if (parallelOnly && !parallel) {
-      throw InputError("--report, --trace, --ownership, --html, --slowdown and --inject-fault "
-                       "describe a parallel run; add --workers N (and optionally --strategy "
-                       "NAME)");
+      throw InputError("--report, --trace, --ownership, --html, --slowdown, --join-at and "
+                       "--inject-fault describe a parallel run; add --workers N (and optionally "
+                       "--strategy NAME)");
     }
   }
   checkOutputs(o, scene);

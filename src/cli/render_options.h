@@ -26,6 +26,8 @@ struct RenderOptions {
   StrategyFlags strategyFlags;             // --strategy and the strategies' options
   std::vector<double> slowdowns;           // per worker, >= 1
   std::string slowdownAt;                  // --slowdown-at W:T:K,...
+  std::string joinAt;                      // --join-at T:K,... (local driver)
+  std::string acceptWorkersPath;           // --accept-workers FILE (MPI)
   std::string speedIndex = "auto";         // what workers measure: auto | hanoi | probe | none
   unsigned long long batchPixels = 128;    // pixels per returned batch
   double workerTimeoutSeconds = 5;         // the lease: silence before a worker is lost

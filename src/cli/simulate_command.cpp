@@ -34,6 +34,7 @@ struct SimulateOptions {
   std::string speedIndexRun = "auto";   // on | off | auto (off for the adaptive strategies)
   std::string endgame = "off";          // on | off
   std::string speedAt;                  // --speed-at W:T:SPEED,...
+  std::string joinAt;                   // --join-at T:K,...
   std::vector<double> speeds;           // per worker; empty: see slowShare, lognormal, else all 1
   std::optional<double> slowShare;      // fraction of the workers that are slow
   double slowFactor = 4;                // how many times slower they are
@@ -81,27 +82,31 @@ CostMap loadCostMap(const SimulateOptions& o, std::string& source) {
   return o.serialSeconds ? map.scaledTo(*o.serialSeconds) : map;
 }
 
-std::vector<double> workerSpeeds(const SimulateOptions& o) {
+// One speed per worker, those that join (--join-at) included.
+std::vector<double> workerSpeeds(const SimulateOptions& o, int joiners) {
+  const int all = o.workers + joiners;
   const int given = (o.speeds.empty() ? 0 : 1) + (o.slowShare ? 1 : 0) + (o.lognormal ? 1 : 0);
   if (given > 1) {
     throw InputError("give at most one of --speeds, --slow-share and --lognormal");
   }
   if (!o.speeds.empty()) {
-    validateWorkerSpeeds(o.speeds, o.workers);
+    validateWorkerSpeeds(o.speeds, all);
     return o.speeds;
   }
-  if (o.slowShare) return slowShareSpeeds(o.workers, *o.slowShare, o.slowFactor, o.seed);
-  if (o.lognormal) return lognormalSpeeds(o.workers, *o.lognormal, o.seed);
-  return uniformSpeeds(o.workers);
+  if (o.slowShare) return slowShareSpeeds(all, *o.slowShare, o.slowFactor, o.seed);
+  if (o.lognormal) return lognormalSpeeds(all, *o.lognormal, o.seed);
+  return uniformSpeeds(all);
 }
 
 int runSimulate(const SimulateOptions& o) {
   SimulationOptions options;
   options.strategy = o.strategyFlags.name();
   options.strategyOptions = strategyOptionsFrom(o.strategyFlags);
-  options.speeds = workerSpeeds(o);
+  if (!o.joinAt.empty()) options.joins = parseJoinWaves(o.joinAt, "--join-at");
+  options.speeds = workerSpeeds(o, joinerCount(options.joins));
   if (!o.speedAt.empty()) {
-    options.speedChanges = parseSpeedChanges(o.speedAt, "--speed-at", o.workers, 0);
+    options.speedChanges = parseSpeedChanges(o.speedAt, "--speed-at",
+                                             static_cast<int>(options.speeds.size()), 0);
   }
   if (o.speedIndexRun != "auto" && o.speedIndexRun != "on" && o.speedIndexRun != "off") {
     throw InputError("--speed-index-run '" + o.speedIndexRun + "': expected on, off or auto");
@@ -219,6 +224,11 @@ Action addSimulateCommand(CLI::App& app, const std::string& commandLine) {
   cmd->add_option("--speed-at", o->speedAt,
                   "Speeds that change mid-run: W:T:SPEED,... makes worker W run at relative "
                   "speed SPEED (> 0) from T virtual seconds on")
+      ->group(speeds);
+  cmd->add_option("--join-at", o->joinAt,
+                  "Workers that join the running render: T:K,... adds K workers T virtual "
+                  "seconds in, numbered after the --workers N in the order they join; --speeds "
+                  "then lists every worker, joiners included")
       ->group(speeds);
   cmd->add_option("--seed", o->seed, "Seed for --slow-share and --lognormal")
       ->capture_default_str()

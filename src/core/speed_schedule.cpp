@@ -57,6 +57,44 @@ std::vector<SpeedChange> parseSpeedChanges(const std::string& text, const std::s
   return out;
 }
 
+std::vector<JoinWave> parseJoinWaves(const std::string& text, const std::string& flag) {
+  std::vector<JoinWave> out;
+  std::stringstream items(text);
+  std::string item;
+  while (std::getline(items, item, ',')) {
+    auto bad = [&](const std::string& why) {
+      return InputError(flag + ": '" + item + "' " + why + " (expected T:K, T:K,...)");
+    };
+    const size_t a = item.find(':');
+    if (a == std::string::npos || item.find(':', a + 1) != std::string::npos) {
+      throw bad("is not two numbers separated by ':'");
+    }
+    JoinWave w;
+    if (!parseNumber(item.substr(0, a), w.atSeconds) || !(w.atSeconds >= 0) ||
+        !(w.atSeconds <= 86400)) {
+      throw bad("has no time in [0, 86400] seconds");
+    }
+    double count = 0;
+    if (!parseNumber(item.substr(a + 1), count) || count != std::floor(count) || count < 1 ||
+        count > 4096) {
+      throw bad("has no worker count in [1, 4096]");
+    }
+    w.count = static_cast<int>(count);
+    out.push_back(w);
+  }
+  if (out.empty()) throw InputError(flag + ": no arrivals given");
+  if (text.back() == ',') throw InputError(flag + ": '" + text + "' ends with an empty item");
+  std::stable_sort(out.begin(), out.end(),
+                   [](const JoinWave& x, const JoinWave& y) { return x.atSeconds < y.atSeconds; });
+  return out;
+}
+
+int joinerCount(const std::vector<JoinWave>& waves) {
+  int n = 0;
+  for (const JoinWave& w : waves) n += w.count;
+  return n;
+}
+
 std::vector<SpeedChange> changesOf(const std::vector<SpeedChange>& changes, int worker) {
   std::vector<SpeedChange> out;
   for (const SpeedChange& c : changes) {

@@ -3,6 +3,7 @@
 // start", as the command line gives them (`--slowdown-at W:T:K,...` for the thread and MPI
 // drivers, K a slowdown factor >= 1; `prt simulate --speed-at W:T:SPEED,...`, SPEED a
 // relative speed > 0). What X means is the caller's; this header parses, checks and looks up.
+// Also the arrivals of workers mid-run (`--join-at T:K,...`: K more workers T seconds in).
 // Plain values; thread-safe.
 
 #include <string>
@@ -22,6 +23,19 @@ struct SpeedChange {
 // `minValue` (or not above it when minValue is 0, so speeds must be > 0) or not finite.
 std::vector<SpeedChange> parseSpeedChanges(const std::string& text, const std::string& flag,
                                            int workers, double minValue);
+
+// --join-at T:K: K more workers join the running render T seconds after it starts.
+struct JoinWave {
+  double atSeconds = 0;
+  int count = 1;
+  bool operator==(const JoinWave&) const = default;
+};
+
+// Parses "T:K,T:K,..." and sorts the waves by time (joiners are numbered in the order they
+// join). Throws InputError (naming `flag` and the item) for a malformed item, T outside
+// [0, 86400] or K outside [1, 4096].
+std::vector<JoinWave> parseJoinWaves(const std::string& text, const std::string& flag);
+int joinerCount(const std::vector<JoinWave>& waves);
 
 // Worker `worker`'s changes, sorted by time (a later item wins at equal times).
 std::vector<SpeedChange> changesOf(const std::vector<SpeedChange>& changes, int worker);

@@ -26,7 +26,7 @@ ParallelRun runMasterSide(Transport& net, const RunRequest& request, const std::
   const Scene& scene = request.scene;
   const ParallelOptions& options = request.options;
   const uint64_t pixels = static_cast<uint64_t>(scene.image.width) * scene.image.height;
-  const int n = options.workers;
+  const int n = options.workers;  // at the start; more may join
 
   ImageAssembler assembler(scene.image.width, scene.image.height);
   MasterOptions masterOptions;
@@ -98,15 +98,19 @@ ParallelRun runMasterSide(Transport& net, const RunRequest& request, const std::
   info.serialSeconds = request.serialSeconds;
   info.speedIndexRun = options.speedIndexKind != SpeedIndexKind::None;
   const std::vector<Event> masterEvents = run.events;
-  for (int w = 0; w < n; ++w) {
-    info.slowdowns.push_back(options.slowdownOf(w));
+  const Ledger& ledger = master.ledger();
+  // Every worker of the run, those that joined included.
+  for (int w = 0; w < master.workerCount(); ++w) {
+    info.joinedAt.push_back(ledger.joinedAt(w));
     const auto& summary = result.summaries[static_cast<size_t>(w)];
     if (!summary) {
+      info.slowdowns.push_back(options.slowdownOf(w));
       if (master.isLive(w)) info.faults.missingSummaries.push_back(w);
       info.tasksReceived.push_back(0);
       info.threads.push_back(0);  // unknown
       continue;
     }
+    info.slowdowns.push_back(summary->slowdown);
     const double offset = net.sharedClock() ? 0.0 : workerClockOffset(masterEvents, summary->events, w);
     for (Event e : summary->events) {
       e.start += offset;
@@ -117,7 +121,6 @@ ParallelRun runMasterSide(Transport& net, const RunRequest& request, const std::
     info.threads.push_back(summary->threads);
     info.rays += summary->rays;
   }
-  const Ledger& ledger = master.ledger();
   for (const LostWorker& l : ledger.losses()) {
     info.faults.lostWorkers.push_back({l.worker, l.atSeconds, l.reason, l.unfinished});
   }

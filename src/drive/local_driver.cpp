@@ -1,5 +1,6 @@
 #include "drive/local_driver.h"
 
+#include <algorithm>
 #include <chrono>
 #include <memory>
 #include <thread>
@@ -36,7 +37,7 @@ ParallelRun renderLocal(const RunRequest& request) {
   validateParallelOptions(options, static_cast<uint64_t>(request.scene.image.width) *
                                        request.scene.image.height);
   const int n = options.workers;
-  LocalNetwork net(n);
+  LocalNetwork net(options.totalWorkers());
   ThreadFailures failures;
   std::vector<std::thread> threads;
   const auto joinAll = [&] {
@@ -53,6 +54,29 @@ ParallelRun renderLocal(const RunRequest& request) {
   for (int w = 0; w < n; ++w) {
     threads.emplace_back(runWorkerThread, std::ref(net), w, std::cref(options),
                          std::ref(failures));
+  }
+  // --join-at: a thread that starts each wave's workers at its time, announcing each to the
+  // master first, as a machine connecting does. It ends early when the run does.
+  if (!options.joins.empty()) {
+    threads.emplace_back([&net, &options, &failures, n] {
+      std::vector<JoinWave> waves = options.joins;
+      std::stable_sort(waves.begin(), waves.end(),
+                       [](const JoinWave& a, const JoinWave& b) { return a.atSeconds < b.atSeconds; });
+      std::vector<std::thread> joiners;
+      int next = n;
+      for (const JoinWave& wave : waves) {
+        while (!net.isShutDown() && net.now() < wave.atSeconds) {
+          std::this_thread::sleep_for(std::chrono::milliseconds(2));
+        }
+        if (net.isShutDown()) break;
+        for (int k = 0; k < wave.count; ++k, ++next) {
+          net.join(next);
+          joiners.emplace_back(runWorkerThread, std::ref(net), next, std::cref(options),
+                               std::ref(failures));
+        }
+      }
+      for (std::thread& t : joiners) t.join();
+    });
   }
   LocalTransport master(net, kMaster);
   try {

@@ -8,6 +8,10 @@ LocalNetwork::LocalNetwork(int workerCount) : start_(std::chrono::steady_clock::
   for (int w = 0; w < workerCount; ++w) workers_.push_back(std::make_unique<Mailbox>());
 }
 
+void LocalNetwork::join(int endpoint) {
+  master_.push(Mail{endpoint, Channel::Protocol, {}, false, true});
+}
+
 Mailbox& LocalNetwork::boxOf(int endpoint) {
   return endpoint == kMaster ? master_ : *workers_[static_cast<size_t>(endpoint)];
 }
@@ -39,6 +43,10 @@ Incoming LocalTransport::poll(double deadline) {
   in.from = mail->from;
   if (mail->lost) {
     in.kind = Incoming::Kind::PeerLost;
+    return in;
+  }
+  if (mail->joined) {
+    in.kind = Incoming::Kind::PeerJoined;
     return in;
   }
   in.kind = Incoming::Kind::Packet;

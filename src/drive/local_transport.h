@@ -3,7 +3,8 @@
 // Each endpoint (the master, each worker) has a mailbox; bytes are moved, never shared. The
 // network's clock is shared, so event times need no alignment. A worker thread that ends
 // without its StopMsg (a crash, an exception) drops its connection: the master's mailbox gets
-// a PeerLost notice, as a TCP link would report a closed socket.
+// a PeerLost notice, as a TCP link would report a closed socket. Workers that join later have
+// their mailboxes from the start; join() announces each to the master (PeerJoined).
 
 #include <atomic>
 #include <chrono>
@@ -17,6 +18,8 @@ namespace prt {
 
 class LocalNetwork {
  public:
+  // Mailboxes for `workerCount` workers: those that start and those that join later (each
+  // announced by join()).
   explicit LocalNetwork(int workerCount);
   Mailbox& boxOf(int endpoint);
   double now() const;
@@ -25,12 +28,14 @@ class LocalNetwork {
   // Tells every thread the run is over: a hung worker waits for this, and every worker still
   // in its loop hears that the master is gone.
   void shutDown();
+  // Worker `endpoint` connects: the master hears of it before any of its packets.
+  void join(int endpoint);
   bool isShutDown() const { return shutdown_; }
 
  private:
   std::chrono::steady_clock::time_point start_;
   Mailbox master_;
-  std::vector<std::unique_ptr<Mailbox>> workers_;
+  std::vector<std::unique_ptr<Mailbox>> workers_;  // all made at the start: never resized
   std::atomic<bool> shutdown_{false};
 };
 

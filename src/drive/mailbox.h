@@ -17,7 +17,8 @@ struct Mail {
   int from = kMaster;
   Channel channel = Channel::Protocol;
   Bytes bytes;
-  bool lost = false;  // not a message: the connection to `from` dropped
+  bool lost = false;    // not a message: the connection to `from` dropped
+  bool joined = false;  // not a message: `from` connected (a worker joining the run)
 };
 
 class Mailbox {

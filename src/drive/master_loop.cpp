@@ -89,6 +89,13 @@ class MasterLoop {
 
   void receive(const Incoming& in) {
     const double now = net_.now();
+    if (in.kind == Incoming::Kind::PeerJoined) {
+      if (in.from != master_.workerCount()) return;  // out of turn: not a worker we can number
+      result_.summaries.emplace_back();
+      log_.add({EventKind::WorkerJoined, in.from, now, now, 0, 0, kMaster, ""});
+      sendOut(master_.onWorkerJoined(in.from, now));
+      return;
+    }
     if (!isWorker(in.from)) return;  // not one of ours: nothing to trust in it
     if (in.kind == Incoming::Kind::PeerLost) {
       sendOut(master_.onWorkerLost(in.from, now, "connection dropped"));
@@ -143,6 +150,10 @@ class MasterLoop {
     };
     while (pending()) {
       const Incoming in = net_.poll(net_.now() + 0.05);
+      if (in.kind == Incoming::Kind::PeerJoined) {
+        receive(in);  // too late to help: told to stop, its summary is not waited for
+        continue;
+      }
       if (!isWorker(in.from)) continue;
       const auto i = static_cast<size_t>(in.from);
       if (in.kind == Incoming::Kind::PeerLost) {

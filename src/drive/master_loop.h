@@ -7,6 +7,8 @@
 //   - A worker is lost when the transport says so (PeerLost), when it sends bytes that do not
 //     decode, or when its lease runs out (no message for `leaseSeconds`); the Master then
 //     hands its unfinished tasks to the live workers. A WorkerLost event marks each loss.
+//   - A worker that joins (PeerJoined) is admitted (Master::onWorkerJoined) and marked by a
+//     WorkerJoined event; one that joins after the end is told to stop.
 //   - The master sends every live worker a heartbeat every `heartbeatSeconds`, so a worker can
 //     tell when the master itself is gone.
 //   - `checkpoint` (optional) is called every `checkpointEverySeconds`, after each loss and

@@ -37,9 +37,19 @@ struct ParallelOptions {
   bool endgame = false;                // copies of the last tasks for workers left idle
   std::string checkpointPath;          // empty: no checkpoints
   double checkpointEverySeconds = 10;  // between periodic checkpoints
+  std::vector<JoinWave> joins;         // threads: workers that join mid-render, numbered
+                                       // after the others in wave order (--join-at)
+
+  int joinerCount() const { return prt::joinerCount(joins); }
+  // Every worker of the run: the starting ones and those that join (per-worker lists such as
+  // --slowdown cover them all).
+  int totalWorkers() const { return workers + joinerCount(); }
 
   double slowdownOf(int worker) const {
-    return slowdowns.empty() ? 1.0 : slowdowns[static_cast<size_t>(worker)];
+    // A worker past the list (one that joined under MPI, with its own --slowdown) is not
+    // slowed by the master's.
+    const auto w = static_cast<size_t>(worker);
+    return w < slowdowns.size() ? slowdowns[w] : 1.0;
   }
   std::vector<SpeedChange> slowdownChangesOf(int worker) const {
     return changesOf(slowdownChanges, worker);
@@ -47,7 +57,8 @@ struct ParallelOptions {
 };
 
 // Throws InputError for options no driver can run: a slowdown list of the wrong length or
-// with values below 1, an unknown strategy or bad strategy options, more workers than pixels.
+// with values below 1, an unknown strategy or bad strategy options, more workers than pixels,
+// a join wave at a negative time or of no workers.
 void validateParallelOptions(const ParallelOptions& options, uint64_t pixelCount);
 
 }  // namespace prt

@@ -28,11 +28,24 @@ void validateParallelOptions(const ParallelOptions& o, uint64_t pixelCount) {
     throw InputError("more workers (" + std::to_string(o.workers) + ") than pixels (" +
                      std::to_string(pixelCount) + ")");
   }
+  for (const JoinWave& j : o.joins) {
+    if (!(j.atSeconds >= 0 && j.atSeconds <= 86400) || j.count < 1 || j.count > 4096) {
+      throw InputError("--join-at " + formatNumber(j.atSeconds) + ":" + std::to_string(j.count) +
+                       ": the time must be in [0, 86400] seconds and the count in [1, 4096]");
+    }
+  }
+  const int total = o.totalWorkers();
+  const std::string numbered =
+      o.joins.empty() ? std::to_string(o.workers) + " workers are numbered 0 to " +
+                            std::to_string(o.workers - 1)
+                      : std::to_string(total) + " workers (with those that join) are numbered 0 to " +
+                            std::to_string(total - 1);
   if (!o.slowdowns.empty()) {
-    if (o.slowdowns.size() != static_cast<size_t>(o.workers)) {
+    if (o.slowdowns.size() != static_cast<size_t>(total)) {
       throw InputError("--slowdown lists " + std::to_string(o.slowdowns.size()) +
-                       " values for " + std::to_string(o.workers) +
-                       " workers; give one per worker");
+                       " values for " + std::to_string(total) +
+                       (o.joins.empty() ? " workers" : " workers (with those that join)") +
+                       "; give one per worker");
     }
     for (double k : o.slowdowns) {
       // Beyond a thousand an emulated worker would take hours for a render of seconds, and
@@ -43,17 +56,16 @@ void validateParallelOptions(const ParallelOptions& o, uint64_t pixelCount) {
     }
   }
   for (const FaultInjection& f : o.faults) {
-    if (f.worker < 0 || f.worker >= o.workers) {
+    if (f.worker < 0 || f.worker >= total) {
       throw InputError("--inject-fault names worker " + std::to_string(f.worker) + ", but the " +
-                       std::to_string(o.workers) + " workers are numbered 0 to " +
-                       std::to_string(o.workers - 1));
+                       numbered);
     }
   }
   for (const SpeedChange& c : o.slowdownChanges) {
-    if (c.worker < 0 || c.worker >= o.workers || !(c.value >= 1.0) || !(c.atSeconds >= 0)) {
+    if (c.worker < 0 || c.worker >= total || !(c.value >= 1.0) || !(c.atSeconds >= 0)) {
       throw InputError("--slowdown-at: worker " + std::to_string(c.worker) + " at " +
                        std::to_string(c.atSeconds) + " s, factor " + std::to_string(c.value) +
-                       ": workers are 0 to " + std::to_string(o.workers - 1) +
+                       ": workers are 0 to " + std::to_string(total - 1) +
                        ", times >= 0 and factors >= 1");
     }
   }

@@ -5,8 +5,8 @@
 // heartbeats, reissue, checkpoints, the report); a transport only moves bytes, says when a
 // peer is known to be gone, and tells the time. Every wait has a deadline.
 //
-// Endpoints are worker indices 0..c-1 and kMaster. One transport per endpoint, used by one
-// thread.
+// Endpoints are worker indices 0..c-1 and kMaster; c grows as workers join a running render.
+// One transport per endpoint, used by one thread.
 
 #include <cstdint>
 
@@ -22,6 +22,9 @@ struct Incoming {
   enum class Kind {
     Packet,    // `bytes` arrived from `from` on `channel`
     PeerLost,  // the transport knows `from` is gone (its thread ended, its link dropped)
+    PeerJoined,  // a new worker `from` connected (the master's transport only); joiners are
+                 // numbered in arrival order after the others, and this notice comes before
+                 // any packet from it
     Timeout,   // nothing arrived before the deadline
   };
   Kind kind = Kind::Timeout;

@@ -28,6 +28,7 @@ class WorkerEngine {
         threads_(threads < 1 ? 1 : threads) {}
 
   int threads() const { return threads_; }
+  double slowdown() const { return throttle_.slowdown(); }  // the factor at the start
 
   // Parses the scene text (the master already validated it) and prepares the renderer.
   void load(const SceneMsg& scene);

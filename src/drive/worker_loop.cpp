@@ -72,7 +72,7 @@ class WorkerLoop {
         startBatch();
       }
     }
-    WorkerSummary summary{rays_, worker_.tasksReceived(), engine_.threads(),
+    WorkerSummary summary{rays_, worker_.tasksReceived(), engine_.threads(), engine_.slowdown(),
                           std::move(log_.events)};
     net_.send(kMaster, Channel::Summary, encodeSummary(summary));
     net_.flush(options_.masterTimeoutSeconds);

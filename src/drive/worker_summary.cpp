@@ -9,7 +9,7 @@
 namespace prt {
 namespace {
 
-constexpr uint8_t kVersion = 2;  // 2: the thread count
+constexpr uint8_t kVersion = 3;  // 2: the thread count; 3: the slowdown
 
 constexpr size_t kMinEventBytes = 1 + 4 + 8 + 8 + 8 + 8 + 4 + 2;
 
@@ -21,6 +21,7 @@ Bytes encodeSummary(const WorkerSummary& summary) {
   w.pod(summary.rays);
   w.pod(summary.tasksReceived);
   w.pod(static_cast<int32_t>(summary.threads));
+  w.pod(summary.slowdown);
   w.pod(static_cast<uint64_t>(summary.events.size()));
   for (const Event& e : summary.events) {
     w.pod(static_cast<uint8_t>(e.kind));
@@ -43,13 +44,15 @@ WorkerSummary decodeSummary(const uint8_t* data, size_t size) {
   s.tasksReceived = r.pod<uint64_t>();
   s.threads = r.pod<int32_t>();
   if (s.threads < 1) throw std::runtime_error("malformed worker summary: thread count");
+  s.slowdown = r.pod<double>();
+  if (!(s.slowdown >= 1)) throw std::runtime_error("malformed worker summary: slowdown");
   const auto count = r.pod<uint64_t>();
   if (count > size / kMinEventBytes) throw std::runtime_error("malformed worker summary: count");
   s.events.reserve(count);
   for (uint64_t i = 0; i < count; ++i) {
     Event e;
     const auto kind = r.pod<uint8_t>();
-    if (kind > static_cast<uint8_t>(EventKind::WorkerLost)) {
+    if (kind > static_cast<uint8_t>(EventKind::WorkerJoined)) {
       throw std::runtime_error("malformed worker summary: event kind");
     }
     e.kind = static_cast<EventKind>(kind);

@@ -25,6 +25,7 @@ struct WorkerSummary {
   uint64_t rays = 0;           // rays traced by the worker
   uint64_t tasksReceived = 0;  // task messages received (assignments and transfers)
   int threads = 1;             // threads the worker rendered with
+  double slowdown = 1;         // the --slowdown it was emulating (its own, for a joiner)
   std::vector<Event> events;   // seconds since the worker received the scene
   bool operator==(const WorkerSummary&) const = default;
 };

@@ -58,6 +58,12 @@ std::string chromeTraceJson(const std::vector<Event>& events, int workerCount,
                          {"ts", micros(e.start)}, {"name", "worker " + std::to_string(e.worker) + " lost"},
                          {"cat", "fault"}});
         break;
+      case EventKind::WorkerJoined:
+        trace.push_back({{"ph", "i"}, {"s", "g"}, {"pid", 1}, {"tid", trackOf(-1)},
+                         {"ts", micros(e.start)},
+                         {"name", "worker " + std::to_string(e.worker) + " joined"},
+                         {"cat", "arrival"}});
+        break;
     }
   }
   for (int w = 0; w < workerCount; ++w) {

@@ -15,6 +15,7 @@ enum class EventKind {
   MessageSent,  // `bytes` sent to `peer` at `start`
   MessageReceived,  // `bytes` received from `peer` at `start`
   WorkerLost,   // the master declared `worker` lost at `start`
+  WorkerJoined,  // `worker` joined the running render at `start` (on the master's clock)
 };
 
 struct Event {
@@ -37,6 +38,7 @@ inline const char* eventKindName(EventKind kind) {
     case EventKind::MessageSent: return "message_sent";
     case EventKind::MessageReceived: return "message_received";
     case EventKind::WorkerLost: return "worker_lost";
+    case EventKind::WorkerJoined: return "worker_joined";
   }
   return "unknown";
 }

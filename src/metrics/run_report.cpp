@@ -14,6 +14,31 @@ double maximumAchievableSpeedup(double serialSpeedIndex, const std::vector<doubl
   return masu;
 }
 
+std::optional<double> balancedFinishSeconds(const std::vector<double>& rates,
+                                            const std::vector<double>& arrivals, double pixels) {
+  // Water filling over the arrivals in time order: between two arrivals the workers present
+  // render at their summed rate.
+  std::vector<size_t> order;
+  for (size_t i = 0; i < rates.size(); ++i) {
+    if (rates[i] > 0) order.push_back(i);
+  }
+  if (order.empty()) return std::nullopt;
+  std::stable_sort(order.begin(), order.end(),
+                   [&](size_t a, size_t b) { return arrivals[a] < arrivals[b]; });
+  double rate = 0;
+  double left = pixels;
+  double t = arrivals[order.front()];
+  for (size_t k = 0; k < order.size(); ++k) {
+    rate += rates[order[k]];
+    const double next = k + 1 < order.size() ? arrivals[order[k + 1]] : t;
+    const double canDo = rate * (next - t);
+    if (k + 1 == order.size() || canDo >= left) return t + left / rate;
+    left -= canDo;
+    t = next;
+  }
+  return t;
+}
+
 RunReport makeReport(const RunInfo& info, const std::vector<Event>& events,
                      double elapsedSeconds) {
   RunReport r;
@@ -28,19 +53,25 @@ RunReport makeReport(const RunInfo& info, const std::vector<Event>& events,
     wr.slowdown = w < info.slowdowns.size() ? info.slowdowns[w] : 1.0;
     wr.tasks = w < info.tasksReceived.size() ? info.tasksReceived[w] : 0;
     wr.threads = w < info.threads.size() ? info.threads[w] : 1;
+    if (w < info.joinedAt.size()) wr.joinedAtSeconds = info.joinedAt[w];
   }
-  double sceneSent = -1, sceneReceived = -1;
+  // Per worker, from the master's sending of the scene to it to its receipt (a worker that
+  // joined later got it later); the report keeps the longest.
+  std::vector<double> sceneSent(n, -1), sceneReceived(n, -1);
   for (const Event& e : events) {
     if (e.label != "Scene") continue;
-    if (e.kind == EventKind::MessageSent) {
+    if (e.kind == EventKind::MessageSent && e.worker < 0) {
       r.sceneBytes = std::max(r.sceneBytes, e.bytes);
-      if (sceneSent < 0 || e.start < sceneSent) sceneSent = e.start;
-    } else if (e.kind == EventKind::MessageReceived && e.worker >= 0) {
-      sceneReceived = std::max(sceneReceived, e.start);
+      if (e.peer >= 0 && static_cast<size_t>(e.peer) < n) sceneSent[static_cast<size_t>(e.peer)] = e.start;
+    } else if (e.kind == EventKind::MessageReceived && e.worker >= 0 &&
+               static_cast<size_t>(e.worker) < n) {
+      sceneReceived[static_cast<size_t>(e.worker)] = e.start;
     }
   }
-  if (sceneSent >= 0 && sceneReceived >= sceneSent) {
-    r.sceneTransferSeconds = sceneReceived - sceneSent;
+  for (size_t w = 0; w < n; ++w) {
+    if (sceneSent[w] >= 0 && sceneReceived[w] >= sceneSent[w]) {
+      r.sceneTransferSeconds = std::max(r.sceneTransferSeconds, sceneReceived[w] - sceneSent[w]);
+    }
   }
   for (const Event& e : events) {
     if (e.kind == EventKind::WorkerLost) {
@@ -73,11 +104,36 @@ RunReport makeReport(const RunInfo& info, const std::vector<Event>& events,
     }
   }
   double busy = 0;
+  double present = 0;
+  std::vector<double> arrivals;
   for (WorkerReport& wr : r.workers) {
-    wr.idleSeconds = std::max(0.0, elapsedSeconds - wr.busySeconds);
+    const double from = std::clamp(wr.joinedAtSeconds.value_or(0.0), 0.0, elapsedSeconds);
+    wr.idleSeconds = std::max(0.0, elapsedSeconds - from - wr.busySeconds);
     busy += wr.busySeconds;
+    present += elapsedSeconds - from;
+    arrivals.push_back(from);
   }
-  r.efficiency = elapsedSeconds > 0 && n > 0 ? busy / (elapsedSeconds * static_cast<double>(n)) : 0;
+  r.efficiency = present > 0 ? busy / present : 0;
+  // The ideal: each worker's relative speed, the work done in speed-weighted busy seconds,
+  // and that work perfectly balanced over the workers from their arrivals.
+  const bool emulated = std::any_of(r.workers.begin(), r.workers.end(),
+                                    [](const WorkerReport& w) { return w.slowdown != 1.0; });
+  std::vector<double> speeds;
+  double work = 0;
+  for (const WorkerReport& wr : r.workers) {
+    double speed = 0;
+    if (emulated) {
+      speed = wr.slowdown > 0 ? 1.0 / wr.slowdown : 0.0;
+    } else if (info.speedIndexRun) {
+      speed = wr.speedIndexSeconds > 0 ? 1.0 / wr.speedIndexSeconds : 0.0;
+    } else {
+      speed = wr.busySeconds > 0 ? static_cast<double>(wr.pixels) / wr.busySeconds : 0.0;
+    }
+    speeds.push_back(speed);
+    work += emulated || info.speedIndexRun ? wr.busySeconds * speed : static_cast<double>(wr.pixels);
+  }
+  r.idealBasis = emulated ? "slowdown" : info.speedIndexRun ? "speed_index" : "measured_throughput";
+  if (work > 0) r.idealSeconds = balancedFinishSeconds(speeds, arrivals, work);
   if (info.speedIndexRun) {
     r.speedIndexMasu =
         maximumAchievableSpeedup(info.masterSpeedIndexSeconds, info.workerSpeedIndexSeconds);
@@ -150,9 +206,17 @@ std::string RunReport::toJson() const {
                   {"messages_received", w.messagesReceived},
                   {"bytes_sent", w.bytesSent},
                   {"bytes_received", w.bytesReceived},
-                  {"lost", w.lost}});
+                  {"lost", w.lost},
+                  {"joined_at_s", w.joinedAtSeconds ? json(*w.joinedAtSeconds) : json(nullptr)}});
   }
   j["workers"] = ws;
+  json joined = json::array();
+  for (const WorkerReport& w : workers) {
+    if (w.joinedAtSeconds) joined.push_back({{"worker", w.worker}, {"at_s", *w.joinedAtSeconds}});
+  }
+  j["joined_workers"] = joined;
+  j["ideal_s"] = orNull(idealSeconds);
+  j["ideal_basis"] = idealBasis;
   const FaultInfo& f = info.faults;
   json lost = json::array();
   for (const LostWorkerInfo& l : f.lostWorkers) {
@@ -218,6 +282,21 @@ std::string RunReport::toTable() const {
   }
   for (int w : info.faults.missingSummaries) {
     out += "worker " + std::to_string(w) + " sent no summary: its times are missing\n";
+  }
+  bool anyJoined = false;
+  for (const WorkerReport& w : workers) {
+    if (!w.joinedAtSeconds) continue;
+    anyJoined = true;
+    std::snprintf(line, sizeof line, "worker %d joined at %.2f s and rendered %llu pixels\n",
+                  w.worker, *w.joinedAtSeconds, static_cast<unsigned long long>(w.pixels));
+    out += line;
+  }
+  if (anyJoined && idealSeconds) {
+    std::snprintf(line, sizeof line,
+                  "a perfect balance of the same work, each worker from its arrival (speeds "
+                  "by %s), takes %.3f s: this run took %.2fx that\n",
+                  idealBasis.c_str(), *idealSeconds, elapsedSeconds / *idealSeconds);
+    out += line;
   }
   if (info.faults.resumedPixels > 0) {
     out += std::to_string(info.faults.resumedPixels) + " pixels came from the checkpoint\n";

@@ -1,7 +1,8 @@
 #pragma once
 // RunReport: the paper's measurements of one parallel run, computed from the event stream.
 //   speedup    = serial seconds / elapsed seconds (the SRT's time over the PRT's)
-//   efficiency = sum of workers' execution (busy) time / (elapsed * workers)
+//   efficiency = sum of workers' execution (busy) time / sum of the time each was there
+//                (elapsed * workers when none joined late; a joiner counts from its arrival)
 //   masu       = sum over workers of speed_SRT / speed_i (speed indices are times; the serial
 //                machine's index is the master's)
 //   asu        = speedup / masu
@@ -12,7 +13,15 @@
 // JSON gives speed_index_masu/asu (null without a speed index), measured_masu/asu (null
 // without a serial time), and masu/asu as the one named by masu_basis.
 // Busy time is time spent rendering, including the wait a --slowdown adds to emulate a slower
-// machine; idle time is the rest of the elapsed time.
+// machine; idle time is the rest of the time the worker was there (from its arrival, for one
+// that joined the running render).
+//   ideal_s    = the elapsed time of a perfect balance of the run's work over its workers,
+//                each counted from its arrival: the T with sum_i s_i max(0, T - arrival_i) = W,
+//                where s_i is worker i's relative speed and W = sum_i s_i busy_i the work done
+//                (ideal_basis says where the speeds come from: "slowdown", 1/k_i of an
+//                emulated cluster; "speed_index", 1/index_i; or "measured_throughput",
+//                pixels_i / busy_i with W the pixels). What a run with joiners is measured
+//                against: the MASU assumes every worker there from the start.
 
 #include <cstdint>
 #include <optional>
@@ -35,6 +44,7 @@ struct WorkerReport {
   uint64_t messagesSent = 0, messagesReceived = 0;
   uint64_t bytesSent = 0, bytesReceived = 0;
   bool lost = false;
+  std::optional<double> joinedAtSeconds;  // when it joined the running render (master's clock)
 };
 
 // A worker the master declared lost, and what it left behind.
@@ -67,6 +77,7 @@ struct RunInfo {
   std::vector<double> slowdowns;        // per worker, 1 = full speed
   std::vector<uint64_t> tasksReceived;  // per worker
   std::vector<int> threads;             // per worker: rendering threads (0: unknown)
+  std::vector<std::optional<double>> joinedAt;  // per worker: when it joined; none: at start
   std::optional<double> serialSeconds;  // for speed-up; absent: speed-up not reported
   bool speedIndexRun = true;            // false: the workers' indices are placeholders
   uint64_t rays = 0;
@@ -88,6 +99,8 @@ struct RunReport {
   // seconds from the master's first sending of it to the last worker's receipt.
   uint64_t sceneBytes = 0;
   double sceneTransferSeconds = 0;
+  std::optional<double> idealSeconds;  // see ideal_s above; none when nothing was measured
+  std::string idealBasis = "slowdown";  // where its speeds come from (see above)
   std::vector<WorkerReport> workers;
 
   std::string toJson() const;       // keys: elapsed_s, speedup, efficiency, masu, asu,
@@ -97,6 +110,11 @@ struct RunReport {
 
 // `elapsedSeconds` is the master's wall time from sending the scene to writing the image.
 RunReport makeReport(const RunInfo& info, const std::vector<Event>& events, double elapsedSeconds);
+
+// The T at which workers of `rates` (pixels per second, 0: absent) arriving at `arrivals`
+// (seconds) render `pixels` between them when perfectly balanced; none without any rate.
+std::optional<double> balancedFinishSeconds(const std::vector<double>& rates,
+                                            const std::vector<double>& arrivals, double pixels);
 
 // Maximum achievable speed-up: sum of speedIndexSerial / speedIndex_i.
 double maximumAchievableSpeedup(double serialSpeedIndex, const std::vector<double>& speedIndices);

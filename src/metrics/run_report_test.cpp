@@ -77,6 +77,34 @@ TEST(RunReportTest, EfficiencySpeedupAndAsuFromEvents) {
   EXPECT_EQ(r.workers[0].messagesSent, 1u);
 }
 
+TEST(RunReportTest, AJoinerCountsFromItsArrivalAndTheIdealFollowsTheSchedule) {
+  RunInfo info = twoWorkers();
+  info.joinedAt = {std::nullopt, 2.0};  // worker 1 joins at 2 s
+  std::vector<Event> events;
+  events.push_back({EventKind::Compute, 0, 0.0, 4.0, 100, 0, 0, ""});  // 25 pixels/s
+  events.push_back({EventKind::Compute, 1, 2.0, 4.0, 100, 0, 0, ""});  // 50 pixels/s
+  const RunReport r = makeReport(info, events, 4.0);
+  EXPECT_DOUBLE_EQ(r.workers[1].idleSeconds, 0.0);
+  EXPECT_DOUBLE_EQ(r.efficiency, 1.0);  // 6 busy seconds of 4 + 2 present
+  // 200 pixels: 50 by 2 s from worker 0 alone, then 75 pixels/s for the other 150: 4 s.
+  ASSERT_TRUE(r.idealSeconds.has_value());
+  EXPECT_DOUBLE_EQ(*r.idealSeconds, 4.0);
+  const auto j = nlohmann::json::parse(r.toJson());
+  ASSERT_EQ(j["joined_workers"].size(), 1u);
+  EXPECT_EQ(j["joined_workers"][0]["worker"], 1);
+  EXPECT_DOUBLE_EQ(j["workers"][1]["joined_at_s"].get<double>(), 2.0);
+  EXPECT_TRUE(j["workers"][0]["joined_at_s"].is_null());
+  EXPECT_NE(r.toTable().find("worker 1 joined at 2.00 s"), std::string::npos);
+}
+
+TEST(RunReportTest, BalancedFinishWaterFillsOverArrivals) {
+  // One worker at 10/s has done 50 pixels by 5 s, when one at 30/s joins: 40 more take 1 s.
+  EXPECT_DOUBLE_EQ(*balancedFinishSeconds({10, 30}, {0, 5}, 90), 6.0);
+  EXPECT_DOUBLE_EQ(*balancedFinishSeconds({10, 30}, {0, 5}, 40), 4.0);  // done before it came
+  EXPECT_DOUBLE_EQ(*balancedFinishSeconds({10, 0}, {0, 0}, 40), 4.0);   // an absent worker
+  EXPECT_FALSE(balancedFinishSeconds({0}, {0}, 40).has_value());
+}
+
 TEST(RunReportTest, JsonHasThePapersKeysAtTopLevel) {
   const RunReport r = makeReport(twoWorkers(), {}, 2.0);
   const auto j = nlohmann::json::parse(r.toJson());

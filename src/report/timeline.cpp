@@ -72,6 +72,7 @@ struct Row {
 
 std::string markLabel(const Event& e) {
   if (e.kind == EventKind::WorkerLost) return "worker " + std::to_string(e.worker) + " lost";
+  if (e.kind == EventKind::WorkerJoined) return "worker " + std::to_string(e.worker) + " joined";
   std::string label = eventKindName(e.kind);
   std::replace(label.begin(), label.end(), '_', ' ');
   if (e.pixels > 0) label += ", " + std::to_string(e.pixels) + " pixels";

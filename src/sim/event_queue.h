@@ -18,6 +18,7 @@ enum class SimEventKind {
   Deliver,     // a message is in the receiver's mailbox
   MasterDone,  // the master finished handling a message; its replies leave now
   WorkerDone,  // a worker finished its setup or its batch
+  Join,        // worker `endpoint` joins the running render
 };
 
 struct SimEvent {

@@ -48,7 +48,7 @@ class Simulation {
       : costs_(costs),
         options_(options),
         net_(workerCount(), options.network),
-        master_(makeStrategy(options.strategy, options.strategyOptions), workerCount(),
+        master_(makeStrategy(options.strategy, options.strategyOptions), startingWorkers(),
                 costs.pixelCount(), SceneMsg{std::string(options.sceneBytes, ' '), 1, 1}, nullptr,
                 masterOptions(options)) {
     for (int w = 0; w < workerCount(); ++w) {
@@ -64,6 +64,16 @@ class Simulation {
 
   SimulatedRun run() {
     send(kMaster, master_.start(now_));
+    int next = startingWorkers();
+    for (const JoinWave& wave : options_.joins) {
+      for (int k = 0; k < wave.count; ++k) {
+        SimEvent join;
+        join.time = wave.atSeconds;
+        join.kind = SimEventKind::Join;
+        join.endpoint = next++;
+        queue_.push(std::move(join));
+      }
+    }
     while (!finished_) {
       if (queue_.empty()) {
         throw std::runtime_error("simulation stalled with " +
@@ -87,6 +97,10 @@ class Simulation {
         case SimEventKind::WorkerDone:
           finishWork(e.endpoint);
           break;
+        case SimEventKind::Join:
+          log_.add({EventKind::WorkerJoined, e.endpoint, now_, now_, 0, 0, kMaster, ""});
+          send(kMaster, master_.onWorkerJoined(e.endpoint, now_));
+          break;
       }
     }
     return report();
@@ -94,6 +108,7 @@ class Simulation {
 
  private:
   int workerCount() const { return static_cast<int>(options_.speeds.size()); }
+  int startingWorkers() const { return workerCount() - joinerCount(options_.joins); }
   SimWorker& worker(int w) { return workers_[static_cast<size_t>(w)]; }
 
   void send(int from, Outbox out) {
@@ -216,9 +231,10 @@ class Simulation {
     info.speedIndexRun = options_.speedIndexRun;
     info.faults.endgameCopies = master_.endgameCopies();
     info.faults.duplicatePixels = master_.ledger().duplicates();
-    for (const SimWorker& w : workers_) {
-      info.slowdowns.push_back(1.0 / w.speed);
-      info.tasksReceived.push_back(w.machine.tasksReceived());
+    for (int w = 0; w < master_.workerCount(); ++w) {  // those that joined in time included
+      info.slowdowns.push_back(1.0 / worker(w).speed);
+      info.tasksReceived.push_back(worker(w).machine.tasksReceived());
+      info.joinedAt.push_back(master_.ledger().joinedAt(w));
     }
     run.report = makeReport(info, log_.events, now_);
     run.events = std::move(log_.events);
@@ -252,6 +268,11 @@ void validateSimulationOptions(const SimulationOptions& o, uint64_t pixelCount) 
                      std::to_string(pixelCount) + ")");
   }
   validateWorkerSpeeds(o.speeds, static_cast<int>(workers));
+  const int joiners = joinerCount(o.joins);
+  if (static_cast<size_t>(joiners) >= workers) {
+    throw InputError("--join-at adds " + std::to_string(joiners) + " workers but the run has " +
+                     std::to_string(workers) + " in all: at least one must start");
+  }
   if (o.batchPixels < 1) throw InputError("--batch must be at least 1");
   if (!(o.batchOverheadSeconds >= 0) || !std::isfinite(o.batchOverheadSeconds)) {
     throw InputError("--batch-overhead-us must be finite and >= 0");

@@ -12,7 +12,8 @@
 //   - results carry no colours, but are counted at the size they would have.
 // It emits the same event stream (metrics/events.h), hence the same report and Chrome trace,
 // with times in virtual seconds; the run ends when the master holds every pixel, as a real
-// run does. Worker failures are not simulated.
+// run does. Worker failures are not simulated; workers joining mid-run are (--join-at: the
+// master admits each at its time, as the master loop does on a PeerJoined notice).
 //
 // Work is proportional to messages and batches, never to pixels beyond one pass over the
 // map (tasks travel as compact runs), so 1,024 workers on a 3840x2160 image take seconds.
@@ -34,7 +35,9 @@ namespace prt {
 struct SimulationOptions {
   std::string strategy = kDefaultStrategy;  // see strategyNames()
   StrategyOptions strategyOptions;
-  std::vector<double> speeds;             // one per worker (their number is the worker count)
+  std::vector<double> speeds;             // one per worker, those that join included
+  std::vector<JoinWave> joins;            // --join-at: the last joinerCount(joins) workers of
+                                          // `speeds` join at these times, in this order
   uint64_t batchPixels = 128;             // pixels per returned batch, as in a real run
   double batchOverheadSeconds = 0;        // full-speed seconds a batch costs besides its
                                           // pixels (the per-chunk overhead h of the
