@@ -18,6 +18,8 @@ using Action = std::function<int()>;  // returns the process exit code
 // `commandLine` (as typed) is recorded in reports, pages and summaries.
 Action addRenderCommand(CLI::App& app, const std::string& commandLine);
 Action addSpeedIndexCommand(CLI::App& app);
+// Workers that join a running MPI render (join_command.cpp).
+Action addJoinCommand(CLI::App& app);
 // Discrete-event simulation (simulate_command.cpp).
 Action addSimulateCommand(CLI::App& app, const std::string& commandLine);
 // A saved report's page (report_command.cpp).

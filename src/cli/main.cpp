@@ -25,6 +25,7 @@ int main(int argc, char** argv) {
   for (int i = 1; i < argc; ++i) commandLine += std::string(" ") + argv[i];
   const prt::cli::Action render = prt::cli::addRenderCommand(app, commandLine);
   const prt::cli::Action speedIndex = prt::cli::addSpeedIndexCommand(app);
+  const prt::cli::Action join = prt::cli::addJoinCommand(app);
   const prt::cli::Action simulate = prt::cli::addSimulateCommand(app, commandLine);
   const prt::cli::Action exportPov = prt::cli::addExportCommand(app);
   const prt::cli::Action compare = prt::cli::addCompareCommand(app);
@@ -40,6 +41,7 @@ int main(int argc, char** argv) {
     for (CLI::App* sub : app.get_subcommands()) {
       if (sub->get_name() == "render") return render();
       if (sub->get_name() == "speed-index") return speedIndex();
+      if (sub->get_name() == "join") return join();
       if (sub->get_name() == "simulate") return simulate();
       if (sub->get_name() == "export") return exportPov();
       if (sub->get_name() == "compare") return compare();

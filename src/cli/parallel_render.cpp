@@ -182,6 +182,7 @@ ParallelOptions toParallelOptions(const RenderOptions& o, int workers) {
   p.strategyOptions = strategyOptionsFrom(o.strategyFlags);
   p.slowdowns = o.slowdowns;
   if (!o.joinAt.empty()) p.joins = parseJoinWaves(o.joinAt, "--join-at");
+  p.acceptWorkersPath = o.acceptWorkersPath;
   if (!o.slowdownAt.empty()) {
     p.slowdownChanges = parseSpeedChanges(o.slowdownAt, "--slowdown-at", p.totalWorkers(), 1);
   }

@@ -37,6 +37,7 @@ struct ParallelOptions {
   bool endgame = false;                // copies of the last tasks for workers left idle
   std::string checkpointPath;          // empty: no checkpoints
   double checkpointEverySeconds = 10;  // between periodic checkpoints
+  std::string acceptWorkersPath;       // MPI: open a port for `prt join`, its name in this file
   std::vector<JoinWave> joins;         // threads: workers that join mid-render, numbered
                                        // after the others in wave order (--join-at)
 

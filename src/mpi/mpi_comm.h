@@ -4,7 +4,11 @@
 
 #include <mpi.h>
 
+#include <memory>
+
+#include "mpi/mpi_acceptor.h"
 #include "mpi/mpi_session.h"
+#include "mpi/mpi_transport.h"
 
 namespace prt {
 
@@ -13,6 +17,9 @@ struct MpiComm {
   bool runStarted = false;        // master: the scene has gone out (releaseWorkers does nothing)
   bool released = false;          // master: workers already released
   bool skipFinalize = false;      // a rank was lost: MPI_Finalize would wait for it
+  bool threadMultiple = false;    // MPI_THREAD_MULTIPLE provided (needed to accept joiners)
+  std::unique_ptr<mpi_detail::MpiLink> link;           // master: the run's, joiners and all
+  std::unique_ptr<mpi_detail::MpiAcceptor> acceptor;   // master: --accept-workers
 };
 
 }  // namespace prt

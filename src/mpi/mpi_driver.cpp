@@ -7,13 +7,18 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <condition_variable>
+#include <mutex>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <string>
 #include <thread>
 
 #include "core/check.h"
 #include "core/input_error.h"
+#include "cluster/byte_codec.h"
+#include "mpi/mpi_acceptor.h"
 #include "mpi/mpi_comm.h"
 #include "mpi/mpi_transport.h"
 
@@ -91,6 +96,43 @@ bool endLauncherIfStillRunningAfter(double graceSeconds) {
   ::_exit(0);
 }
 
+// What a joiner needs of the run's options, which it was not started with: the master sends
+// it in the welcome (MpiLink::adopt) after the joiner's endpoint.
+Bytes encodeWelcome(const ParallelOptions& o) {
+  const auto kind = static_cast<uint8_t>(o.speedIndexKind);
+  const auto discs = static_cast<int32_t>(o.speedIndexDiscs);
+  const auto batch = static_cast<uint64_t>(o.batchPixels);
+  const double timeout = o.workerTimeoutSeconds;
+  // Laid out by hand, as ByteWriter would (GCC 12 misreads its inlined copies here).
+  Bytes out(sizeof kind + sizeof discs + sizeof batch + sizeof timeout);
+  uint8_t* p = out.data();
+  std::memcpy(p, &kind, sizeof kind);
+  std::memcpy(p += sizeof kind, &discs, sizeof discs);
+  std::memcpy(p += sizeof discs, &batch, sizeof batch);
+  std::memcpy(p + sizeof batch, &timeout, sizeof timeout);
+  return out;
+}
+
+// The joiner's side: its endpoint and the run's options over its own (threads, slowdown).
+int decodeWelcome(const Bytes& bytes, ParallelOptions& o) {
+  ByteReader r(bytes.data(), bytes.size(), "welcome");
+  const auto endpoint = r.pod<int32_t>();
+  (void)r.pod<int32_t>();
+  const auto kind = r.pod<uint8_t>();
+  if (kind > static_cast<uint8_t>(SpeedIndexKind::Slowdown)) {
+    throw std::runtime_error("malformed welcome: speed index kind");
+  }
+  o.speedIndexKind = static_cast<SpeedIndexKind>(kind);
+  o.speedIndexDiscs = r.pod<int32_t>();
+  o.batchPixels = r.pod<uint64_t>();
+  o.workerTimeoutSeconds = r.pod<double>();
+  if (endpoint < 0 || o.speedIndexDiscs < 1 || o.batchPixels < 1 ||
+      !(o.workerTimeoutSeconds > 0)) {
+    throw std::runtime_error("malformed welcome");
+  }
+  return endpoint;
+}
+
 }  // namespace
 
 ParallelRun renderMpiMaster(MpiSession& session, const RunRequest& request) {
@@ -102,20 +144,39 @@ ParallelRun renderMpiMaster(MpiSession& session, const RunRequest& request) {
   }
   validateParallelOptions(
       options, static_cast<uint64_t>(request.scene.image.width) * request.scene.image.height);
-  session.comm().runStarted = true;
-  MpiLink link(session.comm().comm);
-  ParallelRun run = runMasterSide(link, request, "mpi");
-  link.flush(options.workerTimeoutSeconds);
+  MpiComm& comm = session.comm();
+  comm.link = std::make_unique<MpiLink>(comm.comm);
+  if (!options.acceptWorkersPath.empty()) {
+    if (!comm.threadMultiple) {
+      throw InputError("--accept-workers needs MPI_THREAD_MULTIPLE, which this MPI does not "
+                       "provide");
+    }
+    try {
+      comm.acceptor = std::make_unique<MpiAcceptor>(options.acceptWorkersPath);
+    } catch (const MpiError& e) {
+      throw InputError(std::string("--accept-workers: ") + e.what() +
+                       " (run both mpiruns with the same --ompi-server; see the README)");
+    }
+    MpiAcceptor* acceptor = comm.acceptor.get();
+    comm.link->setAcceptSource([acceptor] { return acceptor->take(); }, encodeWelcome(options));
+  }
+  comm.runStarted = true;
+  ParallelRun run = runMasterSide(*comm.link, request, "mpi");
+  comm.link->flush(options.workerTimeoutSeconds);
   return run;
 }
 
 void finishMpiMaster(MpiSession& session, const ParallelRun& run) {
   const FaultInfo& faults = run.report.info.faults;
   const bool clean = faults.lostWorkers.empty() && faults.missingSummaries.empty();
+  MpiComm& comm = session.comm();
+  MpiLink& link = *comm.link;
+  if (comm.acceptor) comm.acceptor->beginStop();  // no more joiners: the port file goes
   if (!clean && !session.recoveryEnabled()) {
     // Without --enable-recovery the job is still alive only because the lost ranks hang, and a
     // rank that exits without MPI_Finalize would end it in error: end them all, and the job,
-    // with MPI_Abort's code 0. The live workers wait for it (see runMpiWorker).
+    // with MPI_Abort's code 0. The live workers wait for it (see runMpiWorker); joiners of
+    // other jobs hear that the master is gone.
     session.comm().skipFinalize = true;
     std::fprintf(stderr,
                  "prt: %zu worker rank(s) were lost; the image and report are complete. Ending "
@@ -126,17 +187,28 @@ void finishMpiMaster(MpiSession& session, const ParallelRun& run) {
     MPI_Abort(session.comm().comm, 0);
     std::_Exit(0);
   }
-  MpiTransport net(session.comm().comm);
   const int32_t code = clean ? kReleaseFinalize : kReleaseExit;
   const auto* p = reinterpret_cast<const uint8_t*>(&code);
-  for (int r = 1; r < session.size(); ++r) {
-    try {
-      net.send(r, kReleaseTag, Bytes(p, p + sizeof code));
-    } catch (const MpiError&) {
+  const Bytes release(p, p + sizeof code);
+  // The first live worker of this job also wakes the port listener on its way out.
+  int waker = -1;
+  if (comm.acceptor) {
+    for (int w = 0; w < session.workerCount() && waker < 0; ++w) {
+      if (!run.report.workers[static_cast<size_t>(w)].lost) waker = w;
     }
   }
-  net.flush(clean ? 30.0 : 2.0);
-  if (clean) return;  // every rank finalizes
+  for (int w = 0; w < link.endpointCount(); ++w) {
+    Bytes bytes = release;
+    if (w == waker) bytes.insert(bytes.end(), comm.acceptor->portName().begin(),
+                                 comm.acceptor->portName().end());
+    link.sendTagged(w, kReleaseTag, std::move(bytes));
+  }
+  link.flush(clean ? 30.0 : 2.0);
+  if (comm.acceptor) comm.acceptor->finishStop(waker >= 0 ? 10.0 : 0.0);
+  if (clean) {
+    for (MPI_Comm inter : link.joinedComms()) MPI_Comm_disconnect(&inter);
+    return;  // every rank finalizes
+  }
   // Under --enable-recovery, MPI_Finalize would wait for the lost ranks, which may never
   // come; mpirun returns once every process has ended: at once if the lost ones died, never
   // if one hangs (stopped, or cut off). A watchdog ends the job after a grace period then.
@@ -180,12 +252,127 @@ int runMpiWorker(MpiSession& session, const ParallelOptions& options) {
       return 1;
     }
     const auto code = link.awaitRelease(link.now() + options.workerTimeoutSeconds + 30);
+    if (!link.wakePort().empty()) wakeAcceptor(link.wakePort());
     if (!code || *code != kReleaseFinalize) session.comm().skipFinalize = true;
     return 0;
   } catch (const MpiError& e) {
     session.abort(rankName(id) + ": MPI failed: " + e.what() + "; aborting");
   } catch (const std::exception& e) {
     session.abort(rankName(id) + ": " + e.what() + "; aborting");
+  }
+}
+
+namespace {
+
+// Rank 0 of the joining job reads the port name; every rank gets it (empty: none).
+std::string sharedPortName(MpiSession& session, const std::string& file) {
+  std::string port;
+  if (session.rank() == 0) {
+    std::FILE* f = std::fopen(file.c_str(), "r");
+    if (f != nullptr) {
+      char line[MPI_MAX_PORT_NAME + 2] = {};
+      if (std::fgets(line, sizeof line, f) != nullptr) port = line;
+      std::fclose(f);
+    }
+    while (!port.empty() && (port.back() == '\n' || port.back() == '\r' || port.back() == ' ')) {
+      port.pop_back();
+    }
+  }
+  int length = static_cast<int>(port.size());
+  check(MPI_Bcast(&length, 1, MPI_INT, 0, session.comm().comm), "MPI_Bcast", -1);
+  port.resize(static_cast<size_t>(length));
+  if (length > 0) {
+    check(MPI_Bcast(port.data(), length, MPI_CHAR, 0, session.comm().comm), "MPI_Bcast", -1);
+  }
+  return port;
+}
+
+}  // namespace
+
+int runJoinedWorkers(MpiSession& session, const JoinRequest& request) {
+  const std::string port = sharedPortName(session, request.portFile);
+  if (port.empty()) {
+    if (session.rank() == 0) {
+      std::fprintf(stderr,
+                   "prt: error: '%s' holds no port name: start the render with "
+                   "--accept-workers %s under mpirun first (and keep it running)\n",
+                   request.portFile.c_str(), request.portFile.c_str());
+    }
+    return 2;
+  }
+  // A port nobody answers (the render ended) makes MPI_Comm_connect wait for ever: a
+  // watchdog ends the job if the connection has not come by the deadline.
+  std::mutex mutex;
+  std::condition_variable done;
+  bool connected = false;
+  std::thread watchdog([&] {
+    std::unique_lock<std::mutex> lock(mutex);
+    if (done.wait_for(lock, std::chrono::duration<double>(request.connectTimeoutSeconds),
+                      [&] { return connected; })) {
+      return;
+    }
+    session.abort("could not reach the render's master at the port in '" + request.portFile +
+                      "' within " + std::to_string(static_cast<int>(request.connectTimeoutSeconds)) +
+                      " s: has that render ended? Both mpiruns need the same --ompi-server",
+                  1);
+  });
+  MPI_Comm inter = MPI_COMM_NULL;
+  std::vector<char> name(port.begin(), port.end());
+  name.push_back('\0');
+  const int code = MPI_Comm_connect(name.data(), MPI_INFO_NULL, 0, session.comm().comm, &inter);
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    connected = true;
+  }
+  done.notify_all();
+  watchdog.join();
+  if (code != MPI_SUCCESS) {
+    session.abort("could not join the render at the port in '" + request.portFile +
+                      "' (MPI_Comm_connect failed): both mpiruns need the same --ompi-server",
+                  1);
+  }
+  try {
+    check(MPI_Comm_set_errhandler(inter, MPI_ERRORS_RETURN), "MPI_Comm_set_errhandler", -1);
+    // The welcome: this worker's endpoint and the run's options.
+    ParallelOptions options;
+    int id = -1;
+    {
+      MpiTransport net(inter);
+      const double deadline = MPI_Wtime() + request.connectTimeoutSeconds;
+      while (id < 0) {
+        if (std::optional<Packet> p = net.poll(); p && p->tag == kWelcomeTag) {
+          id = decodeWelcome(p->bytes, options);
+        } else if (MPI_Wtime() > deadline) {
+          session.abort("joined the render but its master sent no welcome", 1);
+        } else if (!p) {
+          pollPause();
+        }
+      }
+    }
+    options.threads = request.threads;
+    options.slowdowns.assign(static_cast<size_t>(id) + 1, 1.0);
+    options.slowdowns.back() = request.slowdown;
+    for (SpeedChange c : request.slowdownChanges) {
+      c.worker = id;
+      options.slowdownChanges.push_back(c);
+    }
+    MpiLink link(inter, id);
+    const WorkerExit exit = runWorkerSide(link, id, options, WorkerFaultActions{});
+    if (exit == WorkerExit::MasterLost && !link.release()) {
+      std::fprintf(stderr, "prt: joined worker %d: the master stopped answering; exiting\n", id);
+      session.comm().skipFinalize = true;
+      return 1;
+    }
+    const auto release =
+        link.release() ? link.release() : link.awaitRelease(link.now() + options.workerTimeoutSeconds + 30);
+    if (!release || *release != kReleaseFinalize) {
+      session.comm().skipFinalize = true;
+      return 0;
+    }
+    MPI_Comm_disconnect(&inter);
+    return 0;
+  } catch (const std::exception& e) {
+    session.abort(std::string("joined worker: ") + e.what() + "; aborting");
   }
 }
 

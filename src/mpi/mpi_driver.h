@@ -16,6 +16,10 @@
 // `--inject-fault W:PIXELS:crash|hang` acts on worker W (rank W + 1): crash ends the process
 // abruptly (exit code 3), hang stops it answering.
 
+#include <string>
+#include <vector>
+
+#include "core/speed_schedule.h"
 #include "drive/parallel_run.h"
 #include "mpi/mpi_session.h"
 
@@ -35,5 +39,21 @@ void finishMpiMaster(MpiSession& session, const ParallelRun& run);
 // parse the same command line, so `options` matches the master's; only the per-worker fields
 // (slowdown, faults), batchPixels, speedIndexKind, speedIndexDiscs and the timeout are used.
 int runMpiWorker(MpiSession& session, const ParallelOptions& options);
+
+// `prt join FILE`: every rank of this job is a worker that joins the render whose master wrote
+// its port name to FILE (--accept-workers). Rank 0 reads the file and tells the others; all
+// connect at once (MPI_Comm_connect), get their endpoints and the run's options from the
+// master, and work until it stops or releases them. Returns the exit code: 0 after the run,
+// 2 when the file holds no port name, 1 when the master cannot be reached within
+// connectTimeoutSeconds (a render that has ended leaves a port nobody answers: Open MPI then
+// waits for ever, so a watchdog ends the job).
+struct JoinRequest {
+  std::string portFile;
+  int threads = 0;       // rendering threads of each joiner; 0: all its affinity allows
+  double slowdown = 1;   // each joiner runs this many times slower (emulation)
+  std::vector<SpeedChange> slowdownChanges;  // its --slowdown-at (the worker field unused)
+  double connectTimeoutSeconds = 30;
+};
+int runJoinedWorkers(MpiSession& session, const JoinRequest& request);
 
 }  // namespace prt

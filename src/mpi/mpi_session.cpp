@@ -18,13 +18,16 @@ MpiSession::MpiSession() : comm_(std::make_unique<MpiComm>()) {
   MPI_Initialized(&initialized);
   if (initialized) throw std::runtime_error("MPI is already initialised in this process");
   int provided = MPI_THREAD_SINGLE;
-  if (MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided) != MPI_SUCCESS) {
+  // MULTIPLE when the library has it: the master's port listener (--accept-workers) is a
+  // thread of its own. Every other MPI call stays on the thread that made the session.
+  if (MPI_Init_thread(nullptr, nullptr, MPI_THREAD_MULTIPLE, &provided) != MPI_SUCCESS) {
     throw std::runtime_error("MPI_Init_thread failed");
   }
   try {
     if (provided < MPI_THREAD_FUNNELED) {
       throw std::runtime_error("the MPI library does not support MPI_THREAD_FUNNELED");
     }
+    comm_->threadMultiple = provided >= MPI_THREAD_MULTIPLE;
     // A communicator of our own, so a failure is returned to us instead of aborting inside
     // MPI with a message that does not say what went wrong.
     check(MPI_Comm_dup(MPI_COMM_WORLD, &comm_->comm), "MPI_Comm_dup", -1);
@@ -40,6 +43,8 @@ MpiSession::~MpiSession() {
   int finalized = 0;
   MPI_Finalized(&finalized);
   if (finalized) return;
+  if (comm_->acceptor) comm_->acceptor->finishStop(0);
+  comm_->link.reset();
   if (comm_->skipFinalize) {
     std::fflush(stdout);
     std::fflush(stderr);

@@ -8,8 +8,9 @@
 // prints the reason and calls MPI_Abort — no rank is ever left waiting.
 // Ending: MPI_Finalize in the destructor, unless a rank was lost (it would wait for it): then
 // the process exits without it, as Open MPI allows under --enable-recovery.
-// Threading: MPI_THREAD_FUNNELED. Only the thread that created the session may use it or
-// call the MPI driver; other threads (e.g. a multi-threaded serial render) must not call MPI.
+// Threading: MPI_THREAD_MULTIPLE where provided (at least FUNNELED). Only the thread that
+// created the session may use it or call the MPI driver, but for the master's port listener
+// (--accept-workers); other threads (e.g. a multi-threaded render) must not call MPI.
 // This header does not include <mpi.h>: nothing outside src/mpi sees MPI.
 
 #include <memory>

@@ -1,5 +1,6 @@
 #include "mpi/mpi_transport.h"
 
+#include <algorithm>
 #include <chrono>
 #include <climits>
 #include <cstring>
@@ -92,46 +93,205 @@ std::optional<Packet> MpiTransport::poll() {
   return packet;
 }
 
-MpiLink::MpiLink(MPI_Comm comm) : net_(comm), start_(MPI_Wtime()) {}
+namespace {
+
+Bytes withHeader(int32_t a, int32_t b, const Bytes& bytes) {
+  Bytes out(sizeof a + sizeof b + bytes.size());
+  std::memcpy(out.data(), &a, sizeof a);
+  std::memcpy(out.data() + sizeof a, &b, sizeof b);
+  std::copy(bytes.begin(), bytes.end(), out.begin() + sizeof a + sizeof b);
+  return out;
+}
+
+bool readHeader(const Bytes& bytes, int32_t& a, int32_t& b) {
+  if (bytes.size() < sizeof a + sizeof b) return false;
+  std::memcpy(&a, bytes.data(), sizeof a);
+  std::memcpy(&b, bytes.data() + sizeof a, sizeof b);
+  return true;
+}
+
+int remoteSize(MPI_Comm inter) {
+  int size = 0;
+  check(MPI_Comm_remote_size(inter, &size), "MPI_Comm_remote_size", -1);
+  return size;
+}
+
+}  // namespace
+
+MpiLink::MpiLink(MPI_Comm world) : start_(MPI_Wtime()) {
+  int rank = 0, size = 1;
+  check(MPI_Comm_rank(world, &rank), "MPI_Comm_rank", -1);
+  check(MPI_Comm_size(world, &size), "MPI_Comm_size", -1);
+  master_ = rank == 0;
+  self_ = master_ ? kMaster : endpointOf(rank);
+  worldWorkers_ = size - 1;
+  Route r;
+  r.comm = world;
+  r.net = std::make_unique<MpiTransport>(world);
+  r.first = 0;
+  r.count = size - 1;
+  r.rankOffset = 1;
+  routes_.push_back(std::move(r));
+}
+
+MpiLink::MpiLink(MPI_Comm inter, int self) : self_(self), start_(MPI_Wtime()) {
+  Route r;
+  r.comm = inter;
+  r.net = std::make_unique<MpiTransport>(inter);
+  routes_.push_back(std::move(r));
+}
 
 double MpiLink::now() const {
   return MPI_Wtime() - start_;
 }
 
+MpiLink::Route* MpiLink::routeOf(int endpoint, int& rank) {
+  if (!master_) {
+    if (endpoint == kMaster) {
+      rank = 0;
+      return &routes_[0];
+    }
+    if (worldWorkers_ > 0 && endpoint >= 0 && endpoint < worldWorkers_) {
+      rank = rankOf(endpoint);
+      return &routes_[0];
+    }
+    return nullptr;  // another job's worker: through the master
+  }
+  for (Route& r : routes_) {
+    if (endpoint >= r.first && endpoint < r.first + r.count) {
+      rank = endpoint - r.first + r.rankOffset;
+      return &r;
+    }
+  }
+  return nullptr;
+}
+
 void MpiLink::send(int to, Channel channel, Bytes bytes) {
+  const int tag = channel == Channel::Summary ? kSummaryTag : kMessageTag;
   try {
-    net_.send(rankOf(to), channel == Channel::Summary ? kSummaryTag : kMessageTag,
-              std::move(bytes));
+    int rank = 0;
+    if (Route* r = routeOf(to, rank)) {
+      r->net->send(rank, tag, std::move(bytes));
+    } else if (!master_) {
+      routes_[0].net->send(0, kRelayTag, withHeader(to, tag, bytes));
+    }
   } catch (const MpiError&) {
     // The peer is gone or its link is down: its lease will run out.
   }
 }
 
+// Master: a worker's message for another worker it cannot reach.
+void MpiLink::relay(int from, const Bytes& bytes) {
+  int32_t to = 0, tag = 0;
+  if (!readHeader(bytes, to, tag) || (tag != kMessageTag && tag != kSummaryTag)) return;
+  int rank = 0;
+  Route* r = routeOf(to, rank);
+  if (r == nullptr) return;  // no such worker: dropped, as a message to a dead one would be
+  const Bytes payload(bytes.begin() + 2 * sizeof(int32_t), bytes.end());
+  try {
+    r->net->send(rank, kRelayedTag, withHeader(from, tag, payload));
+  } catch (const MpiError&) {
+  }
+}
+
+void MpiLink::adopt(MPI_Comm inter, const Bytes& welcome) {
+  check(MPI_Comm_set_errhandler(inter, MPI_ERRORS_RETURN), "MPI_Comm_set_errhandler", -1);
+  Route r;
+  r.comm = inter;
+  r.net = std::make_unique<MpiTransport>(inter);
+  r.first = routes_.back().first + routes_.back().count;
+  r.count = remoteSize(inter);
+  r.rankOffset = 0;
+  for (int k = 0; k < r.count; ++k) {
+    const int endpoint = r.first + k;
+    r.net->send(k, kWelcomeTag, withHeader(endpoint, 0, welcome));
+    pendingJoins_.push_back(endpoint);
+  }
+  routes_.push_back(std::move(r));
+}
+
+void MpiLink::setAcceptSource(std::function<std::optional<MPI_Comm>()> source, Bytes welcome) {
+  acceptSource_ = std::move(source);
+  welcome_ = std::move(welcome);
+}
+
+std::vector<MPI_Comm> MpiLink::joinedComms() const {
+  std::vector<MPI_Comm> out;
+  for (size_t i = 1; i < routes_.size(); ++i) out.push_back(routes_[i].comm);
+  return out;
+}
+
+void MpiLink::sendTagged(int endpoint, int tag, Bytes bytes) {
+  int rank = 0;
+  Route* r = routeOf(endpoint, rank);
+  if (r == nullptr) return;
+  try {
+    r->net->send(rank, tag, std::move(bytes));
+  } catch (const MpiError&) {
+  }
+}
+
+bool MpiLink::flush(double timeoutSeconds) {
+  bool all = true;
+  for (Route& r : routes_) all = r.net->flush(timeoutSeconds) && all;
+  return all;
+}
+
 Incoming MpiLink::poll(double deadline) {
   Incoming in;
   for (;;) {
-    std::optional<Packet> p;
-    try {
-      p = net_.poll();
-    } catch (const MpiError& e) {
-      if (e.rank() < 0) throw;
-      // A failed request to one peer: treat it as that peer's loss.
-      in.kind = Incoming::Kind::PeerLost;
-      in.from = endpointOf(e.rank());
+    if (master_ && acceptSource_) {
+      while (std::optional<MPI_Comm> inter = acceptSource_()) adopt(*inter, welcome_);
+    }
+    if (!pendingJoins_.empty()) {
+      in.kind = Incoming::Kind::PeerJoined;
+      in.from = pendingJoins_.front();
+      pendingJoins_.erase(pendingJoins_.begin());
       return in;
     }
-    if (p) {
-      in.from = endpointOf(p->rank);
-      if (p->tag == kReleaseTag && p->rank == 0) {
-        int32_t code = 1;
-        if (p->bytes.size() == sizeof code) std::memcpy(&code, p->bytes.data(), sizeof code);
-        release_ = code;
+    for (size_t n = 0; n < routes_.size(); ++n) {
+      Route& route = routes_[nextRoute_++ % routes_.size()];
+      std::optional<Packet> p;
+      try {
+        p = route.net->poll();
+      } catch (const MpiError& e) {
+        if (e.rank() < 0) throw;
+        // A failed request to one peer: treat it as that peer's loss.
         in.kind = Incoming::Kind::PeerLost;
+        in.from = master_ ? route.first + e.rank() - route.rankOffset
+                          : (e.rank() == 0 ? kMaster : endpointOf(e.rank()));
         return in;
       }
-      if (p->tag != kMessageTag && p->tag != kSummaryTag) continue;  // not ours: dropped
+      if (!p) continue;
+      const bool fromMaster = !master_ && p->rank == 0;
+      in.from = master_ ? route.first + p->rank - route.rankOffset
+                        : (fromMaster ? kMaster : endpointOf(p->rank));
+      if (p->tag == kReleaseTag && fromMaster) {
+        int32_t code = 1;
+        if (p->bytes.size() >= sizeof code) std::memcpy(&code, p->bytes.data(), sizeof code);
+        if (p->bytes.size() > sizeof code) {
+          wakePort_.assign(p->bytes.begin() + sizeof code, p->bytes.end());
+        }
+        release_ = code;
+        in.kind = Incoming::Kind::PeerLost;
+        in.from = kMaster;
+        return in;
+      }
+      if (p->tag == kRelayTag && master_) {
+        relay(in.from, p->bytes);
+        continue;
+      }
+      int tag = p->tag;
+      if (p->tag == kRelayedTag && fromMaster) {
+        int32_t from = 0, inner = 0;
+        if (!readHeader(p->bytes, from, inner)) continue;
+        in.from = from;
+        tag = inner;
+        p->bytes.erase(p->bytes.begin(), p->bytes.begin() + 2 * sizeof(int32_t));
+      }
+      if (tag != kMessageTag && tag != kSummaryTag) continue;  // not ours: dropped
       in.kind = Incoming::Kind::Packet;
-      in.channel = p->tag == kSummaryTag ? Channel::Summary : Channel::Protocol;
+      in.channel = tag == kSummaryTag ? Channel::Summary : Channel::Protocol;
       in.bytes = std::move(p->bytes);
       return in;
     }

@@ -11,6 +11,8 @@
 
 #include <mpi.h>
 
+#include <functional>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -25,7 +27,11 @@ namespace prt::mpi_detail {
 enum Tag : int {
   kMessageTag = 1,  // an encoded protocol Message (cluster/messages.h)
   kSummaryTag = 2,  // worker -> master after StopMsg: an encoded WorkerSummary
-  kReleaseTag = 3,  // master -> worker: the job's end; an int32 (see ReleaseCode)
+  kReleaseTag = 3,  // master -> worker: the job's end; an int32 (see ReleaseCode), then for
+                    // the worker that must wake the master's port listener, the port name
+  kRelayTag = 4,    // worker -> master: for another worker it cannot reach (see MpiLink)
+  kRelayedTag = 5,  // master -> worker: relayed from another worker
+  kWelcomeTag = 6,  // master -> joiner: its endpoint and the run's worker options
 };
 
 // What a release tells a worker rank to do.
@@ -86,24 +92,67 @@ class MpiTransport {
 };
 
 // The driver kit's Transport over MPI ranks: protocol messages and summaries as tagged byte
-// buffers (endpoint e is rank e + 1). Sends never block and never throw for a lost peer (a
-// send to a dead rank may even succeed: loss is found by leases); polls sleep briefly between
-// probes. A release from the master arrives as the master's loss (the loop ends) and is kept
-// for the caller in release().
+// buffers. Sends never block and never throw for a lost peer (a send to a dead rank may even
+// succeed: loss is found by leases); polls sleep briefly between probes. A release from the
+// master arrives as the master's loss (the loop ends) and is kept for the caller in release().
+//
+// Routes. The starting workers are ranks of the job's world (endpoint e is rank e + 1).
+// Workers that join later (`prt join`) come in another job, over an intercommunicator the
+// master accepted (adopt()); the master numbers them in arrival order after the others and
+// reports each as PeerJoined. A worker reaches the master and its own job's world directly;
+// a message to any other worker (a Transfer between a starting worker and a joiner) goes
+// through the master, which relays it unseen by the loops.
 class MpiLink final : public Transport {
  public:
-  explicit MpiLink(MPI_Comm comm);
+  // On the job's world: the master (rank 0) or a starting worker.
+  explicit MpiLink(MPI_Comm world);
+  // A joiner: `inter` reaches the master as remote rank 0; this endpoint is `self`.
+  MpiLink(MPI_Comm inter, int self);
+
   void send(int to, Channel channel, Bytes bytes) override;
   Incoming poll(double deadline) override;
   double now() const override;
-  bool flush(double timeoutSeconds) override { return net_.flush(timeoutSeconds); }
+  bool flush(double timeoutSeconds) override;
   std::optional<int32_t> release() const { return release_; }
   // Waits until `deadline` for a release from the master (after the run).
   std::optional<int32_t> awaitRelease(double deadline);
+  // With the release, the port this worker must connect to once, to wake the master's
+  // listener (empty: none).
+  const std::string& wakePort() const { return wakePort_; }
+
+  // Master: the workers of an accepted intercommunicator become the next endpoints; each gets
+  // a welcome (its endpoint, then `welcome`) and is reported as PeerJoined by later polls.
+  void adopt(MPI_Comm inter, const Bytes& welcome);
+  // Master: where accepted intercommunicators come from (polled by poll()); may be null.
+  void setAcceptSource(std::function<std::optional<MPI_Comm>()> source, Bytes welcome);
+  // Master: the intercommunicators adopted, for the end of the job.
+  std::vector<MPI_Comm> joinedComms() const;
+  // Master: every worker's endpoint, 0 .. endpointCount()-1, the joiners' included.
+  int endpointCount() const { return routes_.back().first + routes_.back().count; }
+  // Master: sends `bytes` with a tag of its own (a release) to worker `endpoint`.
+  void sendTagged(int endpoint, int tag, Bytes bytes);
 
  private:
-  MpiTransport net_;
+  struct Route {
+    MPI_Comm comm = MPI_COMM_NULL;
+    std::unique_ptr<MpiTransport> net;
+    int first = 0;      // master: the endpoint of its rank `rankOffset` (see below)
+    int count = 0;      // endpoints on it
+    int rankOffset = 0; // rank of endpoint `first` (1 on the world, 0 on an intercomm)
+  };
+  Route* routeOf(int endpoint, int& rank);
+  void relay(int from, const Bytes& bytes);
+
+  bool master_ = false;
+  int self_ = kMaster;
+  int worldWorkers_ = 0;  // starting workers (the world's size - 1); 0 for a joiner
+  std::vector<Route> routes_;
+  std::vector<int> pendingJoins_;  // endpoints adopted, not yet reported
+  std::function<std::optional<MPI_Comm>()> acceptSource_;
+  Bytes welcome_;
   std::optional<int32_t> release_;
+  std::string wakePort_;
+  size_t nextRoute_ = 0;  // round robin over the routes' polls
   double start_;
 };
 

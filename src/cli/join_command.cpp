@@ -1,0 +1,92 @@
+// prt join FILE: under mpirun, adds this job's ranks as workers to a running render that was
+// started with --accept-workers FILE (see the README's "Machines that join").
+
+#include <cstdlib>
+
+#include "cli/commands.h"
+#include "core/input_error.h"
+#include "core/speed_schedule.h"
+#ifdef PRT_HAVE_MPI
+#include "mpi/mpi_driver.h"
+#endif
+
+namespace prt::cli {
+namespace {
+
+struct JoinOptions {
+  std::string portFile;
+  int threads = 0;
+  double slowdown = 1;
+  std::string slowdownAt;  // T:K,...
+  double connectTimeoutSeconds = 30;
+};
+
+bool underMpirun() {
+  for (const char* v : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_RANK"}) {
+    if (std::getenv(v) != nullptr) return true;
+  }
+  return false;
+}
+
+int runJoin(const JoinOptions& o) {
+  if (!underMpirun()) {
+    throw InputError("prt join runs under mpirun: mpirun -np K --ompi-server file:URI prt join " +
+                     o.portFile);
+  }
+  if (!(o.slowdown >= 1 && o.slowdown <= 1000)) {
+    throw InputError("--slowdown must be in [1, 1000]");
+  }
+  if (!(o.connectTimeoutSeconds >= 1 && o.connectTimeoutSeconds <= 86400)) {
+    throw InputError("--connect-timeout must be between 1 and 86400 seconds");
+  }
+#ifdef PRT_HAVE_MPI
+  JoinRequest request;
+  request.portFile = o.portFile;
+  request.threads = o.threads;
+  request.slowdown = o.slowdown;
+  if (!o.slowdownAt.empty()) {
+    // T:K items, read as worker 0's W:T:K.
+    std::string items;
+    for (size_t start = 0; start <= o.slowdownAt.size();) {
+      const size_t comma = o.slowdownAt.find(',', start);
+      const std::string item = o.slowdownAt.substr(start, comma - start);
+      items += (items.empty() ? "0:" : ",0:") + item;
+      if (comma == std::string::npos) break;
+      start = comma + 1;
+    }
+    request.slowdownChanges = parseSpeedChanges(items, "--slowdown-at", 1, 1);
+  }
+  request.connectTimeoutSeconds = o.connectTimeoutSeconds;
+  MpiSession session;
+  return session.exitCode(runJoinedWorkers(session, request));
+#else
+  throw InputError("this prt was built without MPI; rebuild with Open MPI installed");
+#endif
+}
+
+}  // namespace
+
+Action addJoinCommand(CLI::App& app) {
+  auto o = std::make_shared<JoinOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "join",
+      "Under mpirun: add this job's ranks as workers to a running render started with "
+      "--accept-workers FILE (both mpiruns with the same --ompi-server)");
+  cmd->add_option("file", o->portFile, "The file the render's master wrote its port name to")
+      ->required();
+  cmd->add_option("--threads", o->threads,
+                  "Rendering threads of each joining worker (0: every CPU its affinity allows)")
+      ->check(CLI::Range(0, 1024))
+      ->capture_default_str();
+  cmd->add_option("--slowdown", o->slowdown,
+                  "Each joining worker runs this many times slower (emulating a slower machine)")
+      ->capture_default_str();
+  cmd->add_option("--slowdown-at", o->slowdownAt,
+                  "T:K,...: from T seconds after it starts, run K times slower instead");
+  cmd->add_option("--connect-timeout", o->connectTimeoutSeconds,
+                  "Seconds to wait for the render's master to answer before giving up")
+      ->capture_default_str();
+  return [o] { return runJoin(*o); };
+}
+
+}  // namespace prt::cli

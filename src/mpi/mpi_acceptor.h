@@ -1,0 +1,65 @@
+#pragma once
+// Internal to src/mpi (it includes <mpi.h>).
+//
+// MpiAcceptor: the master's door for workers that join a running render. It opens an MPI port
+// (MPI_Open_port), writes the port's name to a file (atomically: a joiner never reads half a
+// name), and accepts connections (MPI_Comm_accept, collective over the joining job) on a thread
+// of its own, so the master's loop never blocks: each accepted intercommunicator waits in a
+// queue until the loop takes it (take()).
+//
+// Ending (stop()): MPI_Comm_accept cannot be cancelled, and a process that connects to its own
+// port deadlocks in Open MPI 4.1, so another process must connect once to wake the thread: the
+// master hands the port name to a live worker with its release (MpiLink::wakePort), which
+// connects and disconnects at once. stop() waits up to `graceSeconds` for the thread; when no
+// worker could wake it (all lost) the thread is left behind blocked, which Open MPI 4.1
+// tolerates at MPI_Finalize. The port file is removed first, so no new joiner reads it.
+// Needs MPI_THREAD_MULTIPLE.
+
+#include <mpi.h>
+
+#include <atomic>
+#include <deque>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+
+namespace prt::mpi_detail {
+
+class MpiAcceptor {
+ public:
+  // Opens the port and writes its name to `portFile`. Throws InputError when the file cannot
+  // be written, MpiError when MPI refuses (it lacks MPI_THREAD_MULTIPLE, or ports).
+  explicit MpiAcceptor(const std::string& portFile);
+  ~MpiAcceptor();
+  MpiAcceptor(const MpiAcceptor&) = delete;
+  MpiAcceptor& operator=(const MpiAcceptor&) = delete;
+
+  const std::string& portName() const { return port_; }
+  // The next accepted intercommunicator, if one is waiting.
+  std::optional<MPI_Comm> take();
+  // Stops accepting in two steps: beginStop() removes the port file and makes the next
+  // connection the wake-up call; finishStop() (after the wake-up was asked of a worker) waits
+  // up to `graceSeconds` for the thread and closes the port. Joins accepted in the meantime are
+  // disconnected. Both idempotent.
+  void beginStop();
+  void finishStop(double graceSeconds);
+
+ private:
+  void acceptLoop();
+
+  std::string file_;
+  std::string port_;
+  std::mutex mutex_;
+  std::deque<MPI_Comm> accepted_;
+  std::atomic<bool> stopping_{false};
+  std::atomic<bool> finished_{false};
+  std::thread thread_;
+  bool begun_ = false;
+  bool stopped_ = false;
+};
+
+// A worker's half of waking the acceptor: connects to `port` once and disconnects.
+void wakeAcceptor(const std::string& port);
+
+}  // namespace prt::mpi_detail
