@@ -168,10 +168,22 @@ ParallelRun renderMpiMaster(MpiSession& session, const RunRequest& request) {
 
 void finishMpiMaster(MpiSession& session, const ParallelRun& run) {
   const FaultInfo& faults = run.report.info.faults;
-  const bool clean = faults.lostWorkers.empty() && faults.missingSummaries.empty();
   MpiComm& comm = session.comm();
   MpiLink& link = *comm.link;
   if (comm.acceptor) comm.acceptor->beginStop();  // no more joiners: the port file goes
+  // Whether every worker of endpoints [first, first + count) is still there at the end: each
+  // job (this one, and every joining one) ends on its own terms.
+  auto allThere = [&](int first, int count) {
+    for (const LostWorkerInfo& l : faults.lostWorkers) {
+      if (l.worker >= first && l.worker < first + count) return false;
+    }
+    for (int w : faults.missingSummaries) {
+      if (w >= first && w < first + count) return false;
+    }
+    return true;
+  };
+  const bool clean = allThere(0, session.workerCount());
+  const size_t losses = faults.lostWorkers.size() + faults.missingSummaries.size();
   if (!clean && !session.recoveryEnabled()) {
     // Without --enable-recovery the job is still alive only because the lost ranks hang, and a
     // rank that exits without MPI_Finalize would end it in error: end them all, and the job,
@@ -179,17 +191,18 @@ void finishMpiMaster(MpiSession& session, const ParallelRun& run) {
     // other jobs hear that the master is gone.
     session.comm().skipFinalize = true;
     std::fprintf(stderr,
-                 "prt: %zu worker rank(s) were lost; the image and report are complete. Ending "
+                 "prt: %zu worker(s) were lost; the image and report are complete. Ending "
                  "the job with MPI_Abort(0) so that mpirun does not wait for them\n",
-                 faults.lostWorkers.size() + faults.missingSummaries.size());
+                 losses);
     std::fflush(stdout);
     std::fflush(stderr);
     MPI_Abort(session.comm().comm, 0);
     std::_Exit(0);
   }
-  const int32_t code = clean ? kReleaseFinalize : kReleaseExit;
-  const auto* p = reinterpret_cast<const uint8_t*>(&code);
-  const Bytes release(p, p + sizeof code);
+  auto releaseOf = [](int32_t code) {
+    const auto* p = reinterpret_cast<const uint8_t*>(&code);
+    return Bytes(p, p + sizeof code);
+  };
   // The first live worker of this job also wakes the port listener on its way out.
   int waker = -1;
   if (comm.acceptor) {
@@ -197,17 +210,35 @@ void finishMpiMaster(MpiSession& session, const ParallelRun& run) {
       if (!run.report.workers[static_cast<size_t>(w)].lost) waker = w;
     }
   }
-  for (int w = 0; w < link.endpointCount(); ++w) {
-    Bytes bytes = release;
+  for (int w = 0; w < session.workerCount(); ++w) {
+    Bytes bytes = releaseOf(clean ? kReleaseFinalize : kReleaseExit);
     if (w == waker) bytes.insert(bytes.end(), comm.acceptor->portName().begin(),
                                  comm.acceptor->portName().end());
     link.sendTagged(w, kReleaseTag, std::move(bytes));
   }
-  link.flush(clean ? 30.0 : 2.0);
+  const std::vector<MpiLink::JoinedJob> joined = link.joinedJobs();
+  std::vector<bool> joinedClean;
+  for (const MpiLink::JoinedJob& j : joined) {
+    joinedClean.push_back(allThere(j.first, j.count));
+    for (int w = j.first; w < j.first + j.count; ++w) {
+      link.sendTagged(w, kReleaseTag, releaseOf(joinedClean.back() ? kReleaseFinalize : kReleaseExit));
+    }
+  }
+  link.flush(losses == 0 ? 30.0 : 2.0);
   if (comm.acceptor) comm.acceptor->finishStop(waker >= 0 ? 10.0 : 0.0);
+  // A joining job whose workers are all there disconnects; one that lost a worker is left:
+  // disconnecting could wait for the lost one.
+  for (size_t i = 0; i < joined.size(); ++i) {
+    MPI_Comm inter = joined[i].comm;
+    if (joinedClean[i]) MPI_Comm_disconnect(&inter);
+  }
   if (clean) {
-    for (MPI_Comm inter : link.joinedComms()) MPI_Comm_disconnect(&inter);
-    return;  // every rank finalizes
+    if (losses > 0) {
+      std::fprintf(stderr,
+                   "prt: %zu joining worker(s) were lost; the image and report are complete\n",
+                   losses);
+    }
+    return;  // every rank of this job finalizes
   }
   // Under --enable-recovery, MPI_Finalize would wait for the lost ranks, which may never
   // come; mpirun returns once every process has ended: at once if the lost ones died, never

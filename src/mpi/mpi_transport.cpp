@@ -215,9 +215,11 @@ void MpiLink::setAcceptSource(std::function<std::optional<MPI_Comm>()> source, B
   welcome_ = std::move(welcome);
 }
 
-std::vector<MPI_Comm> MpiLink::joinedComms() const {
-  std::vector<MPI_Comm> out;
-  for (size_t i = 1; i < routes_.size(); ++i) out.push_back(routes_[i].comm);
+std::vector<MpiLink::JoinedJob> MpiLink::joinedJobs() const {
+  std::vector<JoinedJob> out;
+  for (size_t i = 1; i < routes_.size(); ++i) {
+    out.push_back({routes_[i].comm, routes_[i].first, routes_[i].count});
+  }
   return out;
 }
 

@@ -125,8 +125,13 @@ class MpiLink final : public Transport {
   void adopt(MPI_Comm inter, const Bytes& welcome);
   // Master: where accepted intercommunicators come from (polled by poll()); may be null.
   void setAcceptSource(std::function<std::optional<MPI_Comm>()> source, Bytes welcome);
-  // Master: the intercommunicators adopted, for the end of the job.
-  std::vector<MPI_Comm> joinedComms() const;
+  // Master: the intercommunicators adopted, for the end of the job, with the endpoints each
+  // carries (first, count).
+  struct JoinedJob {
+    MPI_Comm comm = MPI_COMM_NULL;
+    int first = 0, count = 0;
+  };
+  std::vector<JoinedJob> joinedJobs() const;
   // Master: every worker's endpoint, 0 .. endpointCount()-1, the joiners' included.
   int endpointCount() const { return routes_.back().first + routes_.back().count; }
   // Master: sends `bytes` with a tag of its own (a release) to worker `endpoint`.

@@ -8,6 +8,9 @@
 #   resume-serial  SIGKILL of a serial render with --checkpoint; --resume gives its image
 #   refusals       a checkpoint of another render, or one left without --resume, is refused
 #                  with exit code 2 and no image
+#   joins          for every strategy: workers that join mid-render (--join-at), alone and
+#                  with losses in the same run (a starting worker crashes, a joiner hangs):
+#                  the serial image, and the report says who joined when
 set -eu
 
 prt=$1 scene=$2 work=$3 mode=$4
@@ -65,6 +68,45 @@ case $mode in
         -o out.pfm
       [ "$status" -eq 0 ] || fail "$strategy, initial share of nothing: exit $status"
       cmp serial.pfm out.pfm || fail "$strategy: image differs"
+      echo "ok: $strategy"
+    done
+    ;;
+  joins)
+    strategies=$("$prt" render --help | sed -n 's/^ *\([a-z0-9-]*\) (\(static\|dynamic\|adaptive\))[:,].*/\1/p')
+    [ "$(echo "$strategies" | wc -w)" -ge 15 ] || fail "no strategy list in prt render --help"
+    size="--width 48 --height 36 --spp 16 --drt 2"
+    # shellcheck disable=SC2086
+    "$prt" render "$scene" -q $size -o serial.pfm
+    for strategy in $strategies; do
+      # shellcheck disable=SC2086
+      run $size --workers 1 --slowdown 60,1,1 --join-at 0.3:2 --strategy "$strategy" \
+        --speed-index slowdown --batch 8 -o out.pfm --report r.json
+      [ "$status" -eq 0 ] || fail "$strategy, two joiners: exit $status"
+      cmp serial.pfm out.pfm || fail "$strategy, two joiners: image differs"
+      python3 - "$strategy" <<'PY'
+import json, sys
+r = json.load(open("r.json"))
+assert [j["worker"] for j in r["joined_workers"]] == [1, 2], r["joined_workers"]
+assert sum(w["pixels"] for w in r["workers"]) == 48 * 36
+if sys.argv[1] in ("adaptive", "stealing", "self", "hybrid", "reservoir"):
+    assert all(w["pixels"] > 0 for w in r["workers"][1:]), [w["pixels"] for w in r["workers"]]
+PY
+      # Arrivals and losses in one run: starting worker 0 crashes, joiner 3 hangs.
+      # shellcheck disable=SC2086
+      run $size --workers 2 --slowdown 200,200,60,60 --join-at 0.2:1,0.3:1 --strategy "$strategy" \
+        --speed-index slowdown --batch 8 --inject-fault 0:40:crash --inject-fault 3:0:hang \
+        --worker-timeout 1 -o out.pfm --report r.json
+      [ "$status" -eq 0 ] || fail "$strategy, joins and losses: exit $status"
+      cmp serial.pfm out.pfm || fail "$strategy, joins and losses: image differs"
+      python3 - <<'PY'
+import json
+r = json.load(open("r.json"))
+assert [j["worker"] for j in r["joined_workers"]] == [2, 3], r["joined_workers"]
+lost = sorted(l["worker"] for l in r["lost_workers"])
+# Joiner 3 hangs before rendering anything: lost once its lease runs out, if it was given any
+# tasks (a static strategy gives a joiner only the tasks of later losses).
+assert lost in ([0], [0, 3]), r["lost_workers"]
+PY
       echo "ok: $strategy"
     done
     ;;
