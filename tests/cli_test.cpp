@@ -135,6 +135,26 @@ TEST_F(CliTest, ParallelInputErrors) {
     EXPECT_EQ(r.exitCode, 2) << bad << ": " << r.output;
     EXPECT_NE(r.output.find("--slowdown-at"), std::string::npos) << r.output;
   }
+  for (const char* bad : {"-1:2", "1:0", "1:2.5", "1", "x:1", "1:2,", "1:5000"}) {
+    r = run("render " + scene + out + " --workers 2 --join-at " + bad);
+    EXPECT_EQ(r.exitCode, 2) << bad << ": " << r.output;
+    EXPECT_NE(r.output.find("--join-at"), std::string::npos) << r.output;
+    r = run("simulate --workers 2 --join-at " + std::string(bad));
+    EXPECT_EQ(r.exitCode, 2) << bad << ": " << r.output;
+  }
+  // Per-worker lists count the joiners: 2 + 1 workers need 3 slowdowns.
+  r = run("render " + scene + out + " --workers 2 --join-at 1:1 --slowdown 1,2");
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_NE(r.output.find("those that join"), std::string::npos) << r.output;
+  r = run("simulate --workers 2 --join-at 1:1 --speeds 1,1");
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  r = run("render " + scene + out + " --join-at 1:1");
+  EXPECT_EQ(r.exitCode, 2) << "a serial render has no joiners: " << r.output;
+  r = run("render " + scene + out + " --workers 2 --accept-workers " + path("port"));
+  EXPECT_EQ(r.exitCode, 2) << "a local render has no port: " << r.output;
+  r = run("join " + path("port"));
+  EXPECT_EQ(r.exitCode, 2) << "prt join outside mpirun: " << r.output;
+  EXPECT_NE(r.output.find("mpirun"), std::string::npos) << r.output;
   r = run("render " + scene + out + " --workers 2 --min-chunk 0");
   EXPECT_EQ(r.exitCode, 2) << r.output;
   r = run("render " + scene + out + " --workers 2 --chunk 1.5");

@@ -1,9 +1,8 @@
 // prt join FILE: under mpirun, adds this job's ranks as workers to a running render that was
 // started with --accept-workers FILE (see the README's "Machines that join").
 
-#include <cstdlib>
-
 #include "cli/commands.h"
+#include "cli/parallel_render.h"
 #include "core/input_error.h"
 #include "core/speed_schedule.h"
 #ifdef PRT_HAVE_MPI
@@ -21,15 +20,8 @@ struct JoinOptions {
   double connectTimeoutSeconds = 30;
 };
 
-bool underMpirun() {
-  for (const char* v : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_RANK"}) {
-    if (std::getenv(v) != nullptr) return true;
-  }
-  return false;
-}
-
 int runJoin(const JoinOptions& o) {
-  if (!underMpirun()) {
+  if (!launchedByMpirun()) {
     throw InputError("prt join runs under mpirun: mpirun -np K --ompi-server file:URI prt join " +
                      o.portFile);
   }

@@ -173,6 +173,45 @@ TEST_P(SimulatorStrategyTest, SameInputsSameReport) {
   }
 }
 
+// One slow worker, two fast ones joining at a third of the image's time: every pixel once,
+// never before the ideal for that schedule, and the joiners' arrival in the report.
+TEST_P(SimulatorStrategyTest, WorkersJoiningMidRunAreAdmitted) {
+  const CostMap map = complexSceneCostMap(97, 61, 3.0);
+  SimulationOptions o = optionsFor(GetParam(), {0.25, 1, 1}, 16);
+  o.joins = {JoinWave{1.0, 2}};
+  const SimulatedRun run = simulate(map, o);
+  EXPECT_EQ(renderedPixels(run), map.pixelCount());
+  ASSERT_EQ(run.report.workers.size(), 3u);
+  EXPECT_FALSE(run.report.workers[0].joinedAtSeconds.has_value());
+  EXPECT_EQ(run.report.workers[1].joinedAtSeconds, 1.0);
+  EXPECT_EQ(run.report.workers[2].joinedAtSeconds, 1.0);
+  // The ideal: 0.25 s of work a second alone until 1 s, then 2.25 a second.
+  ASSERT_TRUE(run.report.idealSeconds.has_value());
+  EXPECT_GE(run.report.elapsedSeconds, 1.0 + (3.0 - 0.25) / 2.25);
+  EXPECT_GE(run.report.elapsedSeconds, *run.report.idealSeconds * (1 - 1e-9));
+}
+
+TEST(SimulatorTest, DynamicStrategiesComeCloseToTheJoinSchedulesIdeal) {
+  const CostMap map = complexSceneCostMap(160, 120, 12.0);
+  for (const std::string name : {"adaptive", "stealing", "self"}) {
+    SimulationOptions o = optionsFor(name, {0.25, 1, 1}, 32);
+    o.joins = {JoinWave{4.0, 2}};
+    const SimulatedRun run = simulate(map, o);
+    // Ideal: 1 s of work done by 4 s, then 11 s at 2.25: 8.89 s.
+    EXPECT_LT(run.report.elapsedSeconds, 1.1 * (4.0 + 11.0 / 2.25)) << name;
+  }
+  SimulationOptions scatter = optionsFor("scatter", {0.25, 1, 1}, 32);
+  scatter.joins = {JoinWave{4.0, 2}};
+  EXPECT_GT(simulate(map, scatter).report.elapsedSeconds, 40.0);  // the slow one does it all
+}
+
+TEST(SimulatorTest, JoinersMustLeaveAStartingWorker) {
+  const CostMap map = uniformCostMap(8, 8, 1.0);
+  SimulationOptions o = optionsFor("self", {1, 1});
+  o.joins = {JoinWave{1.0, 2}};
+  EXPECT_THROW(simulate(map, o), InputError);
+}
+
 INSTANTIATE_TEST_SUITE_P(AllStrategies, SimulatorStrategyTest,
                          ::testing::ValuesIn(strategyNames()));
 
