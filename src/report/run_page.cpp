@@ -102,6 +102,34 @@ std::string lostWorkers(const json& r) {
          " lost</b>; the master gave the unfinished tasks to the others.</li>";
 }
 
+// "Workers 1, 2 joined mid-render (at 0.50 s) ...", with the ideal for that schedule.
+std::string joinedWorkers(const json& r) {
+  const json joined = r.value("joined_workers", json::array());
+  if (!joined.is_array() || joined.empty()) return "";
+  std::string list;
+  uint64_t pixels = 0;
+  for (const json& j : joined) {
+    if (!j.is_object()) continue;
+    const int id = j.value("worker", 0);
+    if (!list.empty()) list += ", ";
+    list += std::to_string(id) + " (at " + formatSeconds(j.value("at_s", 0.0)) + ")";
+    for (const json& w : r["workers"]) {
+      if (w.is_object() && w.value("worker", -1) == id) pixels += w.value("pixels", uint64_t{0});
+    }
+  }
+  std::string s = "<li>" + std::string(joined.size() == 1 ? "Worker " : "Workers ") + list +
+                  " joined the running render and rendered <b>" + formatCount(pixels) +
+                  "</b> pixels.";
+  const auto ideal = number(r, "ideal_s");
+  const double elapsed = numberOr(r, "elapsed_s", 0);
+  if (ideal && *ideal > 0 && elapsed > 0) {
+    s += " A perfect balance of the same work, each worker counted from its arrival, takes " +
+         formatSeconds(*ideal) + ": this run took <b>" + formatNumber(elapsed / *ideal) +
+         "×</b> that.";
+  }
+  return s + "</li>";
+}
+
 // How close together the workers (or groups) sent their last results: the balance itself.
 std::string finishSpread(const json& r) {
   const double elapsed = numberOr(r, "elapsed_s", 0);
@@ -147,7 +175,7 @@ std::string glance(const json& r) {
   s += "<li>On average a worker was rendering <b>" + formatPercent(numberOr(r, "efficiency", 0)) +
        "</b> of the run (efficiency); the rest it waited for the scene, for work, or for the "
        "others to finish.</li>";
-  s += lostWorkers(r) + balanceEstimate(r) + finishSpread(r);
+  s += lostWorkers(r) + joinedWorkers(r) + balanceEstimate(r) + finishSpread(r);
   return s + "</ul></section>\n";
 }
 
@@ -193,7 +221,7 @@ std::string measures(const json& r) {
   s += card("asu", asu ? formatPercent(*asu) : "n/a", "ASU",
             "speed-up / MASU: how close the run came to that ideal", r.value("asu", json()));
   s += card("efficiency", formatPercent(numberOr(r, "efficiency", 0)), "efficiency",
-            "workers' rendering time / (elapsed × workers)", r.value("efficiency", json()));
+            "workers' rendering time / the time each was there (elapsed × workers, but for late joiners)", r.value("efficiency", json()));
   s += card("messages", formatCount(count(r, "messages")), "messages",
             "sent by the master and the workers", r.value("messages", json()));
   s += card("bytes", formatBytes(count(r, "bytes")), "bytes", "their encoded size",
@@ -203,7 +231,9 @@ std::string measures(const json& r) {
   static const std::map<std::string, std::pair<std::string, std::string>> kLabels = {
       {"lost_workers", {"lost workers", "declared lost by the master; their tasks went to others"}},
       {"reissued_tasks", {"reissued tasks", "handed out again after a loss or as duplicates"}},
-      {"resumed_pixels", {"resumed pixels", "taken from a checkpoint instead of rendered"}}};
+      {"resumed_pixels", {"resumed pixels", "taken from a checkpoint instead of rendered"}},
+      {"joined_workers", {"joined workers", "arrived mid-render (seconds on the master's clock)"}},
+      {"ideal_s", {"ideal", "a perfect balance of the run's work, each worker from its arrival"}}};
   std::string extra;
   for (const auto& [key, value] : r.items()) {
     if (kKnownKeys.count(key) || value.is_object() || value.is_null()) continue;
@@ -289,6 +319,7 @@ std::string timelineSection(const json& r, const std::vector<std::string>& colou
        "<span><span class=\"chip tick-chip\"></span>communicating (a message sent or "
        "received)</span>"
        "<span><span class=\"chip lost-chip\"></span>lost</span>"
+       "<span><span class=\"chip absent-chip\"></span>not there yet (joined later)</span>"
        "<span><span class=\"chip mark-chip\"></span>other events (reissued tasks, "
        "...)</span></div>\n";
   if (t.value("aggregated", false)) {

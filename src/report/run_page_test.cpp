@@ -174,6 +174,21 @@ TEST(RunPage, SaysWhenAWorkerWasLost) {
   EXPECT_NE(html.find("class=\"lost\"><title>worker 3 lost at 1.25 s</title>"), std::string::npos);
 }
 
+TEST(RunPage, SaysWhoJoinedWhenAndAgainstWhichIdeal) {
+  SampleRun run = fourWorkers();
+  run.report.info.joinedAt = {std::nullopt, std::nullopt, std::nullopt, 0.5};
+  run.events.push_back({EventKind::WorkerJoined, 3, 0.5, 0.5, 0, 0, -1, ""});
+  const RunReport report = makeReport(run.report.info, run.events, 2.0);
+  ASSERT_TRUE(report.idealSeconds.has_value());
+  const std::string html =
+      runPageHtml(reportDocument(report, context(), run.events, run.owner), {});
+  EXPECT_NE(html.find("Worker 3 (at 500 ms)"), std::string::npos);
+  EXPECT_NE(html.find("joined the running render"), std::string::npos);
+  EXPECT_NE(html.find("A perfect balance of the same work"), std::string::npos);
+  EXPECT_NE(html.find("class=\"absent\"><title>worker 3 joined at 500 ms"), std::string::npos);
+  EXPECT_NE(html.find("data-key=\"joined_workers\""), std::string::npos);
+}
+
 TEST(RunPage, OldReportsWithoutTimelineOrMapStillDraw) {
   const SampleRun run = fourWorkers();
   const json old = json::parse(run.report.toJson());

@@ -171,6 +171,13 @@ std::string timelineSvg(const json& timeline, const std::vector<std::string>& co
         const double t = mark.value("t_s", 0.0);
         const std::string title = "<title>" + escapeHtml(mark.value("label", std::string())) +
                                   " at " + formatSeconds(t) + "</title>";
+        if (mark.value("kind", std::string()) == "worker_joined") {
+          // Not there yet: the row is blank until the worker joins.
+          s += "<rect x=\"" + num(kLeft) + "\" y=\"" + num(y) + "\" width=\"" +
+               num(std::max(0.0, xs(t) - kLeft)) + "\" height=\"" + num(h) +
+               "\" class=\"absent\">" + title + "</rect>";
+          continue;
+        }
         if (mark.value("kind", std::string()) == "worker_lost") {
           s += "<rect x=\"" + num(xs(t)) + "\" y=\"" + num(y) + "\" width=\"" +
                num(std::max(1.0, kLeft + kPlot - xs(t))) + "\" height=\"" + num(h) +
