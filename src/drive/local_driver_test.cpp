@@ -158,6 +158,21 @@ TEST_P(LocalDriverTest, MultiThreadedWorkersKeepTheImage) {
 
 INSTANTIATE_TEST_SUITE_P(AllStrategies, LocalDriverTest, ::testing::ValuesIn(strategyNames()));
 
+TEST_P(LocalDriverTest, WorkersJoiningMidRenderKeepTheImage) {
+  LocalRunRequest r = request(GetParam(), 1);
+  r.options.slowdowns = {30, 1, 1};
+  r.options.joins = {JoinWave{0.02, 2}};
+  const ParallelRun run = renderLocal(r);
+  EXPECT_TRUE(run.image == serialReference());
+  // The joiners are in the report whether or not they came in time to render (a static
+  // strategy gives them nothing).
+  ASSERT_LE(run.report.workers.size(), 3u);
+  for (size_t w = 1; w < run.report.workers.size(); ++w) {
+    ASSERT_TRUE(run.report.workers[w].joinedAtSeconds.has_value());
+    EXPECT_GE(*run.report.workers[w].joinedAtSeconds, 0.02);
+  }
+}
+
 TEST(LocalDriverFaultTest, HungWorkerIsDetectedByTimeout) {
   // Scatter gives every worker its share up front. Under the reservoir a worker preempted
   // during its speed index (microseconds here) measures a thousand times slower, gets no

@@ -154,7 +154,7 @@ class MasterLoop {
         receive(in);  // too late to help: told to stop, its summary is not waited for
         continue;
       }
-      if (!isWorker(in.from)) continue;
+      if (!isWorker(in.from) || in.from >= n) continue;  // n: those there at the end
       const auto i = static_cast<size_t>(in.from);
       if (in.kind == Incoming::Kind::PeerLost) {
         waiting[i] = false;
