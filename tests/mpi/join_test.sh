@@ -9,7 +9,7 @@
 #   join      1 slow starting worker, 2 joiners mid-render: the serial image, both jobs exit 0,
 #             the report says when the joiners arrived and that they rendered pixels; the port
 #             file is gone at the end
-#   kill      as join, with one joining process SIGKILLed mid-render (its job runs with
+#   kill      as join, with one joining process SIGKILLed once it has rendered (its job runs with
 #             --enable-recovery, so its sibling carries on): the serial image, exit 0, the
 #             killed joiner among the lost workers
 #   stale     prt join against the port file of a render that has ended: a clear error within
@@ -46,11 +46,11 @@ for i in $(seq 1 100); do [ -s uri ] && break; sleep 0.05; done
 [ -s uri ] || fail "ompi-server wrote no URI"
 uri="--ompi-server file:$work/uri"
 
-# A render of some 30 s on the one slow starting worker alone, of 3 to 4 s once two joiners
-# (slowed down too) help.
+# A render of over a minute on the one slow starting worker alone, of some 8 s once two joiners
+# (slowed down too) help: long enough after a joiner is killed for its lease to run out.
 size="--width 64 --height 48 --spp 8 --drt 2"
-slowdown=400
-join_slowdown=100
+slowdown=1000
+join_slowdown=250
 
 # Waits up to $2 seconds for process $1; its exit status in $status (124: still running).
 wait_for() {
@@ -113,7 +113,26 @@ case $mode in
         sleep 0.05
       done
       [ -n "$victim" ] || fail "the joining rank never started"
-      sleep 1
+      # Once the checkpoint holds pixels it rendered (it is worker 1, the first joiner).
+      rendered_by_1=
+      for i in $(seq 1 300); do
+        if python3 - <<'PY'
+import struct, sys
+try:
+    d = open("ck", "rb").read()
+    n = struct.unpack_from("<H", d, 16)[0]
+    at = 18 + n + 8
+    runs = struct.unpack_from("<Q", d, at)[0]
+    done = sum(struct.unpack_from("<QQQ", d, at + 8 + 24 * i)[1] for i in range(runs))
+    owners = struct.unpack_from("<%dh" % done, d, len(d) - 8 - 2 * done)
+    sys.exit(0 if 1 in owners else 1)
+except Exception:
+    sys.exit(1)
+PY
+        then rendered_by_1=yes; break; fi
+        sleep 0.1
+      done
+      [ -n "$rendered_by_1" ] || fail "the first joiner rendered nothing within 30 s"
       kill -9 "$victim"
     fi
     wait_for "$joiner" 100
