@@ -397,7 +397,12 @@ int runJoinedWorkers(MpiSession& session, const JoinRequest& request) {
     const auto release =
         link.release() ? link.release() : link.awaitRelease(link.now() + options.workerTimeoutSeconds + 30);
     if (!release || *release != kReleaseFinalize) {
+      // A worker of this job was lost: if it only hangs (stopped, cut off), this job's mpirun
+      // would wait for it for ever. As the master does for its own job, each live rank (any
+      // may be the lost one) leaves a watchdog that ends its launcher after a grace period if
+      // it is still running then; a launcher that returned in time is left alone.
       session.comm().skipFinalize = true;
+      endLauncherIfStillRunningAfter(2 * options.workerTimeoutSeconds + 5);
       return 0;
     }
     MPI_Comm_disconnect(&inter);

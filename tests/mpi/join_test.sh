@@ -12,6 +12,8 @@
 #   kill      as join, with one joining process SIGKILLed once it has rendered (its job runs with
 #             --enable-recovery, so its sibling carries on): the serial image, exit 0, the
 #             killed joiner among the lost workers
+#   stop      as kill, with SIGSTOP instead: the same, and the joining mpirun still returns
+#             (its live rank's watchdog ends it once the grace period has passed)
 #   stale     prt join against the port file of a render that has ended: a clear error within
 #             its --connect-timeout, never a hang
 #   missing   prt join of a file that does not exist: exit 2 and a message naming it
@@ -87,17 +89,17 @@ start_master() {
 }
 
 case $mode in
-  join|kill)
+  join|kill|stop)
     # shellcheck disable=SC2086
     "$prt" render "$scene" $size -q -o serial.pfm
     start_master
     recovery=
-    [ "$mode" = kill ] && recovery=--enable-recovery
+    [ "$mode" != join ] && recovery=--enable-recovery
     # shellcheck disable=SC2086
     timeout -k 5 100 "$mpiexec" $mca $uri $recovery -np 2 "$prt" join "$work/port" \
       --slowdown $join_slowdown >join.out 2>join.err &
     joiner=$!
-    if [ "$mode" = kill ]; then
+    if [ "$mode" != join ]; then
       # The first joining process, once it has rendered a little (the master's report will
       # name it): killed for real.
       victim=
@@ -133,11 +135,14 @@ PY
         sleep 0.1
       done
       [ -n "$rendered_by_1" ] || fail "the first joiner rendered nothing within 30 s"
-      kill -9 "$victim"
+      if [ "$mode" = kill ]; then kill -9 "$victim"; else kill -STOP "$victim"; fi
     fi
-    wait_for "$joiner" 100
-    joined=$status
     wait_for "$master" 100
+    master_status=$status
+    wait_for "$joiner" 60
+    joined=$status
+    [ -n "${victim:-}" ] && kill -9 "$victim" 2>/dev/null || true
+    status=$master_status
     [ "$status" -eq 0 ] || fail "the render exited with $status"
     if [ "$mode" = join ]; then
       [ "$joined" -eq 0 ] || fail "prt join exited with $joined"
