@@ -12,9 +12,11 @@ Simulated (prt simulate, the synthetic complex-scene map, 60 s of serial work): 
 Real (local threads, scenes/complex.scene, --case A at --size): --slowdown 4,2,2, i.e. 0.25 +
 0.5 + 0.5 = 1.25 cores' worth, which fits this 2-core machine beside the master (the
 emulation is only faithful while the workers' combined speed fits the free cores). The
-joiners arrive at a third of the serial time measured first on one thread. --runs rounds,
-round-robin over the strategies; the medians of elapsed / ideal_s are quoted (a ratio within
-one run, so a busy spell hits both alike).
+joiners arrive at a third of the serial time S measured first on one thread. Two ideals:
+the schedule's, from S (T with 0.25 T + 0.5 (T - t) x 2 = S: the same yardstick for every
+strategy), and the run's own ideal_s (from the work it did: a strategy whose pixel order
+costs more per pixel, such as the interleaved orders, is measured against its own cost).
+--runs rounds, round-robin over the strategies; medians are quoted.
 
 Usage: bench/joins.py [--prt build/prt] [--runs 3] [--size 240x180]
                       [--strategies adaptive,stealing,...] [--skip-real] [--json out.json]
@@ -89,19 +91,24 @@ def main():
         join_at = serial / 3
         print(f"\nreal: serial {serial:.2f} s on one thread; --slowdown 4,2,2, joiners at "
               f"{join_at:.2f} s; {a.runs} rounds")
+        schedule = join_at + (serial - 0.25 * join_at) / 1.25
+        print(f"the schedule's ideal: {schedule:.2f} s")
         ratios = {s: [] for s in strategies}
+        own = {s: [] for s in strategies}
         elapsed = {s: [] for s in strategies}
         for _ in range(a.runs):
             for s in strategies:
                 r = real(a.prt, a.scene, a.size, s, join_at, tmp)
-                ratios[s].append(r["elapsed_s"] / r["ideal_s"])
+                ratios[s].append(r["elapsed_s"] / schedule)
+                own[s].append(r["elapsed_s"] / r["ideal_s"])
                 elapsed[s].append(r["elapsed_s"])
-        print(f"{'strategy':18} {'elapsed_s':>10} {'ratio':>6}  (medians; ratio = elapsed / ideal_s)")
+        print(f"{'strategy':18} {'elapsed_s':>10} {'/ideal':>7} {'/own':>6}  (medians)")
         for s in strategies:
-            e, q = statistics.median(elapsed[s]), statistics.median(ratios[s])
-            out["real"][s] = {"elapsed_s": e, "ratio": q, "ratios": ratios[s]}
-            print(f"{s:18} {e:10.2f} {q:6.2f}")
+            e, q, o = (statistics.median(x[s]) for x in (elapsed, ratios, own))
+            out["real"][s] = {"elapsed_s": e, "ratio": q, "own_ratio": o, "ratios": ratios[s]}
+            print(f"{s:18} {e:10.2f} {q:7.2f} {o:6.2f}")
         out["real_serial_s"] = serial
+        out["real_schedule_ideal_s"] = schedule
     return finish(a, out)
 
 
