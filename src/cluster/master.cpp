@@ -203,14 +203,50 @@ void Master::introduceJoiners(Outbox& out) {
   }
 }
 
+namespace {
+
+// Every task of `tasks` is below `n` (checked without overflow, whatever the runs say).
+bool within(const TaskSet& tasks, uint64_t n) {
+  for (const TaskRun& r : tasks.runs()) {
+    if (r.count == 0) continue;
+    if (r.first >= n) return false;
+    if (r.count > 1 && (r.stride == 0 || (r.count - 1) > (n - 1 - r.first) / r.stride)) {
+      return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
+// A message that decodes but cannot be true: pixels outside the image, colours that do not
+// match them, a transfer to no worker. Such a worker is lost, as one whose bytes do not decode.
+bool Master::plausible(const Message& message) const {
+  if (const auto* r = std::get_if<ResultsMsg>(&message)) {
+    const bool coloured = r->rgb.size() == 3 * r->tasks.size();
+    // Without a sink (the simulator) results carry no colours; otherwise they must.
+    return within(r->tasks, taskCount()) && (coloured || (!sink_ && r->rgb.empty()));
+  }
+  if (const auto* n = std::get_if<TransferNoticeMsg>(&message)) {
+    return n->to >= 0 && n->to < workerCount() && within(n->tasks, taskCount());
+  }
+  if (const auto* s = std::get_if<SpeedIndexMsg>(&message)) {
+    return std::isfinite(s->seconds) && s->seconds > 0;
+  }
+  return true;
+}
+
 Outbox Master::onMessage(int from, const Message& message, double now) {
   Outbox out;
   PRT_CHECK(from >= 0 && from < workerCount());
   const auto w = static_cast<size_t>(from);
   ledger_.heard(from, now);
+  if (!plausible(message)) {
+    if (isLive(from)) lose(from, now, std::string("sent an invalid ") + messageName(message) + " message", out);
+    return out;
+  }
   if (const auto* r = std::get_if<ResultsMsg>(&message)) {
     // Results count from anyone, lost or not: the first copy of a pixel wins.
-    PRT_CHECK(r->rgb.size() == 3 * r->tasks.size() || r->rgb.empty());  // empty: simulated
     const TaskSet fresh = ledger_.accept(from, r->tasks);
     // Adaptive strategies learn the worker's rate from every batch it rendered, copies
     // included (it spent the time on them); a lost worker's batches teach nothing useful.
@@ -244,10 +280,6 @@ Outbox Master::onMessage(int from, const Message& message, double now) {
   }
   if (!isLive(from)) return out;  // a worker presumed lost: nothing else from it counts
   if (const auto* s = std::get_if<SpeedIndexMsg>(&message)) {
-    if (!(std::isfinite(s->seconds) && s->seconds > 0)) {
-      lose(from, now, "sent an invalid speed index", out);
-      return out;
-    }
     const bool first = speedIndices_[w] == 0.0;
     speedIndices_[w] = s->seconds;
     if (!started_) {

@@ -85,6 +85,7 @@ class Master {
   void answerQueryIfComplete(Outbox& out);
   void endgameCopy(int worker, Outbox& out);
   void introduceJoiners(Outbox& out);
+  bool plausible(const Message& message) const;
   std::vector<uint64_t> strategyQueueLengths() const;
 
   std::unique_ptr<Strategy> strategy_;

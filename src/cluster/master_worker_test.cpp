@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <deque>
+#include <memory>
 
 #include "cluster/master.h"
 #include "cluster/worker.h"
@@ -250,6 +251,33 @@ TEST(MasterTest, AJoinerGetsTheSceneThenTasksAndOneAfterTheEndIsStopped) {
   const Outbox late = small.onWorkerJoined(1, 2);
   ASSERT_EQ(late.size(), 1u);
   EXPECT_TRUE(std::holds_alternative<StopMsg>(late[0].message));
+}
+
+TEST(MasterTest, AMessageThatCannotBeTrueLosesItsWorkerAndCrashesNothing) {
+  auto master = [] {
+    auto m = std::make_unique<Master>(makeStrategy("blocks", {}), 2, 10, SceneMsg{},
+                                      [](int, const TaskSet&, const std::vector<float>&) {});
+    m->start(0);
+    m->onMessage(0, SpeedIndexMsg{0.1}, 0);
+    m->onMessage(1, SpeedIndexMsg{0.1}, 0);
+    return m;
+  };
+  const std::vector<Message> bad = {
+      ResultsMsg{TaskSet::range(8, 5), std::vector<float>(15, 0.f)},          // past the image
+      ResultsMsg{TaskSet::range(0, 2), std::vector<float>(3, 0.f)},           // too few colours
+      ResultsMsg{TaskSet::range(0, 2), {}},                                   // none at all
+      ResultsMsg{TaskSet::strided(9, 3, ~uint64_t{0} / 2), std::vector<float>(9, 0.f)},
+      TransferNoticeMsg{7, TaskSet::range(0, 1)},                             // to no worker
+      TransferNoticeMsg{1, TaskSet::range(20, 1)},
+      SpeedIndexMsg{-1.0}};
+  for (const Message& m : bad) {
+    auto run = master();
+    run->onMessage(0, m, 1.0);
+    EXPECT_FALSE(run->isLive(0)) << messageName(m);
+    EXPECT_TRUE(run->isLive(1));
+    ASSERT_EQ(run->ledger().losses().size(), 1u);
+    EXPECT_NE(run->ledger().losses()[0].reason.find("invalid"), std::string::npos);
+  }
 }
 
 TEST(MasterTest, EveryWorkerLostIsAFailureNotAHang) {
