@@ -86,6 +86,7 @@ TaskSet Ledger::accept(int worker, const TaskSet& tasks) {
     }
     done_[t] = true;
     ++doneCount_;
+    ++h.accepted;
     fresh.append(TaskRun{t, 1, 1});
   });
   return fresh;

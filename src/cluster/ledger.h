@@ -78,6 +78,8 @@ class Ledger {
 
   // Completion.
   bool isDone(uint64_t task) const { return done_[task]; }
+  // Tasks whose first result came from `worker` (its share of the image).
+  uint64_t acceptedFrom(int worker) const { return workers_[index(worker)].accepted; }
   uint64_t doneCount() const { return doneCount_; }
   bool complete() const { return doneCount_ == taskCount(); }
   TaskSet doneSet() const;  // every task done, ascending
@@ -91,6 +93,7 @@ class Ledger {
     TaskSet given;     // every task it received, in order (assignments, transfers in)
     TaskSet moved;     // tasks it sent to peers
     uint64_t returned = 0;  // tasks it returned results for
+    uint64_t accepted = 0;  // of those, the ones that were first (in the image)
   };
   size_t index(int worker) const;
 

@@ -103,6 +103,12 @@ RunReport makeReport(const RunInfo& info, const std::vector<Event>& events,
         break;
     }
   }
+  // A worker whose events never came (lost, or its summary missing) rendered at least the
+  // pixels the master accepted from it.
+  for (size_t w = 0; w < n && w < info.acceptedPixels.size(); ++w) {
+    WorkerReport& wr = r.workers[w];
+    if (wr.pixels == 0 && wr.busySeconds == 0) wr.pixels = info.acceptedPixels[w];
+  }
   double busy = 0;
   double present = 0;
   std::vector<double> arrivals;

@@ -38,7 +38,8 @@ struct WorkerReport {
   double slowdown = 1;
   uint64_t tasks = 0;   // task messages received (assignments and transfers)
   int threads = 1;      // rendering threads (0: unknown, its summary never came)
-  uint64_t pixels = 0;  // pixels rendered
+  uint64_t pixels = 0;  // pixels rendered (from its events; for a worker whose events never
+                        // came, a lost one, the pixels the master accepted from it)
   double busySeconds = 0;
   double idleSeconds = 0;
   uint64_t messagesSent = 0, messagesReceived = 0;
@@ -78,6 +79,8 @@ struct RunInfo {
   std::vector<uint64_t> tasksReceived;  // per worker
   std::vector<int> threads;             // per worker: rendering threads (0: unknown)
   std::vector<std::optional<double>> joinedAt;  // per worker: when it joined; none: at start
+  std::vector<uint64_t> acceptedPixels;  // per worker, optional: the pixels of the image whose
+                                         // result came first from it (the master's count)
   std::optional<double> serialSeconds;  // for speed-up; absent: speed-up not reported
   bool speedIndexRun = true;            // false: the workers' indices are placeholders
   uint64_t rays = 0;

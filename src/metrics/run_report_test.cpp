@@ -97,6 +97,16 @@ TEST(RunReportTest, AJoinerCountsFromItsArrivalAndTheIdealFollowsTheSchedule) {
   EXPECT_NE(r.toTable().find("worker 1 joined at 2.00 s"), std::string::npos);
 }
 
+TEST(RunReportTest, ALostWorkersPixelsAreThoseTheMasterAccepted) {
+  RunInfo info = twoWorkers();
+  info.acceptedPixels = {90, 30};
+  std::vector<Event> events;
+  events.push_back({EventKind::Compute, 0, 0.0, 1.0, 100, 0, 0, ""});  // 10 of them copies
+  const RunReport r = makeReport(info, events, 1.0);
+  EXPECT_EQ(r.workers[0].pixels, 100u);  // what it rendered, from its events
+  EXPECT_EQ(r.workers[1].pixels, 30u);   // its events never came
+}
+
 TEST(RunReportTest, BalancedFinishWaterFillsOverArrivals) {
   // One worker at 10/s has done 50 pixels by 5 s, when one at 30/s joins: 40 more take 1 s.
   EXPECT_DOUBLE_EQ(*balancedFinishSeconds({10, 30}, {0, 5}, 90), 6.0);
