@@ -49,7 +49,7 @@ int runJoin(const JoinOptions& o) {
     request.slowdownChanges = parseSpeedChanges(items, "--slowdown-at", 1, 1);
   }
   request.connectTimeoutSeconds = o.connectTimeoutSeconds;
-  MpiSession session;
+  MpiSession session(true);  // the connect watchdog may end the job from its own thread
   return session.exitCode(runJoinedWorkers(session, request));
 #else
   throw InputError("this prt was built without MPI; rebuild with Open MPI installed");

@@ -250,7 +250,7 @@ int renderParallelLocal(const RenderOptions& o, const Scene& scene, const Render
 // --- MPI hook (the driver is in src/mpi; this is only the command-line glue) ---------------
 int renderParallelMpi(const RenderOptions& o, const SceneLoader& loadScene) {
 #ifdef PRT_HAVE_MPI
-  MpiSession session;
+  MpiSession session(!o.acceptWorkersPath.empty());
   if (!session.isMaster()) {
     // Every rank parses the same command line. Options that are bad here are bad on the
     // master too, which reports them once and releases the workers; until then run with

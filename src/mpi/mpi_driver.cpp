@@ -321,6 +321,9 @@ std::string sharedPortName(MpiSession& session, const std::string& file) {
 }  // namespace
 
 int runJoinedWorkers(MpiSession& session, const JoinRequest& request) {
+  if (!session.threadMultiple()) {
+    session.abort("prt join needs MPI_THREAD_MULTIPLE, which this MPI does not provide", 1);
+  }
   const std::string port = sharedPortName(session, request.portFile);
   if (port.empty()) {
     if (session.rank() == 0) {

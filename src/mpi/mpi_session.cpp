@@ -13,14 +13,13 @@ namespace prt {
 
 using mpi_detail::check;
 
-MpiSession::MpiSession() : comm_(std::make_unique<MpiComm>()) {
+MpiSession::MpiSession(bool threadMultiple) : comm_(std::make_unique<MpiComm>()) {
   int initialized = 0;
   MPI_Initialized(&initialized);
   if (initialized) throw std::runtime_error("MPI is already initialised in this process");
   int provided = MPI_THREAD_SINGLE;
-  // MULTIPLE when the library has it: the master's port listener (--accept-workers) is a
-  // thread of its own. Every other MPI call stays on the thread that made the session.
-  if (MPI_Init_thread(nullptr, nullptr, MPI_THREAD_MULTIPLE, &provided) != MPI_SUCCESS) {
+  const int wanted = threadMultiple ? MPI_THREAD_MULTIPLE : MPI_THREAD_FUNNELED;
+  if (MPI_Init_thread(nullptr, nullptr, wanted, &provided) != MPI_SUCCESS) {
     throw std::runtime_error("MPI_Init_thread failed");
   }
   try {
@@ -59,6 +58,10 @@ int MpiSession::exitCode(int code) const {
   std::fflush(stdout);
   std::fflush(stderr);
   std::_Exit(code);
+}
+
+bool MpiSession::threadMultiple() const {
+  return comm_->threadMultiple;
 }
 
 bool MpiSession::recoveryEnabled() const {

@@ -8,9 +8,10 @@
 // prints the reason and calls MPI_Abort — no rank is ever left waiting.
 // Ending: MPI_Finalize in the destructor, unless a rank was lost (it would wait for it): then
 // the process exits without it, as Open MPI allows under --enable-recovery.
-// Threading: MPI_THREAD_MULTIPLE where provided (at least FUNNELED). Only the thread that
-// created the session may use it or call the MPI driver, but for the master's port listener
-// (--accept-workers); other threads (e.g. a multi-threaded render) must not call MPI.
+// Threading: MPI_THREAD_FUNNELED, or MULTIPLE when asked for. Only the thread that created
+// the session may use it or call the MPI driver, but for the master's port listener
+// (--accept-workers) and prt join's connect watchdog; other threads (e.g. a multi-threaded
+// render) must not call MPI.
 // This header does not include <mpi.h>: nothing outside src/mpi sees MPI.
 
 #include <memory>
@@ -22,8 +23,10 @@ struct MpiComm;  // the communicator and run state; defined inside src/mpi only
 
 class MpiSession {
  public:
-  // Throws std::runtime_error if MPI cannot start or provide MPI_THREAD_FUNNELED.
-  MpiSession();
+  // Throws std::runtime_error if MPI cannot start or provide MPI_THREAD_FUNNELED. With
+  // `threadMultiple`, asks for MPI_THREAD_MULTIPLE (a port listener, a connect watchdog);
+  // whether it came is threadMultiple() — otherwise FUNNELED, as every other run needs.
+  explicit MpiSession(bool threadMultiple = false);
   ~MpiSession();
   MpiSession(const MpiSession&) = delete;
   MpiSession& operator=(const MpiSession&) = delete;
@@ -32,6 +35,7 @@ class MpiSession {
   int size() const { return size_; }
   bool isMaster() const { return rank_ == 0; }
   int workerCount() const { return size_ - 1; }
+  bool threadMultiple() const;
 
   // Master only. Before a run has started: tells every worker there will be no run (bad input
   // on the master, which reports it), and they exit with `exitCode` without printing. Once the
