@@ -187,6 +187,8 @@ const std::set<std::string> kKnownKeys = {"driver",
                                           "drt",
                                           "workers_count",
                                           "elapsed_s",
+                                          "ideal_s",
+                                          "ideal_basis",
                                           "serial_s",
                                           "speedup",
                                           "efficiency",
@@ -209,6 +211,12 @@ std::string measures(const json& r) {
             simulated ? "virtual time from the first message to the last result"
                       : "wall time from sending the scene to the last result",
             r.value("elapsed_s", json()));
+  if (const auto ideal = number(r, "ideal_s")) {
+    s += card("ideal_s", formatSeconds(*ideal), "ideal",
+              "a perfect balance of the run's work, each worker from its arrival (speeds by " +
+                  text(r, "ideal_basis") + ")",
+              r.value("ideal_s", json()));
+  }
   s += card(
       "speedup", speedup ? formatNumber(*speedup) + " ×" : "n/a", "speed-up",
       "serial time " +
@@ -221,7 +229,7 @@ std::string measures(const json& r) {
   s += card("asu", asu ? formatPercent(*asu) : "n/a", "ASU",
             "speed-up / MASU: how close the run came to that ideal", r.value("asu", json()));
   s += card("efficiency", formatPercent(numberOr(r, "efficiency", 0)), "efficiency",
-            "workers' rendering time / the time each was there (elapsed × workers, but for late joiners)", r.value("efficiency", json()));
+            "workers' rendering time / the time each was there", r.value("efficiency", json()));
   s += card("messages", formatCount(count(r, "messages")), "messages",
             "sent by the master and the workers", r.value("messages", json()));
   s += card("bytes", formatBytes(count(r, "bytes")), "bytes", "their encoded size",
@@ -232,18 +240,28 @@ std::string measures(const json& r) {
       {"lost_workers", {"lost workers", "declared lost by the master; their tasks went to others"}},
       {"reissued_tasks", {"reissued tasks", "handed out again after a loss or as duplicates"}},
       {"resumed_pixels", {"resumed pixels", "taken from a checkpoint instead of rendered"}},
-      {"joined_workers", {"joined workers", "arrived mid-render (seconds on the master's clock)"}},
-      {"ideal_s", {"ideal", "a perfect balance of the run's work, each worker from its arrival"}}};
+      {"joined_workers", {"joined workers", "arrived mid-render"}}};
+  static const std::set<std::string> kFaultKeys = {"lost_workers", "reissued_tasks",
+                                                   "resumed_pixels"};
   std::string extra;
   for (const auto& [key, value] : r.items()) {
     if (kKnownKeys.count(key) || value.is_object() || value.is_null()) continue;
     const auto known = kLabels.find(key);
     const std::string label = known != kLabels.end() ? known->second.first : humanKey(key);
     const std::string tip = known != kLabels.end() ? known->second.second : "from the report";
-    const bool fault = known != kLabels.end() && ((value.is_array() && !value.empty()) ||
-                                                  (value.is_number() && value.get<double>() > 0));
+    const bool fault = kFaultKeys.count(key) && ((value.is_array() && !value.empty()) ||
+                                                 (value.is_number() && value.get<double>() > 0));
     std::string shown = genericValue(value), detail = tip;
-    if (value.is_array()) {  // a list (of workers, say): its length, the list in the tip
+    if (key == "joined_workers" && value.is_array()) {
+      shown = formatCount(value.size());
+      for (const json& j : value) {
+        if (!j.is_object()) continue;
+        detail += (detail == tip ? ": " : ", ") + std::string("worker ") +
+                  std::to_string(j.value("worker", 0)) + " at " +
+                  formatSeconds(j.value("at_s", 0.0));
+        if (detail.size() > 160) break;
+      }
+    } else if (value.is_array()) {  // a list (of workers, say): its length, the list in the tip
       shown = formatCount(value.size());
       if (!value.empty()) detail += ": " + value.dump().substr(0, 120);
     }

@@ -186,7 +186,9 @@ TEST(RunPage, SaysWhoJoinedWhenAndAgainstWhichIdeal) {
   EXPECT_NE(html.find("joined the running render"), std::string::npos);
   EXPECT_NE(html.find("A perfect balance of the same work"), std::string::npos);
   EXPECT_NE(html.find("class=\"absent\"><title>worker 3 joined at 500 ms"), std::string::npos);
-  EXPECT_NE(html.find("data-key=\"joined_workers\""), std::string::npos);
+  EXPECT_NE(html.find("card\" data-key=\"joined_workers\""), std::string::npos);  // no alarm
+  EXPECT_NE(html.find("worker 3 at 500 ms"), std::string::npos);
+  EXPECT_NE(html.find("data-key=\"ideal_s\""), std::string::npos);
 }
 
 TEST(RunPage, OldReportsWithoutTimelineOrMapStillDraw) {
