@@ -102,6 +102,20 @@ TEST_F(ExperimentCliTest, Scale) {
   expectChart("scale-efficiency-changing.png");
 }
 
+TEST_F(ExperimentCliTest, Joins) {
+  const Result r = quick("joins", "--strategies adaptive,scatter");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_EQ(rows("joins.csv"), 2 * (3 + 1));  // strategies x (3 simulated arrivals + 1 real)
+  const std::string csv = readWholeFile(dir_ / "out" / "joins.csv");
+  EXPECT_NE(csv.find("adaptive,real,"), std::string::npos) << csv;
+  expectChart("joins-simulated.png");
+  expectChart("joins-real.png");
+  const std::string md = readWholeFile(dir_ / "out" / "joins.md");
+  EXPECT_NE(md.find("schedule's ideal"), std::string::npos) << md;
+  const Result bad = quick("joins", "--slowdown 4");
+  EXPECT_EQ(bad.exitCode, 2) << "one worker cannot be joined: " << bad.output;
+}
+
 TEST_F(ExperimentCliTest, BadInputIsExitCodeTwoAndWritesNothing) {
   Result r = run("experiment nonesuch --out " + path("out"));
   EXPECT_EQ(r.exitCode, 2);

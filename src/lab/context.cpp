@@ -92,8 +92,12 @@ void ExperimentContext::draw(const Chart& chart, const std::string& file) {
 }
 
 std::string ExperimentContext::emulationNote() const {
-  const std::vector<double> k = slowdowns();
-  const double demand = emulatedMasu();  // cores the workers keep busy
+  return emulationNote(slowdowns());
+}
+
+std::string ExperimentContext::emulationNote(const std::vector<double>& k) const {
+  double demand = 0;  // cores the workers keep busy
+  for (double s : k) demand += 1.0 / s;
   std::string list;
   for (double s : k) {
     if (!list.empty()) list += ',';

@@ -50,6 +50,7 @@ class ExperimentContext {
   double masterSpeedIndex(const Scene& scene) const;
   // "4 emulated workers (--slowdown 2,2,4,4) need 1.5 cores; this machine has 2: ...".
   std::string emulationNote() const;
+  std::string emulationNote(const std::vector<double>& slowdowns) const;  // of these workers
 
   ExperimentOutput& output() { return output_; }
 

@@ -33,6 +33,8 @@ constexpr Entry kExperiments[] = {
     {"compare", "Figs. 19-21: speed-up, efficiency and ASU of every strategy, cases A-D",
      runCompare},
     {"scale", "Scaling from 4 to 1,024 simulated workers", runScale},
+    {"joins", "Machines that join mid-render: every strategy against the schedule's ideal",
+     runJoins},
 };
 
 const Entry& find(const std::string& name) {

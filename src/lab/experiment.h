@@ -9,6 +9,8 @@
 //                   (Figs. 19-21)                                                  real + simulated
 //   scale           the comparison from 4 to 1,024 workers, Arvo and Heirich's
 //                   claim about static schemes checked                             simulated
+//   joins           one slow worker starts, faster ones join later: every strategy
+//                   against the ideal for that schedule (beyond the paper)         real + simulated
 // Each writes CSV files (the source of truth; a `source` column says real or simulated),
 // charts drawn by gnuplot from scripts kept beside them, and NAME.md, a summary saying what
 // ran, on what, and which numbers are real runs and which simulated.

@@ -9,7 +9,7 @@ namespace {
 
 TEST(Experiment, NamesAreThePapersExperiments) {
   EXPECT_EQ(experimentNames(), (std::vector<std::string>{"table3", "speed-index", "initial-percent",
-                                                         "compare", "scale"}));
+                                                         "compare", "scale", "joins"}));
 }
 
 TEST(Experiment, UnknownNameListsTheValidOnes) {

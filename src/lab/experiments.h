@@ -11,5 +11,6 @@ void runSpeedIndex(ExperimentContext& cx);      // speed_index_experiment.cpp
 void runInitialPercent(ExperimentContext& cx);  // initial_percent.cpp
 void runCompare(ExperimentContext& cx);         // compare.cpp
 void runScale(ExperimentContext& cx);           // scale.cpp
+void runJoins(ExperimentContext& cx);           // joins.cpp
 
 }  // namespace prt

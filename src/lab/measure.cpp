@@ -90,11 +90,15 @@ RunReport runSimulated(const CostMap& costs, const ParallelOptions& options,
   SimulationOptions sim;
   sim.strategy = options.strategy;
   sim.strategyOptions = options.strategyOptions;
-  for (int w = 0; w < options.workers; ++w) sim.speeds.push_back(1.0 / options.slowdownOf(w));
+  for (int w = 0; w < options.totalWorkers(); ++w) {
+    sim.speeds.push_back(1.0 / options.slowdownOf(w));
+  }
+  sim.joins = options.joins;
   sim.batchPixels = options.batchPixels;
   sim.baseSpeedIndexSeconds = masterSpeedIndexSeconds;
   sim.speedIndexSeconds = workerSpeedIndices;
   sim.speedIndexRun = options.speedIndexKind != SpeedIndexKind::None;
+  sim.oracleSpeedIndex = options.speedIndexKind == SpeedIndexKind::Slowdown;
   sim.speedChanges = speedChangesOf(options);
   return simulate(costs, sim).report;
 }

@@ -184,7 +184,7 @@ class Simulation {
     double seconds = 0;
     if (w.machine.needsSetup()) {
       w.inSetup = true;
-      seconds = options_.speedIndexRun ? w.speedIndex : 0.0;
+      seconds = options_.speedIndexRun && !options_.oracleSpeedIndex ? w.speedIndex : 0.0;
     } else if (w.machine.hasWork()) {
       w.inSetup = false;
       w.batch = w.machine.nextBatch();

@@ -51,6 +51,9 @@ struct SimulationOptions {
   std::vector<SpeedChange> speedChanges;  // --speed-at: worker W runs at speed X from T s on
   bool speedIndexRun = true;              // false: workers set up at once and report equal
                                           // indices (for strategies that need none)
+  bool oracleSpeedIndex = false;          // with speedIndexRun: workers set up at once and
+                                          // report their true index (base / speed), as real
+                                          // workers do with --speed-index slowdown
   bool endgame = false;                   // --endgame: copies of the last tasks (Master)
   NetworkOptions network;
   uint64_t sceneBytes = 4096;  // the scene text the master sends to each worker

@@ -205,6 +205,16 @@ TEST(SimulatorTest, DynamicStrategiesComeCloseToTheJoinSchedulesIdeal) {
   EXPECT_GT(simulate(map, scatter).report.elapsedSeconds, 40.0);  // the slow one does it all
 }
 
+TEST(SimulatorTest, AnOracleSpeedIndexCostsNoSetupAndGivesTheTrueIndices) {
+  const CostMap map = uniformCostMap(64, 64, 1.0);
+  SimulationOptions o = optionsFor("reservoir", {1, 0.5}, 64);
+  o.oracleSpeedIndex = true;
+  const SimulatedRun run = simulate(map, o);
+  EXPECT_NEAR(run.report.elapsedSeconds, 1.0 / 1.5, 0.01);  // no 0.16 s of setup first
+  EXPECT_DOUBLE_EQ(run.report.workers[1].speedIndexSeconds,
+                   2 * run.report.workers[0].speedIndexSeconds);
+}
+
 TEST(SimulatorTest, JoinersMustLeaveAStartingWorker) {
   const CostMap map = uniformCostMap(8, 8, 1.0);
   SimulationOptions o = optionsFor("self", {1, 1});
