@@ -1,7 +1,8 @@
 #pragma once
 // QuadBvh: a bounding volume hierarchy of four-way nodes, each holding its children's boxes in
 // one BoxQuad tested at once in single precision (conservatively: see box_quad.h); a child is
-// another node or a single item. The tree is built binary — top-down by a full-sweep surface
+// another node or a leaf: a single item, or (for a mesh's triangles) a block of up to four
+// items tested at once by the caller. The tree is built binary — top-down by a full-sweep surface
 // area heuristic over the three axes, bottom-up by greedy merging for small sets, so large
 // objects (floors, walls, pedestals) end up near the root instead of deep under boxes that
 // overlap them — then collapsed to four children per node. Traversal is nearest-child-first
@@ -25,9 +26,16 @@ enum class BvhBuild { careful, binned };
 
 class QuadBvh {
  public:
+  // Leaves of blocks: up to this many items each.
+  static constexpr uint32_t kBlockItems = 4;
+
   QuadBvh() = default;
-  // `bounds[i]` is the box of item i; items are referred to by their index.
-  explicit QuadBvh(const std::vector<Bounds>& bounds, BvhBuild build = BvhBuild::careful);
+  // `bounds[i]` is the box of item i; items are referred to by their index, one per leaf.
+  explicit QuadBvh(const std::vector<Bounds>& bounds, BvhBuild how = BvhBuild::careful);
+  // A binned tree whose leaves are blocks of up to kBlockItems items: block k holds the items
+  // blockItems[kBlockItems * k + lane], an unused lane ~0u (the items of a block lie close in
+  // space, and the blocks a ray meets close in memory).
+  QuadBvh(const std::vector<Bounds>& bounds, std::vector<uint32_t>& blockItems);
 
   // Calls visit(item) for (a superset of) the items whose boxes hitsBounds says the ray meets
   // within (tMin, tMax()). visit returns the new tMax (to shrink the search for the nearest
@@ -36,22 +44,26 @@ class QuadBvh {
   // order of entry distance, so that the search shrinks early; without, in any order (for
   // queries that need every item, or any).
   template <bool nearestFirst, typename Visit>
-  void traverse(const Ray& ray, double tMin, double tMax, Visit&& visit) const;
+  void traverse(const Ray& ray, double tMin, double tMax, Visit&& visit) const {
+    traverseLeaves<nearestFirst>(ray, tMin, tMax,
+                                 [&](uint32_t item, uint32_t) { return visit(item); });
+  }
+  // The same for a tree of blocks: visit(block, count) for each block met, its first `count`
+  // lanes used.
+  template <bool nearestFirst, typename Visit>
+  void traverseBlocks(const Ray& ray, double tMin, double tMax, Visit&& visit) const {
+    traverseLeaves<nearestFirst>(ray, tMin, tMax, visit);
+  }
 
   size_t nodeCount() const { return nodes_.size(); }
   int depth() const { return depth_; }
   size_t bytes() const { return nodes_.capacity() * sizeof(Node); }
 
-  // The items in the order a traversal that enters every child, first lane first, meets them;
-  // and the same tree with item i renamed newIndex[i] (a permutation). Together they let a
-  // caller store its items in the tree's order, so that the items a ray meets lie close in
-  // memory.
-  std::vector<uint32_t> itemOrder() const;
-  void renameItems(const std::vector<uint32_t>& newIndex);
-
  private:
-  static constexpr uint32_t kItem = 1u << 31;  // child reference: set for an item index
-  static constexpr uint32_t kEmpty = ~0u;      // child reference: an unused lane
+  // A child reference: kItem set for a leaf, kItem | index << 2 | (count - 1), the index an
+  // item's or a block's; otherwise a node's index. kEmpty: an unused lane.
+  static constexpr uint32_t kItem = 1u << 31;
+  static constexpr uint32_t kEmpty = ~0u;
   static constexpr int kMaxDepth = 128;        // of the binary tree; the build guarantees it
 
   struct alignas(128) Node {  // a power of two: cheap indexing, two cache lines
@@ -59,13 +71,19 @@ class QuadBvh {
     uint32_t child[4] = {kEmpty, kEmpty, kEmpty, kEmpty};
   };
 
+  // Both constructors: blocks null for leaves of one item.
+  void build(const std::vector<Bounds>& bounds, BvhBuild how, std::vector<uint32_t>* blocks);
+  // visit(index, count) for each leaf met.
+  template <bool nearestFirst, typename Visit>
+  void traverseLeaves(const Ray& ray, double tMin, double tMax, Visit&& visit) const;
+
   std::vector<Node> nodes_;
   float maxCoordinate_ = 0;  // of any box, rounded up: QuadRay's error bound needs it
   int depth_ = 0;
 };
 
 template <bool nearestFirst, typename Visit>
-void QuadBvh::traverse(const Ray& r, double tMin, double tMax, Visit&& visit) const {
+void QuadBvh::traverseLeaves(const Ray& r, double tMin, double tMax, Visit&& visit) const {
   if (nodes_.empty()) return;
   const QuadRay ray(r, maxCoordinate_);
   const float tMinF = floatBelow(tMin);
@@ -109,7 +127,7 @@ void QuadBvh::traverse(const Ray& r, double tMin, double tMax, Visit&& visit) co
         continue;
       }
     } else if (child != kEmpty) {
-      const double t = visit(child & ~kItem);
+      const double t = visit((child & ~kItem) >> 2, (child & 3) + 1);
       if (t < 0) return;
       if (t != tMax) {
         tMax = t;
