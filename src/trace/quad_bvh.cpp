@@ -45,6 +45,9 @@ class BinaryTree {
   static uint32_t leaf(uint32_t begin, uint32_t count) {
     return kItem | begin << 2 | (count - 1);
   }
+  // What testing n items costs, in tests: blocks of maxLeaf items cost one test each, so a
+  // split that fills them is preferred.
+  double leafCost(uint32_t n) const { return static_cast<double>((n + maxLeaf_ - 1) / maxLeaf_); }
   static uint32_t leafBegin(uint32_t ref) { return (ref & ~kItem) >> 2; }
   static uint32_t leafCount(uint32_t ref) { return (ref & 3) + 1; }
   const std::vector<uint32_t>& items() const { return items_; }
@@ -234,7 +237,8 @@ uint32_t BinaryTree::binned(uint32_t begin, uint32_t end, int level, Bounds& box
         left.extend(bins[axis][b - 1]);
         n += counts[axis][b - 1];
         if (n == 0 || rightCount[b] == 0) continue;
-        const double cost = n * left.surfaceArea() + rightCount[b] * rightArea[b];
+        const double cost =
+            leafCost(n) * left.surfaceArea() + leafCost(rightCount[b]) * rightArea[b];
         if (cost < bestCost) {
           bestCost = cost;
           bestAxis = axis;
@@ -304,22 +308,21 @@ void QuadBvh::build(const std::vector<Bounds>& bounds, BvhBuild how,
     Bounds box;
     for (const Bounds& b : bounds) box.extend(b);
     nodes_.emplace_back();
-    nodes_[0].boxes.set(0, box);
-    nodes_[0].child[0] = leafRef(tree.root);
+    nodes_[0].set(0, box, leafRef(tree.root));
     return;
   }
 
-  // Collapse: a four-way node takes the place of a binary node and its descendants down to
-  // four children, opening the child of largest area first (the likeliest to be entered).
+  // Collapse: a kWidth-way node takes the place of a binary node and its descendants down to
+  // kWidth children, opening the child of largest area first (the likeliest to be entered).
   struct Child {
     Bounds box;
     uint32_t ref;
   };
   auto collapse = [&](auto&& self, uint32_t binary) -> uint32_t {
     const auto& b = tree.nodes[binary];
-    Child children[4] = {{b.box[0], b.child[0]}, {b.box[1], b.child[1]}, {}, {}};
+    Child children[kWidth] = {{b.box[0], b.child[0]}, {b.box[1], b.child[1]}};
     int size = 2;
-    while (size < 4) {
+    while (size < kWidth) {
       int open = -1;
       for (int i = 0; i < size; ++i) {
         if (!(children[i].ref & kItem) &&
@@ -337,13 +340,12 @@ void QuadBvh::build(const std::vector<Bounds>& bounds, BvhBuild how,
     for (int lane = 0; lane < size; ++lane) {
       const uint32_t ref = (children[lane].ref & kItem) ? leafRef(children[lane].ref)
                                                         : self(self, children[lane].ref);
-      nodes_[index].boxes.set(lane, children[lane].box);
-      nodes_[index].child[lane] = ref;
+      nodes_[index].set(lane, children[lane].box, ref);
     }
     return index;
   };
   collapse(collapse, tree.root);
-  nodes_.shrink_to_fit();  // a four-way node takes one to three binary ones
+  nodes_.shrink_to_fit();  // a node takes one to kWidth - 1 binary ones
   if (blocks != nullptr) blocks->shrink_to_fit();
 }
 

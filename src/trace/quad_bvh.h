@@ -10,6 +10,7 @@
 // Built once, then read-only: safe to query from many threads.
 
 #include <bit>
+#include <cstring>
 #include <cstdint>
 #include <vector>
 
@@ -66,9 +67,20 @@ class QuadBvh {
   static constexpr uint32_t kEmpty = ~0u;
   static constexpr int kMaxDepth = 128;        // of the binary tree; the build guarantees it
 
-  struct alignas(128) Node {  // a power of two: cheap indexing, two cache lines
-    BoxQuad boxes;
-    uint32_t child[4] = {kEmpty, kEmpty, kEmpty, kEmpty};
+  // A node's children: lanes of BoxQuads, tested side by side (independent operations).
+  static constexpr int kQuads = 2;
+  static constexpr int kWidth = 4 * kQuads;
+
+  struct alignas(64) Node {  // 256 bytes, a power of two: cheap indexing, four cache lines
+    BoxQuad boxes[kQuads];
+    uint32_t child[kWidth];
+    Node() {
+      for (uint32_t& c : child) c = kEmpty;
+    }
+    void set(int lane, const Bounds& box, uint32_t ref) {
+      boxes[lane / 4].set(lane % 4, box);
+      child[lane] = ref;
+    }
   };
 
   // Both constructors: blocks null for leaves of one item.
@@ -92,8 +104,9 @@ void QuadBvh::traverseLeaves(const Ray& r, double tMin, double tMax, Visit&& vis
     uint32_t child;
     float entry;  // a lower bound of the distance at which the child's box is entered
   };
-  // Each node stacks at most three children, and the tree is no deeper than its binary form.
-  Pending stack[3 * kMaxDepth + 4];
+  // Each node stacks at most kWidth - 1 children, and the tree is no deeper than its binary
+  // form.
+  Pending stack[(kWidth - 1) * kMaxDepth + kWidth];
   int top = 0;
   uint32_t child = 0;  // the root node
   // One loop, one call of visit: it is inlined once, and no call clobbers the registers
@@ -101,8 +114,13 @@ void QuadBvh::traverseLeaves(const Ray& r, double tMin, double tMax, Visit&& vis
   for (;;) {
     if (!(child & kItem)) {
       const Node& n = nodes_[child];
-      Float4 entry;
-      int mask = n.boxes.hits(ray, tMinF, tMaxF, entry);
+      float entry[kWidth];
+      int mask = 0;
+      for (int q = 0; q < kQuads; ++q) {
+        Float4 e;
+        mask |= n.boxes[q].hits(ray, tMinF, tMaxF, e) << (4 * q);
+        std::memcpy(entry + 4 * q, &e, sizeof e);
+      }
       if (mask != 0) {
         // Stack the children met, farthest first, and go on with the nearest.
         int lane = std::countr_zero(static_cast<unsigned>(mask));
