@@ -74,12 +74,14 @@ class QuadBvh {
   struct alignas(64) Node {  // 256 bytes, a power of two: cheap indexing, four cache lines
     BoxQuad boxes[kQuads];
     uint32_t child[kWidth];
+    int leafLanes = 0, nodeLanes = 0;  // bit i set when child i is a leaf, or a node
     Node() {
       for (uint32_t& c : child) c = kEmpty;
     }
     void set(int lane, const Bounds& box, uint32_t ref) {
       boxes[lane / 4].set(lane % 4, box);
       child[lane] = ref;
+      ((ref & kItem) ? leafLanes : nodeLanes) |= 1 << lane;
     }
   };
 
@@ -110,48 +112,52 @@ void QuadBvh::traverseLeaves(const Ray& r, double tMin, double tMax, Visit&& vis
   int top = 0;
   uint32_t child = 0;  // the root node
   // One loop, one call of visit: it is inlined once, and no call clobbers the registers
-  // holding the ray.
+  // holding the ray. The leaves a node's test meets are visited at once (in lane order, each
+  // still within reach), and only nodes are stacked: no step of the loop for a leaf.
   for (;;) {
-    if (!(child & kItem)) {
-      const Node& n = nodes_[child];
-      float entry[kWidth];
-      int mask = 0;
-      for (int q = 0; q < kQuads; ++q) {
-        Float4 e;
-        mask |= n.boxes[q].hits(ray, tMinF, tMaxF, e) << (4 * q);
-        std::memcpy(entry + 4 * q, &e, sizeof e);
-      }
-      if (mask != 0) {
-        // Stack the children met, farthest first, and go on with the nearest.
-        int lane = std::countr_zero(static_cast<unsigned>(mask));
-        mask &= mask - 1;
-        if (mask == 0) {
-          child = n.child[lane];
-          continue;
-        }
-        const int base = top;
-        stack[top++] = {n.child[lane], entry[lane]};
-        do {
-          lane = std::countr_zero(static_cast<unsigned>(mask));
-          mask &= mask - 1;
-          const Pending p{n.child[lane], entry[lane]};
-          int i = top++;
-          if constexpr (nearestFirst) {
-            for (; i > base && stack[i - 1].entry < p.entry; --i) stack[i] = stack[i - 1];
-          }
-          stack[i] = p;
-        } while (mask != 0);
-        child = stack[--top].child;
-        continue;
-      }
-    } else if (child != kEmpty) {
-      const double t = visit((child & ~kItem) >> 2, (child & 3) + 1);
+    const Node& n = nodes_[child];
+    float entry[kWidth];
+    int mask = 0;
+    for (int q = 0; q < kQuads; ++q) {
+      Float4 e;
+      mask |= n.boxes[q].hits(ray, tMinF, tMaxF, e) << (4 * q);
+      std::memcpy(entry + 4 * q, &e, sizeof e);
+    }
+    for (int leaves = mask & n.leafLanes; leaves != 0; leaves &= leaves - 1) {
+      const int lane = std::countr_zero(static_cast<unsigned>(leaves));
+      if (entry[lane] > tMax) continue;  // a nearer hit has been found since the test
+      const uint32_t ref = n.child[lane];
+      const double t = visit((ref & ~kItem) >> 2, (ref & 3) + 1);
       if (t < 0) return;
       if (t != tMax) {
         tMax = t;
         tMaxF = floatAbove(t);
       }
     }
+    int nodes = mask & n.nodeLanes;
+    if (nodes != 0) {
+      int lane = std::countr_zero(static_cast<unsigned>(nodes));
+      nodes &= nodes - 1;
+      if (nodes == 0) {  // one node met: on with it, if still within reach
+        if (entry[lane] > tMax) goto resume;
+        child = n.child[lane];
+        continue;
+      }
+      // Stack the nodes met, farthest first; the nearest is taken off below.
+      const int base = top;
+      stack[top++] = {n.child[lane], entry[lane]};
+      do {
+        lane = std::countr_zero(static_cast<unsigned>(nodes));
+        nodes &= nodes - 1;
+        const Pending p{n.child[lane], entry[lane]};
+        int i = top++;
+        if constexpr (nearestFirst) {
+          for (; i > base && stack[i - 1].entry < p.entry; --i) stack[i] = stack[i - 1];
+        }
+        stack[i] = p;
+      } while (nodes != 0);
+    }
+  resume:
     // Resume with the nearest stacked child still within reach.
     do {
       if (top == 0) return;
