@@ -1,0 +1,86 @@
+#include "trace/triangle_block.h"
+
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <cmath>
+
+#include "core/rng.h"
+
+namespace prt {
+namespace {
+
+Vec3 randomPoint(Rng& rng, double scale) {
+  return scale * Vec3(rng.uniform() - 0.5, rng.uniform() - 0.5, rng.uniform() - 0.5);
+}
+
+// Each lane's distance has the bits of the scalar test's (NaN where that one misses), for
+// random triangles at several scales, triangles sharing edges and vertices with rays aimed
+// exactly at those, triangles seen edge-on and degenerate ones.
+TEST(TriangleBlockTest, EveryLaneIsTheScalarTestBitForBit) {
+  Rng rng(17);
+  int hits = 0, misses = 0;
+  for (int i = 0; i < 20000; ++i) {
+    const double scale = std::ldexp(1.0, static_cast<int>(rng.uniform() * 40) - 20);
+    Vec3 corners[4][3];
+    for (auto& t : corners) {
+      for (Vec3& p : t) p = randomPoint(rng, scale);
+    }
+    corners[1][0] = corners[0][1];  // triangle 1 shares the edge b-a of triangle 0
+    corners[1][1] = corners[0][0];
+    if (i % 7 == 0) corners[2][2] = corners[2][0] + 0.5 * (corners[2][1] - corners[2][0]);
+    if (i % 11 == 0) corners[3][1] = corners[3][0];  // degenerate
+    Ray ray{randomPoint(rng, 4 * scale), {}};
+    const Vec3 target = i % 3 == 0   ? corners[0][0]  // a shared vertex
+                        : i % 3 == 1 ? 0.5 * (corners[0][0] + corners[0][1])  // a shared edge
+                                     : randomPoint(rng, scale);
+    ray.direction = normalize(target - ray.origin);
+    if (i % 13 == 0) ray.direction = Vec3(0, 0, ray.direction.z < 0 ? -1.0 : 1.0);
+    if (i % 17 == 0) {  // in the plane of triangle 3: seen edge-on
+      const Vec3& a = corners[3][0];
+      ray.origin = a + 2.0 * (corners[3][2] - a);
+      ray.direction = normalize(a - ray.origin);
+    }
+    const ShearedRay sheared(ray);
+    TriangleBlock block;
+    double pts[4][3][3];
+    const int used = 1 + i % 4;  // the lanes beyond are unused
+    for (int lane = 0; lane < used; ++lane) {
+      for (int k = 0; k < 3; ++k) {
+        for (int axis = 0; axis < 3; ++axis) pts[lane][k][axis] = corners[lane][k][axis];
+      }
+      block.set(lane, pts[lane][0], pts[lane][1], pts[lane][2]);
+    }
+    Double4 d;
+    blockDistances(ShearedRay4(sheared), block, d);
+    for (int lane = 0; lane < 4; ++lane) {
+      if (lane >= used) {
+        EXPECT_TRUE(std::isnan(d[lane]));
+        continue;
+      }
+      const double expected = triangleDistance(sheared, pts[lane][0], pts[lane][1], pts[lane][2]);
+      if (std::isnan(expected)) {
+        ++misses;
+        EXPECT_TRUE(std::isnan(d[lane])) << "ray " << i << ", lane " << lane;
+      } else {
+        ++hits;
+        EXPECT_EQ(std::bit_cast<uint64_t>(d[lane]), std::bit_cast<uint64_t>(expected))
+            << "ray " << i << ", lane " << lane;
+      }
+    }
+  }
+  EXPECT_GT(hits, 5000);
+  EXPECT_GT(misses, 5000);
+}
+
+TEST(TriangleBlockTest, LaneBitsFollowTheLanes) {
+  const Double4 v = {1, -1, 3, -3};
+  const Double4 zero = {0, 0, 0, 0};
+  EXPECT_EQ(laneBits(v > zero), 0b0101);
+  EXPECT_EQ(laneBits(v < zero), 0b1010);
+  EXPECT_EQ(laneBits(v == v), 0b1111);
+  EXPECT_EQ(laneBits(v != v), 0);
+}
+
+}  // namespace
+}  // namespace prt
