@@ -71,13 +71,12 @@ int MeshBvh::crossings(const Ray& ray, double tMin, double tMax, bool atMostOne)
     Double4 d;
     blockDistances(sheared, blocks[block], d);
     const int lanes = laneBits((d > lower) & (d < upper));
-    if (lanes != 0) {
-      count += std::popcount(static_cast<unsigned>(lanes));
-      if (atMostOne) {
-        count = 1;
-        return -1.0;  // stops the traversal
-      }
+    if (atMostOne) {
+      if (lanes == 0) return tMax;
+      count = 1;
+      return -1.0;  // stops the traversal
     }
+    count += std::popcount(static_cast<unsigned>(lanes));  // no branch on a coin toss
     return tMax;
   });
   return count;

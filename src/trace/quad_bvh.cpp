@@ -18,7 +18,7 @@ constexpr int kSahDepth = 30;
 // (walls, pedestals), and cheap at this size (cubic in the count).
 constexpr uint32_t kClusterItems = 48;
 
-// The binary tree the four-way one is collapsed from.
+// The binary tree the eight-way one is collapsed from.
 class BinaryTree {
  public:
   struct Node {

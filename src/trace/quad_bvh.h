@@ -1,12 +1,15 @@
 #pragma once
-// QuadBvh: a bounding volume hierarchy of four-way nodes, each holding its children's boxes in
-// one BoxQuad tested at once in single precision (conservatively: see box_quad.h); a child is
-// another node or a leaf: a single item, or (for a mesh's triangles) a block of up to four
-// items tested at once by the caller. The tree is built binary — top-down by a full-sweep surface
-// area heuristic over the three axes, bottom-up by greedy merging for small sets, so large
-// objects (floors, walls, pedestals) end up near the root instead of deep under boxes that
-// overlap them — then collapsed to four children per node. Traversal is nearest-child-first
-// and skips a stacked child once the search distance has shrunk below its entry distance.
+// QuadBvh: a bounding volume hierarchy of eight-way nodes, each holding its children's boxes in
+// two BoxQuads tested side by side in single precision (conservatively: see box_quad.h); a
+// child is another node or a leaf: a single item, or (for a mesh's triangles) a block of up to
+// four items the caller tests at once. The tree is built binary — top-down by a full-sweep
+// surface area heuristic over the three axes, bottom-up by greedy merging for small sets, so
+// large objects (floors, walls, pedestals) end up near the root instead of deep under boxes
+// that overlap them — then collapsed to eight children per node: a ray's way down is a chain
+// of dependent loads and tests, and wider nodes make it shorter (30 % fewer node visits
+// than four-way nodes for the bunny's rays, bench/mesh_bench.cpp). Traversal visits the leaves
+// a node's test meets at once, goes on with the nearest node met and skips a stacked node
+// once the search distance has shrunk below its entry distance.
 // Built once, then read-only: safe to query from many threads.
 
 #include <bit>
