@@ -38,16 +38,13 @@ bool MeshBvh::nearest(const Ray& ray, double tMin, double& t, uint32_t& triangle
   const ShearedRay4 sheared(ShearedRay{ray});
   const TriangleBlock* const blocks = blocks_.data();
   const uint32_t* const triangleOf = triangleOf_.data();
-  const Double4 lower = PRT_BROADCAST4(tMin);
   double best = t;
   uint32_t bestTriangle = ~0u;
   bvh_.traverseBlocks<true>(ray, tMin, t, [&](uint32_t block, uint32_t) {
-    Double4 d;
+    double d[4];
     blockDistances(sheared, blocks[block], d);  // NaN fails every test
-    int lanes = laneBits((d > lower) & (d <= PRT_BROADCAST4(best)));
-    while (lanes != 0) {
+    for (int lanes = lanesWithin(d, tMin, best, true); lanes != 0; lanes &= lanes - 1) {
       const int lane = std::countr_zero(static_cast<unsigned>(lanes));
-      lanes &= lanes - 1;
       const uint32_t index = triangleOf[block * QuadBvh::kBlockItems + lane];
       if (d[lane] < best || (d[lane] == best && index < bestTriangle)) {
         best = d[lane];
@@ -65,18 +62,19 @@ bool MeshBvh::nearest(const Ray& ray, double tMin, double& t, uint32_t& triangle
 int MeshBvh::crossings(const Ray& ray, double tMin, double tMax, bool atMostOne) const {
   const ShearedRay4 sheared(ShearedRay{ray});
   const TriangleBlock* const blocks = blocks_.data();
-  const Double4 lower = PRT_BROADCAST4(tMin), upper = PRT_BROADCAST4(tMax);
   int count = 0;
   bvh_.traverseBlocks<false>(ray, tMin, tMax, [&](uint32_t block, uint32_t) {
-    Double4 d;
+    double d[4];
     blockDistances(sheared, blocks[block], d);
-    const int lanes = laneBits((d > lower) & (d < upper));
+    const int lanes = lanesWithin(d, tMin, tMax, false);
     if (atMostOne) {
       if (lanes == 0) return tMax;
       count = 1;
       return -1.0;  // stops the traversal
     }
-    count += std::popcount(static_cast<unsigned>(lanes));  // no branch on a coin toss
+    // No branch on a coin toss; and no std::popcount, a library call in the baseline build.
+    const int pairs = lanes - ((lanes >> 1) & 5);
+    count += (pairs & 3) + (pairs >> 2);
     return tMax;
   });
   return count;

@@ -4,6 +4,7 @@
 
 #include <bit>
 #include <cmath>
+#include <limits>
 
 #include "core/rng.h"
 
@@ -51,7 +52,7 @@ TEST(TriangleBlockTest, EveryLaneIsTheScalarTestBitForBit) {
       }
       block.set(lane, pts[lane][0], pts[lane][1], pts[lane][2]);
     }
-    Double4 d;
+    double d[4];
     blockDistances(ShearedRay4(sheared), block, d);
     for (int lane = 0; lane < 4; ++lane) {
       if (lane >= used) {
@@ -73,13 +74,13 @@ TEST(TriangleBlockTest, EveryLaneIsTheScalarTestBitForBit) {
   EXPECT_GT(misses, 5000);
 }
 
-TEST(TriangleBlockTest, LaneBitsFollowTheLanes) {
-  const Double4 v = {1, -1, 3, -3};
-  const Double4 zero = {0, 0, 0, 0};
-  EXPECT_EQ(laneBits(v > zero), 0b0101);
-  EXPECT_EQ(laneBits(v < zero), 0b1010);
-  EXPECT_EQ(laneBits(v == v), 0b1111);
-  EXPECT_EQ(laneBits(v != v), 0);
+TEST(TriangleBlockTest, LanesWithinFollowTheLanes) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double d[4] = {1, 2, nan, 3};
+  EXPECT_EQ(lanesWithin(d, 0, 3, false), 0b0011);
+  EXPECT_EQ(lanesWithin(d, 0, 3, true), 0b1011);
+  EXPECT_EQ(lanesWithin(d, 1, 3, true), 0b1010);
+  EXPECT_EQ(lanesWithin(d, -1, 0.5, true), 0);
 }
 
 }  // namespace
