@@ -25,7 +25,7 @@ namespace prt {
 // small sets bottom-up: the best trees for the few hundred objects of a scene, but time and
 // memory grow faster than the count. `binned` evaluates the surface area heuristic at 16
 // planes per axis (Wald 2007; for sets of 4096 items or more, along the longest axis only),
-// linear per level: a million triangles of a mesh in about a second (bench/mesh_bench.cpp).
+// linear per level: a million triangles of a mesh in about half a second (bench/mesh_bench.cpp).
 enum class BvhBuild { careful, binned };
 
 class QuadBvh {
@@ -44,9 +44,10 @@ class QuadBvh {
   // Calls visit(item) for (a superset of) the items whose boxes hitsBounds says the ray meets
   // within (tMin, tMax()). visit returns the new tMax (to shrink the search for the nearest
   // hit) or a negative value to stop the traversal. A box whose entry equals tMax() is still
-  // visited, so equal distances can be compared. With `nearestFirst`, children are visited in
-  // order of entry distance, so that the search shrinks early; without, in any order (for
-  // queries that need every item, or any).
+  // visited, so equal distances can be compared. With `nearestFirst`, the nodes met are
+  // entered in order of entry distance, so that the search shrinks early (the leaves a node's
+  // test meets are visited at once, in lane order); without, in any order (for queries that
+  // need every item, or any).
   template <bool nearestFirst, typename Visit>
   void traverse(const Ray& ray, double tMin, double tMax, Visit&& visit) const {
     traverseLeaves<nearestFirst>(ray, tMin, tMax,
@@ -68,7 +69,7 @@ class QuadBvh {
   // item's or a block's; otherwise a node's index. kEmpty: an unused lane.
   static constexpr uint32_t kItem = 1u << 31;
   static constexpr uint32_t kEmpty = ~0u;
-  static constexpr int kMaxDepth = 128;        // of the binary tree; the build guarantees it
+  static constexpr int kMaxDepth = 128;  // of the binary tree; the build guarantees it
 
   // A node's children: lanes of BoxQuads, tested side by side (independent operations).
   static constexpr int kQuads = 2;
@@ -87,6 +88,8 @@ class QuadBvh {
       ((ref & kItem) ? leafLanes : nodeLanes) |= 1 << lane;
     }
   };
+
+  static_assert(sizeof(Node) == 256);
 
   // Both constructors: blocks null for leaves of one item.
   void build(const std::vector<Bounds>& bounds, BvhBuild how, std::vector<uint32_t>* blocks);

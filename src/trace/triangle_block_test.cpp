@@ -32,7 +32,7 @@ TEST(TriangleBlockTest, EveryLaneIsTheScalarTestBitForBit) {
     if (i % 7 == 0) corners[2][2] = corners[2][0] + 0.5 * (corners[2][1] - corners[2][0]);
     if (i % 11 == 0) corners[3][1] = corners[3][0];  // degenerate
     Ray ray{randomPoint(rng, 4 * scale), {}};
-    const Vec3 target = i % 3 == 0   ? corners[0][0]  // a shared vertex
+    const Vec3 target = i % 3 == 0   ? corners[0][0]                          // a shared vertex
                         : i % 3 == 1 ? 0.5 * (corners[0][0] + corners[0][1])  // a shared edge
                                      : randomPoint(rng, scale);
     ray.direction = normalize(target - ray.origin);
