@@ -42,8 +42,8 @@ bool MeshBvh::nearest(const Ray& ray, double tMin, double& t, uint32_t& triangle
   uint32_t bestTriangle = ~0u;
   bvh_.traverseBlocks<true>(ray, tMin, t, [&](uint32_t block, uint32_t) {
     double d[4];
-    blockDistances(sheared, blocks[block], d);  // NaN fails every test
-    for (int lanes = lanesWithin(d, tMin, best, true); lanes != 0; lanes &= lanes - 1) {
+    int lanes = blockHits(sheared, blocks[block], tMin, best, true, d);
+    for (; lanes != 0; lanes &= lanes - 1) {
       const int lane = std::countr_zero(static_cast<unsigned>(lanes));
       const uint32_t index = triangleOf[block * QuadBvh::kBlockItems + lane];
       if (d[lane] < best || (d[lane] == best && index < bestTriangle)) {
@@ -65,8 +65,7 @@ int MeshBvh::crossings(const Ray& ray, double tMin, double tMax, bool atMostOne)
   int count = 0;
   bvh_.traverseBlocks<false>(ray, tMin, tMax, [&](uint32_t block, uint32_t) {
     double d[4];
-    blockDistances(sheared, blocks[block], d);
-    const int lanes = lanesWithin(d, tMin, tMax, false);
+    const int lanes = blockHits(sheared, blocks[block], tMin, tMax, false, d);
     if (atMostOne) {
       if (lanes == 0) return tMax;
       count = 1;

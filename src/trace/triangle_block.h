@@ -89,20 +89,29 @@ struct ShearedRay4 {
 };
 
 // triangleDistance for each lane: distance[i] is lane i's, bit for bit, or NaN where it misses.
-inline void blockDistances(const ShearedRay4& r, const TriangleBlock& t, double distance[4]) {
+// Returns the lanes whose distance d is within range, lo < d < hi (lo < d <= hi with `toHi`),
+// as bit i for lane i: from the vectors still in registers, for the caller's next decision.
+inline int blockHits(const ShearedRay4& r, const TriangleBlock& t, double lo, double hi, bool toHi,
+                     double distance[4]) {
   using block_detail::Doubles;
   using block_detail::Mask;
+  auto load = [](const double* p) {
+    Doubles v;
+    std::memcpy(&v, p, sizeof v);
+    return v;
+  };
+  const Doubles low = PRT_SPLAT(lo), high = PRT_SPLAT(hi);
+  int lanes = 0;
   for (int part = 0; part < 4; part += block_detail::kWidth) {
-    Doubles p[3][3];  // the three corners along kx, ky, kz
-    for (int k = 0; k < 3; ++k) {
-      std::memcpy(&p[k][0], &t.corner[k][r.kx][part], sizeof(Doubles));
-      std::memcpy(&p[k][1], &t.corner[k][r.ky][part], sizeof(Doubles));
-      std::memcpy(&p[k][2], &t.corner[k][r.kz][part], sizeof(Doubles));
-    }
-    const Doubles az = p[0][2] - r.oz, bz = p[1][2] - r.oz, cz = p[2][2] - r.oz;
-    const Doubles ax = (p[0][0] - r.ox) - r.sx * az, ay = (p[0][1] - r.oy) - r.sy * az;
-    const Doubles bx = (p[1][0] - r.ox) - r.sx * bz, by = (p[1][1] - r.oy) - r.sy * bz;
-    const Doubles cx = (p[2][0] - r.ox) - r.sx * cz, cy = (p[2][1] - r.oy) - r.sy * cz;
+    const Doubles az = load(&t.corner[0][r.kz][part]) - r.oz;
+    const Doubles bz = load(&t.corner[1][r.kz][part]) - r.oz;
+    const Doubles cz = load(&t.corner[2][r.kz][part]) - r.oz;
+    const Doubles ax = (load(&t.corner[0][r.kx][part]) - r.ox) - r.sx * az;
+    const Doubles ay = (load(&t.corner[0][r.ky][part]) - r.oy) - r.sy * az;
+    const Doubles bx = (load(&t.corner[1][r.kx][part]) - r.ox) - r.sx * bz;
+    const Doubles by = (load(&t.corner[1][r.ky][part]) - r.oy) - r.sy * bz;
+    const Doubles cx = (load(&t.corner[2][r.kx][part]) - r.ox) - r.sx * cz;
+    const Doubles cy = (load(&t.corner[2][r.ky][part]) - r.oy) - r.sy * cz;
     const Doubles u = cx * by - cy * bx;  // edge b-c, weight of a
     const Doubles v = ax * cy - ay * cx;  // edge c-a, weight of b
     const Doubles w = bx * ay - by * ax;  // edge a-b, weight of c
@@ -114,19 +123,8 @@ inline void blockDistances(const ShearedRay4& r, const TriangleBlock& t, double 
     const Doubles d = (u * (r.sz * az) + v * (r.sz * bz) + w * (r.sz * cz)) / det;
     const Doubles result = miss ? PRT_SPLAT(std::numeric_limits<double>::quiet_NaN()) : d;
     std::memcpy(distance + part, &result, sizeof result);
-  }
-}
-
-// Bit i set when lo < distance[i] < hi, or lo < distance[i] <= hi with `toHi` (NaN: clear).
-inline int lanesWithin(const double distance[4], double lo, double hi, bool toHi) {
-  using block_detail::Doubles;
-  const Doubles low = PRT_SPLAT(lo), high = PRT_SPLAT(hi);
-  int lanes = 0;
-  for (int part = 0; part < 4; part += block_detail::kWidth) {
-    Doubles d;
-    std::memcpy(&d, distance + part, sizeof d);
-    const block_detail::Mask in = (d > low) & (toHi ? d <= high : d < high);
-    lanes |= block_detail::bits(in) << part;
+    const Mask within = (result > low) & (toHi ? result <= high : result < high);
+    lanes |= block_detail::bits(within) << part;
   }
   return lanes;
 }

@@ -11,6 +11,8 @@
 namespace prt {
 namespace {
 
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
 Vec3 randomPoint(Rng& rng, double scale) {
   return scale * Vec3(rng.uniform() - 0.5, rng.uniform() - 0.5, rng.uniform() - 0.5);
 }
@@ -53,8 +55,12 @@ TEST(TriangleBlockTest, EveryLaneIsTheScalarTestBitForBit) {
       block.set(lane, pts[lane][0], pts[lane][1], pts[lane][2]);
     }
     double d[4];
-    blockDistances(ShearedRay4(sheared), block, d);
+    const double lo = i % 2 ? 0.0 : -kInf, hi = i % 4 < 2 ? kInf : 2 * scale;
+    const bool toHi = i % 8 < 4;
+    const int lanes = blockHits(ShearedRay4(sheared), block, lo, hi, toHi, d);
     for (int lane = 0; lane < 4; ++lane) {
+      const bool within = d[lane] > lo && (toHi ? d[lane] <= hi : d[lane] < hi);
+      EXPECT_EQ((lanes >> lane) & 1, within ? 1 : 0) << "ray " << i << ", lane " << lane;
       if (lane >= used) {
         EXPECT_TRUE(std::isnan(d[lane]));
         continue;
@@ -74,13 +80,22 @@ TEST(TriangleBlockTest, EveryLaneIsTheScalarTestBitForBit) {
   EXPECT_GT(misses, 5000);
 }
 
-TEST(TriangleBlockTest, LanesWithinFollowTheLanes) {
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  const double d[4] = {1, 2, nan, 3};
-  EXPECT_EQ(lanesWithin(d, 0, 3, false), 0b0011);
-  EXPECT_EQ(lanesWithin(d, 0, 3, true), 0b1011);
-  EXPECT_EQ(lanesWithin(d, 1, 3, true), 0b1010);
-  EXPECT_EQ(lanesWithin(d, -1, 0.5, true), 0);
+TEST(TriangleBlockTest, LanesInRangeAreReportedByTheirBits) {
+  // Four triangles facing the ray at distances 1, 2, 3 and 4 along +z.
+  TriangleBlock block;
+  for (int lane = 0; lane < 4; ++lane) {
+    const double z = lane + 1.0;
+    const double a[3] = {-1, -1, z}, b[3] = {1, -1, z}, c[3] = {0, 1, z};
+    block.set(lane, a, b, c);
+  }
+  const ShearedRay4 ray(ShearedRay(Ray{{0, 0, 0}, {0, 0, 1}}));
+  double d[4];
+  EXPECT_EQ(blockHits(ray, block, 0, 3, false, d), 0b0011);
+  EXPECT_EQ(d[0], 1.0);
+  EXPECT_EQ(d[3], 4.0);
+  EXPECT_EQ(blockHits(ray, block, 0, 3, true, d), 0b0111);
+  EXPECT_EQ(blockHits(ray, block, 1, 4, true, d), 0b1110);
+  EXPECT_EQ(blockHits(ray, block, 4, 9, false, d), 0);
 }
 
 }  // namespace
