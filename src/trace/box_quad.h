@@ -13,8 +13,8 @@
 // (by a factor of five), so tIn never exceeds the double entry and tOut never falls short of
 // the double exit. The search interval is rounded outwards to float. Where the bound would
 // leave float's range (huge coordinates, a direction component near zero), the axis is left
-// out of the test, which only accepts more. A NaN (0 * inf) compares false and leaves the
-// interval alone, as in hitsBounds: also accepting.
+// out of the test, which only accepts more. A NaN (0 * inf) widens the interval, as in
+// hitsBounds: also accepting.
 
 #include <bit>
 #include <cmath>
@@ -134,12 +134,14 @@ inline float floatAbove(double x) { return -floatBelow(-x); }
 struct BoxQuad {
   Float4 planes[3][2];  // [axis][0: min plane, 1: max plane], one box per lane
 
-  // Empty boxes in every lane: no ray meets them (unless no axis can be tested at all).
+  // Empty boxes in every lane: no ray meets them (unless no axis can be tested at all). The
+  // planes are the largest floats, not infinities, so that an axis left out of the test (inv
+  // 0) gives no NaN that could drop another axis.
   BoxQuad() {
-    constexpr float inf = std::numeric_limits<float>::infinity();
+    constexpr float big = std::numeric_limits<float>::max();
     for (auto& axis : planes) {
-      axis[0] = Float4{inf, inf, inf, inf};
-      axis[1] = Float4{-inf, -inf, -inf, -inf};
+      axis[0] = Float4{big, big, big, big};
+      axis[1] = Float4{-big, -big, -big, -big};
     }
   }
 
@@ -154,17 +156,26 @@ struct BoxQuad {
   // Bit i set when box i may meet the ray within the interval [tMin, tMax] (floats rounded
   // outwards from the doubles), with a lower bound of the entry distance in `entry[i]`.
   int hits(const QuadRay& r, float tMin, float tMax, Float4& entry) const {
-    Float4 lo = {tMin, tMin, tMin, tMin};
-    Float4 hi = {tMax, tMax, tMax, tMax};
+    const Float4 lowest = {tMin, tMin, tMin, tMin};
+    const Float4 highest = {tMax, tMax, tMax, tMax};
     const char* base = reinterpret_cast<const char*>(planes);
+    Float4 tIn[3], tOut[3];
     for (int a = 0; a < 3; ++a) {
-      const Float4 tIn = *reinterpret_cast<const Float4*>(base + r.entryPlane[a]) *
-                             r.invDirection[a] - r.entryOffset[a];
-      const Float4 tOut = *reinterpret_cast<const Float4*>(base + r.exitPlane[a]) *
-                              r.invDirection[a] - r.exitOffset[a];
-      lo = tIn > lo ? tIn : lo;  // a NaN compares false and leaves the interval alone
-      hi = tOut < hi ? tOut : hi;
+      tIn[a] = *reinterpret_cast<const Float4*>(base + r.entryPlane[a]) * r.invDirection[a] -
+               r.entryOffset[a];
+      tOut[a] = *reinterpret_cast<const Float4*>(base + r.exitPlane[a]) * r.invDirection[a] -
+                r.exitOffset[a];
     }
+    // The interval's ends in two steps instead of three (a shorter chain of dependent
+    // operations). A NaN (0 * inf: a box beyond float's range on an axis that is not tested)
+    // makes a pair take its second operand, so it may drop the other axis of its pair: that
+    // only accepts more.
+    const Float4 in01 = tIn[0] > tIn[1] ? tIn[0] : tIn[1];
+    const Float4 in2 = tIn[2] > lowest ? tIn[2] : lowest;
+    const Float4 out01 = tOut[0] < tOut[1] ? tOut[0] : tOut[1];
+    const Float4 out2 = tOut[2] < highest ? tOut[2] : highest;
+    const Float4 lo = in01 > in2 ? in01 : in2;
+    const Float4 hi = out01 < out2 ? out01 : out2;
     entry = lo;
     const auto inside = lo <= hi;  // per lane: all bits set or clear
 #if defined(__SSE2__)

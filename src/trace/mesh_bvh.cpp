@@ -1,5 +1,6 @@
 #include "trace/mesh_bvh.h"
 
+#include <bit>
 #include <utility>
 
 #include "core/check.h"
@@ -20,32 +21,35 @@ MeshBvh::MeshBvh(std::shared_ptr<const TriangleMesh> mesh) : mesh_(std::move(mes
     bounds_.extend(box);
     boxes.push_back(box);
   }
-  bvh_ = QuadBvh(boxes, BvhBuild::binned);
+  bvh_ = QuadBvh(boxes, triangleOf_);
   boxes = {};  // no longer needed: free them before the corners are copied
-  triangleOf_ = bvh_.itemOrder();
-  PRT_CHECK(triangleOf_.size() == mesh_->triangles.size());
-  std::vector<uint32_t> place(triangleOf_.size());
-  corners_.reserve(triangleOf_.size());
-  for (uint32_t i = 0; i < triangleOf_.size(); ++i) {
-    place[triangleOf_[i]] = i;
-    const auto& t = mesh_->triangles[triangleOf_[i]];
+  PRT_CHECK(triangleOf_.size() % QuadBvh::kBlockItems == 0);
+  blocks_.resize(triangleOf_.size() / QuadBvh::kBlockItems);
+  for (size_t k = 0; k < triangleOf_.size(); ++k) {
+    if (triangleOf_[k] == ~0u) continue;
+    const auto& t = mesh_->triangles[triangleOf_[k]];
     const Vec3 &a = v[t[0]], &b = v[t[1]], &c = v[t[2]];
-    corners_.push_back({{a.x, a.y, a.z}, {b.x, b.y, b.z}, {c.x, c.y, c.z}});
+    const double pa[3] = {a.x, a.y, a.z}, pb[3] = {b.x, b.y, b.z}, pc[3] = {c.x, c.y, c.z};
+    blocks_[k / QuadBvh::kBlockItems].set(static_cast<int>(k % QuadBvh::kBlockItems), pa, pb, pc);
   }
-  bvh_.renameItems(place);
 }
 
 bool MeshBvh::nearest(const Ray& ray, double tMin, double& t, uint32_t& triangle) const {
-  const ShearedRay sheared(ray);
-  const Corners* const corners = corners_.data();
+  const ShearedRay4 sheared(ShearedRay{ray});
+  const TriangleBlock* const blocks = blocks_.data();
+  const uint32_t* const triangleOf = triangleOf_.data();
   double best = t;
   uint32_t bestTriangle = ~0u;
-  bvh_.traverse<true>(ray, tMin, t, [&](uint32_t index) {
-    const Corners& c = corners[index];
-    const double d = triangleDistance(sheared, c.a, c.b, c.c);  // NaN fails every test
-    if (d > tMin && (d < best || (d == best && triangleOf_[index] < bestTriangle))) {
-      best = d;
-      bestTriangle = triangleOf_[index];
+  bvh_.traverseBlocks<true>(ray, tMin, t, [&](uint32_t block, uint32_t) {
+    double d[4];
+    int lanes = blockHits(sheared, blocks[block], tMin, best, true, d);
+    for (; lanes != 0; lanes &= lanes - 1) {
+      const int lane = std::countr_zero(static_cast<unsigned>(lanes));
+      const uint32_t index = triangleOf[block * QuadBvh::kBlockItems + lane];
+      if (d[lane] < best || (d[lane] == best && index < bestTriangle)) {
+        best = d[lane];
+        bestTriangle = index;
+      }
     }
     return best;
   });
@@ -56,16 +60,20 @@ bool MeshBvh::nearest(const Ray& ray, double tMin, double& t, uint32_t& triangle
 }
 
 int MeshBvh::crossings(const Ray& ray, double tMin, double tMax, bool atMostOne) const {
-  const ShearedRay sheared(ray);
-  const Corners* const corners = corners_.data();
+  const ShearedRay4 sheared(ShearedRay{ray});
+  const TriangleBlock* const blocks = blocks_.data();
   int count = 0;
-  bvh_.traverse<false>(ray, tMin, tMax, [&](uint32_t index) {
-    const Corners& c = corners[index];
-    const double d = triangleDistance(sheared, c.a, c.b, c.c);
-    if (d > tMin && d < tMax) {
-      ++count;
-      if (atMostOne) return -1.0;  // stops the traversal
+  bvh_.traverseBlocks<false>(ray, tMin, tMax, [&](uint32_t block, uint32_t) {
+    double d[4];
+    const int lanes = blockHits(sheared, blocks[block], tMin, tMax, false, d);
+    if (atMostOne) {
+      if (lanes == 0) return tMax;
+      count = 1;
+      return -1.0;  // stops the traversal
     }
+    // No branch on a coin toss; and no std::popcount, a library call in the baseline build.
+    const int pairs = lanes - ((lanes >> 1) & 5);
+    count += (pairs & 3) + (pairs >> 2);
     return tMax;
   });
   return count;

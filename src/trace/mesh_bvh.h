@@ -17,6 +17,7 @@
 #include "trace/bounds.h"
 #include "trace/quad_bvh.h"
 #include "trace/triangle.h"
+#include "trace/triangle_block.h"
 #include "trace/triangle_mesh.h"
 
 namespace prt {
@@ -26,10 +27,10 @@ class MeshBvh {
   explicit MeshBvh(std::shared_ptr<const TriangleMesh> mesh);
 
   const Bounds& bounds() const { return bounds_; }
-  size_t triangleCount() const { return corners_.size(); }
+  size_t triangleCount() const { return mesh_->triangles.size(); }
   // Memory held for tracing (tree and triangle corners), the mesh itself not counted.
   size_t bytes() const {
-    return bvh_.bytes() + corners_.capacity() * sizeof(Corners) +
+    return bvh_.bytes() + blocks_.capacity() * sizeof(TriangleBlock) +
            triangleOf_.capacity() * sizeof(uint32_t);
   }
 
@@ -47,13 +48,11 @@ class MeshBvh {
   Vec3 normal(const Ray& ray, uint32_t triangle) const;
 
  private:
-  struct Corners {
-    double a[3], b[3], c[3];  // x, y, z each, for the test's permuted indexing
-  };
   std::shared_ptr<const TriangleMesh> mesh_;
-  // Per triangle in the tree's order (the order a ray's traversal meets them in, near ones
-  // close in memory), its corners and its index in the mesh.
-  std::vector<Corners> corners_;
+  // The tree's leaves: blocks of up to four triangles tested at once, in the order the tree
+  // lays them out (near ones close in memory), and the index in the mesh of the triangle in
+  // each lane (~0u for an unused lane, whose corners are NaN).
+  std::vector<TriangleBlock> blocks_;
   std::vector<uint32_t> triangleOf_;
   QuadBvh bvh_;
   Bounds bounds_;

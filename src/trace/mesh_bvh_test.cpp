@@ -179,5 +179,49 @@ TEST(MeshBvhTest, CoincidentTrianglesBuildAShallowTree) {
   EXPECT_EQ(bvh.crossings({{0.2, 0.2, 1}, {0, 0, -1}}, 0, 2), 5000);
 }
 
+// Meshes of a few triangles (one block, or a root node of a few blocks) answer as every
+// triangle tried in turn does: the nearest crossing and the count of crossings.
+TEST(MeshBvhTest, SmallMeshesMatchEveryTriangleTriedInTurn) {
+  int hits = 0;
+  for (int count = 1; count <= 9; ++count) {
+    const auto soup = randomSoup(count, static_cast<uint64_t>(40 + count));
+    const MeshBvh mesh(soup);
+    EXPECT_EQ(mesh.triangleCount(), static_cast<size_t>(count));
+    Rng rng(static_cast<uint64_t>(count));
+    for (int i = 0; i < 300; ++i) {
+      Ray ray = randomRay(rng);
+      const auto& aim = soup->triangles[static_cast<size_t>(i % count)];
+      ray.direction = normalize(soup->vertices[aim[i % 3]] * 0.5 +
+                                soup->vertices[aim[(i + 1) % 3]] * 0.5 - ray.origin);
+      const ShearedRay sheared(ray);
+      double expected = 1e30;
+      uint32_t expectedTriangle = ~0u;
+      int crossed = 0;
+      for (uint32_t k = 0; k < soup->triangles.size(); ++k) {
+        const auto& t = soup->triangles[k];
+        const TriangleHit h = triangleHit(sheared, soup->vertices[t[0]], soup->vertices[t[1]],
+                                          soup->vertices[t[2]]);
+        if (!h.hit || !(h.t > 0)) continue;
+        if (h.t < 1e30) ++crossed;
+        if (h.t < expected) {
+          expected = h.t;
+          expectedTriangle = k;
+        }
+      }
+      double t = 1e30;
+      uint32_t triangle = ~0u;
+      ASSERT_EQ(mesh.nearest(ray, 0, t, triangle), expectedTriangle != ~0u);
+      if (expectedTriangle != ~0u) {
+        ++hits;
+        EXPECT_EQ(t, expected);
+        EXPECT_EQ(triangle, expectedTriangle);
+      }
+      EXPECT_EQ(mesh.crossings(ray, 0, 1e30), crossed);
+      EXPECT_EQ(mesh.crossings(ray, 0, 1e30, true), crossed > 0 ? 1 : 0);
+    }
+  }
+  EXPECT_GT(hits, 1000);  // the rays aim at edges' midpoints, half of them just inside
+}
+
 }  // namespace
 }  // namespace prt

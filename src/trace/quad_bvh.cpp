@@ -18,7 +18,7 @@ constexpr int kSahDepth = 30;
 // (walls, pedestals), and cheap at this size (cubic in the count).
 constexpr uint32_t kClusterItems = 48;
 
-// The binary tree the four-way one is collapsed from.
+// The binary tree the eight-way one is collapsed from.
 class BinaryTree {
  public:
   struct Node {
@@ -26,21 +26,34 @@ class BinaryTree {
     uint32_t child[2] = {0, 0};  // kItem set: an item; otherwise a node
   };
 
-  BinaryTree(const std::vector<Bounds>& bounds, BvhBuild how)
-      : bounds_(bounds), items_(bounds.size()) {
+  // Leaves of up to maxLeaf items (1 for the careful build).
+  BinaryTree(const std::vector<Bounds>& bounds, BvhBuild how, uint32_t maxLeaf)
+      : bounds_(bounds), items_(bounds.size()), maxLeaf_(maxLeaf) {
     std::iota(items_.begin(), items_.end(), 0u);
     Bounds box;
     if (how == BvhBuild::binned) {
       centres_.reserve(bounds.size());
       for (const Bounds& b : bounds) centres_.push_back(b.lo + b.hi);
       nodes.reserve(bounds.size());
-      binned(0, static_cast<uint32_t>(items_.size()), 1, box);
+      root = binned(0, static_cast<uint32_t>(items_.size()), 1, box);
     } else {
-      build(0, static_cast<uint32_t>(items_.size()), 1, box);
+      root = build(0, static_cast<uint32_t>(items_.size()), 1, box);
     }
   }
 
+  // A leaf's reference: the items items()[begin, begin + count).
+  static uint32_t leaf(uint32_t begin, uint32_t count) {
+    return kItem | begin << 2 | (count - 1);
+  }
+  // What testing n items costs, in tests: blocks of maxLeaf items cost one test each, so a
+  // split that fills them is preferred.
+  double leafCost(uint32_t n) const { return static_cast<double>((n + maxLeaf_ - 1) / maxLeaf_); }
+  static uint32_t leafBegin(uint32_t ref) { return (ref & ~kItem) >> 2; }
+  static uint32_t leafCount(uint32_t ref) { return (ref & 3) + 1; }
+  const std::vector<uint32_t>& items() const { return items_; }
+
   std::vector<Node> nodes;
+  uint32_t root = 0;  // the root's reference: a leaf when all the items fit in one
   int depth = 0;
 
  private:
@@ -53,13 +66,14 @@ class BinaryTree {
   const std::vector<Bounds>& bounds_;
   std::vector<uint32_t> items_;
   std::vector<Vec3> centres_;  // twice each box's centre (lo + hi), for the binned build
+  uint32_t maxLeaf_;
 };
 
 uint32_t BinaryTree::build(uint32_t begin, uint32_t end, int level, Bounds& box) {
   const uint32_t count = end - begin;
   if (count == 1) {
     box = bounds_[items_[begin]];
-    return items_[begin] | kItem;
+    return leaf(begin, 1);
   }
   if (count <= kClusterItems) return cluster(begin, end, level, box);
   depth = std::max(depth, level);
@@ -118,13 +132,13 @@ uint32_t BinaryTree::cluster(uint32_t begin, uint32_t end, int level, Bounds& bo
   struct Cluster {
     Bounds box;
     int left = -1, right = -1;  // merged clusters; -1 for an item
-    uint32_t item = 0;
+    uint32_t place = 0;  // of an item, in items_
   };
   std::vector<Cluster> all;
   std::vector<int> open;  // clusters not yet merged
   for (uint32_t i = begin; i < end; ++i) {
     open.push_back(static_cast<int>(all.size()));
-    all.push_back({bounds_[items_[i]], -1, -1, items_[i]});
+    all.push_back({bounds_[items_[i]], -1, -1, i});
   }
   while (open.size() > 1) {
     double best = std::numeric_limits<double>::infinity();
@@ -152,7 +166,7 @@ uint32_t BinaryTree::cluster(uint32_t begin, uint32_t end, int level, Bounds& bo
   }
   // Emit parents before children, as the top-down build does.
   auto emit = [&](auto&& self, int c, int at) -> uint32_t {
-    if (all[c].left < 0) return all[c].item | kItem;
+    if (all[c].left < 0) return leaf(all[c].place, 1);
     depth = std::max(depth, at);
     const auto index = static_cast<uint32_t>(nodes.size());
     nodes.emplace_back();
@@ -167,9 +181,10 @@ uint32_t BinaryTree::cluster(uint32_t begin, uint32_t end, int level, Bounds& bo
 
 uint32_t BinaryTree::binned(uint32_t begin, uint32_t end, int level, Bounds& box) {
   const uint32_t count = end - begin;
-  if (count == 1) {
-    box = bounds_[items_[begin]];
-    return items_[begin] | kItem;
+  if (count <= maxLeaf_) {
+    box = Bounds{};
+    for (uint32_t i = begin; i < end; ++i) box.extend(bounds_[items_[i]]);
+    return leaf(begin, count);
   }
   depth = std::max(depth, level);
   Bounds centres;
@@ -222,7 +237,8 @@ uint32_t BinaryTree::binned(uint32_t begin, uint32_t end, int level, Bounds& box
         left.extend(bins[axis][b - 1]);
         n += counts[axis][b - 1];
         if (n == 0 || rightCount[b] == 0) continue;
-        const double cost = n * left.surfaceArea() + rightCount[b] * rightArea[b];
+        const double cost =
+            leafCost(n) * left.surfaceArea() + leafCost(rightCount[b]) * rightArea[b];
         if (cost < bestCost) {
           bestCost = cost;
           bestAxis = axis;
@@ -258,35 +274,55 @@ uint32_t BinaryTree::binned(uint32_t begin, uint32_t end, int level, Bounds& box
 
 }  // namespace
 
-QuadBvh::QuadBvh(const std::vector<Bounds>& bounds, BvhBuild build) {
+QuadBvh::QuadBvh(const std::vector<Bounds>& bounds, BvhBuild how) { build(bounds, how, nullptr); }
+
+QuadBvh::QuadBvh(const std::vector<Bounds>& bounds, std::vector<uint32_t>& blockItems) {
+  build(bounds, BvhBuild::binned, &blockItems);
+}
+
+void QuadBvh::build(const std::vector<Bounds>& bounds, BvhBuild how,
+                    std::vector<uint32_t>* blocks) {
+  if (blocks != nullptr) blocks->clear();
   if (bounds.empty()) return;
-  PRT_CHECK(bounds.size() < kItem);
+  // Item and block indices take 29 bits of a reference, and the largest would make kEmpty.
+  PRT_CHECK(bounds.size() < (1u << 29) - 1);
   double maxCoordinate = 0;
   for (const Bounds& b : bounds) maxCoordinate = std::max(maxCoordinate, b.largestMagnitude());
   maxCoordinate_ = floatAbove(maxCoordinate);
-  if (bounds.size() == 1) {  // a root node with the item in one lane, the others empty
-    nodes_.emplace_back();
-    nodes_[0].boxes.set(0, bounds[0]);
-    nodes_[0].child[0] = kItem;
-    depth_ = 1;
-    return;
-  }
-  const BinaryTree tree(bounds, build);
+  const BinaryTree tree(bounds, how, blocks != nullptr ? kBlockItems : 1);
   PRT_CHECK(tree.depth <= kMaxDepth);
-  depth_ = tree.depth;
+  depth_ = std::max(tree.depth, 1);
   nodes_.reserve(tree.nodes.size() / 2 + 1);
 
-  // Collapse: a four-way node takes the place of a binary node and its descendants down to
-  // four children, opening the child of largest area first (the likeliest to be entered).
+  // A binary leaf becomes an item's reference, or the next block's (its items stored).
+  auto leafRef = [&](uint32_t ref) {
+    const uint32_t begin = BinaryTree::leafBegin(ref), count = BinaryTree::leafCount(ref);
+    if (blocks == nullptr) return kItem | tree.items()[begin] << 2;
+    const auto block = static_cast<uint32_t>(blocks->size() / kBlockItems);
+    for (uint32_t lane = 0; lane < kBlockItems; ++lane) {
+      blocks->push_back(lane < count ? tree.items()[begin + lane] : ~0u);
+    }
+    return kItem | block << 2 | (count - 1);
+  };
+  if (tree.root & kItem) {  // one leaf: a root node with it in one lane, the others empty
+    Bounds box;
+    for (const Bounds& b : bounds) box.extend(b);
+    nodes_.emplace_back();
+    nodes_[0].set(0, box, leafRef(tree.root));
+    return;
+  }
+
+  // Collapse: a kWidth-way node takes the place of a binary node and its descendants down to
+  // kWidth children, opening the child of largest area first (the likeliest to be entered).
   struct Child {
     Bounds box;
     uint32_t ref;
   };
   auto collapse = [&](auto&& self, uint32_t binary) -> uint32_t {
     const auto& b = tree.nodes[binary];
-    Child children[4] = {{b.box[0], b.child[0]}, {b.box[1], b.child[1]}, {}, {}};
+    Child children[kWidth] = {{b.box[0], b.child[0]}, {b.box[1], b.child[1]}};
     int size = 2;
-    while (size < 4) {
+    while (size < kWidth) {
       int open = -1;
       for (int i = 0; i < size; ++i) {
         if (!(children[i].ref & kItem) &&
@@ -302,44 +338,15 @@ QuadBvh::QuadBvh(const std::vector<Bounds>& bounds, BvhBuild build) {
     const auto index = static_cast<uint32_t>(nodes_.size());
     nodes_.emplace_back();
     for (int lane = 0; lane < size; ++lane) {
-      const uint32_t ref =
-          (children[lane].ref & kItem) ? children[lane].ref : self(self, children[lane].ref);
-      nodes_[index].boxes.set(lane, children[lane].box);
-      nodes_[index].child[lane] = ref;
+      const uint32_t ref = (children[lane].ref & kItem) ? leafRef(children[lane].ref)
+                                                        : self(self, children[lane].ref);
+      nodes_[index].set(lane, children[lane].box, ref);
     }
     return index;
   };
-  collapse(collapse, 0);
-  nodes_.shrink_to_fit();  // a four-way node takes one to three binary ones
-}
-
-std::vector<uint32_t> QuadBvh::itemOrder() const {
-  std::vector<uint32_t> order;
-  if (nodes_.empty()) return order;
-  std::vector<uint32_t> stack{0};
-  while (!stack.empty()) {
-    const Node& n = nodes_[stack.back()];
-    stack.pop_back();
-    for (int lane = 3; lane >= 0; --lane) {  // pushed last to first: popped first to last
-      const uint32_t c = n.child[lane];
-      if (c == kEmpty) continue;
-      if (c & kItem) continue;
-      stack.push_back(c);
-    }
-    for (int lane = 0; lane < 4; ++lane) {
-      const uint32_t c = n.child[lane];
-      if (c != kEmpty && (c & kItem)) order.push_back(c & ~kItem);
-    }
-  }
-  return order;
-}
-
-void QuadBvh::renameItems(const std::vector<uint32_t>& newIndex) {
-  for (Node& n : nodes_) {
-    for (uint32_t& c : n.child) {
-      if (c != kEmpty && (c & kItem)) c = newIndex[c & ~kItem] | kItem;
-    }
-  }
+  collapse(collapse, tree.root);
+  nodes_.shrink_to_fit();  // a node takes one to kWidth - 1 binary ones
+  if (blocks != nullptr) blocks->shrink_to_fit();
 }
 
 }  // namespace prt

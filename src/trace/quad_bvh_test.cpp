@@ -145,5 +145,57 @@ TEST(QuadBvhTest, EmptyAndSingle) {
   EXPECT_EQ(visits, 1);
 }
 
+// A tree of blocks holds every item once, in blocks of one to four used lanes (used first),
+// and visits every block holding an item whose box is hit, each once.
+TEST(QuadBvhTest, BlocksHoldEveryItemOnceAndAreVisitedWhenHit) {
+  for (int count : {1, 2, 3, 4, 5, 9, 40, 300, 3000}) {
+    const std::vector<Bounds> boxes = randomBoxes(count, static_cast<uint64_t>(count) + 100);
+    std::vector<uint32_t> items;
+    const QuadBvh bvh(boxes, items);
+    ASSERT_EQ(items.size() % QuadBvh::kBlockItems, 0u);
+    std::vector<int> seen(boxes.size(), 0);
+    std::vector<uint32_t> blockOf(boxes.size());
+    std::vector<uint32_t> used(items.size() / QuadBvh::kBlockItems, 0);
+    for (size_t k = 0; k < items.size(); ++k) {
+      const uint32_t block = static_cast<uint32_t>(k / QuadBvh::kBlockItems);
+      if (items[k] == ~0u) continue;
+      ASSERT_LT(items[k], boxes.size());
+      EXPECT_EQ(used[block], k % QuadBvh::kBlockItems) << "used lanes come first";
+      ++used[block];
+      ++seen[items[k]];
+      blockOf[items[k]] = block;
+    }
+    for (uint32_t n : used) EXPECT_GT(n, 0u);
+    for (int n : seen) EXPECT_EQ(n, 1);
+    Rng rng(9);
+    for (int i = 0; i < 300; ++i) {
+      const Ray ray = randomRay(rng);
+      const RayQuery q(ray);
+      const double tMax = rng.uniform() < 0.5 ? 1e30 : rng.uniform() * 20;
+      for (const bool ordered : {false, true}) {
+        std::vector<uint32_t> visited;
+        auto record = [&](uint32_t block, uint32_t lanes) {
+          EXPECT_EQ(lanes, used[block]);
+          visited.push_back(block);
+          return tMax;
+        };
+        if (ordered) {
+          bvh.traverseBlocks<true>(ray, 0, tMax, record);
+        } else {
+          bvh.traverseBlocks<false>(ray, 0, tMax, record);
+        }
+        std::sort(visited.begin(), visited.end());
+        EXPECT_TRUE(std::adjacent_find(visited.begin(), visited.end()) == visited.end());
+        for (uint32_t item = 0; item < boxes.size(); ++item) {
+          if (hitsBounds(boxes[item], q, 0, tMax)) {
+            EXPECT_TRUE(std::binary_search(visited.begin(), visited.end(), blockOf[item]))
+                << count << " items, ray " << i << ", item " << item;
+          }
+        }
+      }
+    }
+  }
+}
+
 }  // namespace
 }  // namespace prt
