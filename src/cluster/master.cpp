@@ -62,10 +62,14 @@ void Master::apply(const Decisions& decisions, Outbox& out) {
     } else if (std::holds_alternative<QueryQueues>(d)) {
       if (queryOpen_) continue;
       queryOpen_ = true;
+      // Only the workers the strategy knows of: a joiner still measuring its speed index
+      // would answer once measured, holding the round up that long, and its length is not
+      // passed on anyway (strategyQueueLengths).
       for (int w = 0; w < workerCount(); ++w) {
-        answered_[static_cast<size_t>(w)] = !isLive(w);
+        const bool ask = isLive(w) && w < strategyWorkers_;
+        answered_[static_cast<size_t>(w)] = !ask;
         queueLengths_[static_cast<size_t>(w)] = 0;
-        if (isLive(w)) out.push_back({w, QueryQueueMsg{}});
+        if (ask) out.push_back({w, QueryQueueMsg{}});
       }
     } else if (const auto* t = std::get_if<Transfer>(&d)) {
       // A transfer from or to a lost worker is moot: its tasks come back through

@@ -252,6 +252,35 @@ TEST(MasterTest, AJoinerGetsTheSceneThenTasksAndOneAfterTheEndIsStopped) {
   EXPECT_TRUE(std::holds_alternative<StopMsg>(late[0].message));
 }
 
+// A joiner still measuring its speed index is unknown to the strategy: a diffusion round does
+// not ask it for its queue (it would answer only once measured, holding the round up that long).
+TEST(MasterTest, ADiffusionRoundDoesNotWaitForAJoinerStillMeasuring) {
+  Master master(makeStrategy("hybrid", {}), 2, 100, SceneMsg{"s", 1, 1}, nullptr);
+  master.start(0);
+  master.onMessage(0, SpeedIndexMsg{0.1}, 0.1);
+  master.onMessage(1, SpeedIndexMsg{0.1}, 0.1);  // scatter: 50 pixels each
+  master.onWorkerJoined(2, 0.5);                  // measuring from now on
+  master.onMessage(0, ResultsMsg{TaskSet::range(0, 50), {}}, 1.0);
+  ASSERT_FALSE(master.ledger().holdsWork(0));
+  const Outbox query = master.onMessage(0, RequestMsg{}, 1.0);
+  int asked = 0;
+  for (const Envelope& e : query) {
+    if (!std::holds_alternative<QueryQueueMsg>(e.message)) continue;
+    EXPECT_NE(e.to, 2) << "the joiner was asked for its queue before the strategy knew of it";
+    ++asked;
+  }
+  EXPECT_EQ(asked, 2);
+  master.onMessage(0, QueueLengthMsg{0}, 1.1);
+  const Outbox moves = master.onMessage(1, QueueLengthMsg{50}, 1.1);
+  bool transfer = false;
+  for (const Envelope& e : moves) {
+    if (const auto* t = std::get_if<TransferOrderMsg>(&e.message)) {
+      transfer = e.to == 1 && t->to == 0;
+    }
+  }
+  EXPECT_TRUE(transfer) << "the round waited for the joiner";
+}
+
 TEST(MasterTest, EveryWorkerLostIsAFailureNotAHang) {
   Master master(makeStrategy("scatter", {}), 2, 10, SceneMsg{}, nullptr);
   master.start(0);
