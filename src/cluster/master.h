@@ -85,6 +85,7 @@ class Master {
   void answerQueryIfComplete(Outbox& out);
   void endgameCopy(int worker, Outbox& out);
   void introduceJoiners(Outbox& out);
+  void returnToStrategy(int worker, const TaskSet& tasks, Outbox& out);
   std::vector<uint64_t> strategyQueueLengths() const;
 
   std::unique_ptr<Strategy> strategy_;
@@ -99,6 +100,8 @@ class Master {
   int speedIndicesMissing_;
   bool started_ = false;  // strategy started (all speed indices in)
   int strategyWorkers_ = 0;  // workers the strategy knows of: 0 .. strategyWorkers_-1
+  TaskSet orphans_;          // lost workers' tasks waiting for a joiner (returnToStrategy)
+  int orphanOf_ = -1;        // the last worker lost with tasks among them
   bool stopped_ = false;  // StopMsg sent
 
   bool queryOpen_ = false;

@@ -197,6 +197,50 @@ TEST_P(MasterWorkerTest, ArrivalsAndLossesTogether) {
   }
 }
 
+// The last starting worker is lost while a joiner is still measuring its speed index: the
+// joiner is the only live worker, and once measured it gets everything left, for every
+// strategy (the image is finished, not left waiting for ever).
+TEST_P(MasterWorkerTest, AJoinerTakesOverWhenTheLastStartingWorkerIsLostBeforeItIsMeasured) {
+  const uint64_t pixels = 60;
+  Master master(makeStrategy(GetParam(), StrategyOptions{8, 2}), 1, pixels, SceneMsg{"s", 1, 1},
+                nullptr);
+  master.start(0);
+  master.onMessage(0, SpeedIndexMsg{0.1}, 0.1);
+  Worker joiner(1, WorkerOptions{7});
+  std::deque<Envelope> toJoiner;
+  auto post = [&](const Outbox& out) {
+    for (const Envelope& e : out) {
+      if (e.to == 1) toJoiner.push_back(e);
+    }
+  };
+  post(master.onWorkerJoined(1, 0.5));
+  post(master.onWorkerLost(0, 0.6, "gone"));
+  ASSERT_FALSE(master.failed());
+  bool measured = false;
+  double now = 1;
+  for (int step = 0; step < 10000 && !master.complete(); ++step, now += 0.01) {
+    if (!toJoiner.empty()) {
+      const Envelope e = toJoiner.front();
+      toJoiner.pop_front();
+      for (const Envelope& reply : joiner.onMessage(kMaster, e.message)) {
+        post(master.onMessage(1, reply.message, now));
+      }
+    } else if (joiner.needsSetup()) {
+      ASSERT_FALSE(measured);
+      measured = true;
+      for (const Envelope& reply : joiner.setupDone(0.1)) post(master.onMessage(1, reply.message, now));
+    } else if (joiner.hasWork()) {
+      const TaskSet batch = joiner.nextBatch();
+      for (const Envelope& reply : joiner.batchDone(batch, std::vector<float>(3 * batch.size()), 0.01)) {
+        post(master.onMessage(1, reply.message, now));
+      }
+    } else {
+      break;  // nothing in flight and nothing to do: stuck
+    }
+  }
+  EXPECT_TRUE(master.complete()) << master.doneCount() << " of " << pixels << " pixels done";
+}
+
 INSTANTIATE_TEST_SUITE_P(AllStrategies, MasterWorkerTest, ::testing::ValuesIn(strategyNames()));
 
 TEST(MasterTest, WorkerLostBeforeTheStartGetsNothing) {
