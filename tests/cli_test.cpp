@@ -155,6 +155,21 @@ TEST_F(CliTest, ParallelInputErrors) {
   r = run("join " + path("port"));
   EXPECT_EQ(r.exitCode, 2) << "prt join outside mpirun: " << r.output;
   EXPECT_NE(r.output.find("mpirun"), std::string::npos) << r.output;
+  // prt join's own flags are checked first, and its --slowdown-at is T:K (no worker field):
+  // an error speaks of what was typed.
+  for (const char* bad : {"5", "1:2:3", "-1:2", "1:0.5", "1:2,", "x:2"}) {
+    r = run("join " + path("port") + " --slowdown-at " + bad);
+    EXPECT_EQ(r.exitCode, 2) << bad << ": " << r.output;
+    EXPECT_NE(r.output.find("--slowdown-at"), std::string::npos) << bad << ": " << r.output;
+    EXPECT_NE(r.output.find("T:K"), std::string::npos) << bad << ": " << r.output;
+    EXPECT_EQ(r.output.find("0:"), std::string::npos) << bad << ": " << r.output;
+    EXPECT_EQ(r.output.find("W:T"), std::string::npos) << bad << ": " << r.output;
+  }
+  for (const char* bad : {"--slowdown 0", "--slowdown 2000", "--connect-timeout 0"}) {
+    r = run("join " + path("port") + " " + bad);
+    EXPECT_EQ(r.exitCode, 2) << bad << ": " << r.output;
+    EXPECT_EQ(r.output.find("runs under mpirun"), std::string::npos) << bad << ": " << r.output;
+  }
   r = run("render " + scene + out + " --workers 2 --min-chunk 0");
   EXPECT_EQ(r.exitCode, 2) << r.output;
   r = run("render " + scene + out + " --workers 2 --chunk 1.5");

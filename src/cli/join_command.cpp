@@ -20,38 +20,54 @@ struct JoinOptions {
   double connectTimeoutSeconds = 30;
 };
 
-int runJoin(const JoinOptions& o) {
-  if (!launchedByMpirun()) {
-    throw InputError("prt join runs under mpirun: mpirun -np K --ompi-server file:URI prt join " +
-                     o.portFile);
+// --slowdown-at T:K,... of a joiner: read item by item as worker 0's W:T:K, an error given in
+// the T:K the user typed.
+std::vector<SpeedChange> parseJoinerSlowdownAt(const std::string& text) {
+  std::vector<SpeedChange> out;
+  for (size_t start = 0;;) {
+    const size_t comma = text.find(',', start);
+    const std::string item = text.substr(start, comma - start);
+    try {
+      if (item.find(':') == std::string::npos || item.find(':') != item.rfind(':')) {
+        throw InputError("not two numbers");
+      }
+      out.push_back(parseSpeedChanges("0:" + item, "--slowdown-at", 1, 1).front());
+    } catch (const InputError&) {
+      throw InputError("--slowdown-at: '" + item +
+                       "' is not T:K with a time T >= 0 seconds and a slowdown K >= 1 "
+                       "(expected T:K,T:K,...)");
+    }
+    if (comma == std::string::npos) break;
+    start = comma + 1;
   }
+  return out;
+}
+
+int runJoin(const JoinOptions& o) {
+  // The flags first: a mistake is reported as such, under mpirun or not.
   if (!(o.slowdown >= 1 && o.slowdown <= 1000)) {
     throw InputError("--slowdown must be in [1, 1000]");
   }
   if (!(o.connectTimeoutSeconds >= 1 && o.connectTimeoutSeconds <= 86400)) {
     throw InputError("--connect-timeout must be between 1 and 86400 seconds");
   }
+  const std::vector<SpeedChange> slowdownChanges =
+      o.slowdownAt.empty() ? std::vector<SpeedChange>{} : parseJoinerSlowdownAt(o.slowdownAt);
+  if (!launchedByMpirun()) {
+    throw InputError("prt join runs under mpirun: mpirun -np K --ompi-server file:URI prt join " +
+                     o.portFile);
+  }
 #ifdef PRT_HAVE_MPI
   JoinRequest request;
   request.portFile = o.portFile;
   request.threads = o.threads;
   request.slowdown = o.slowdown;
-  if (!o.slowdownAt.empty()) {
-    // T:K items, read as worker 0's W:T:K.
-    std::string items;
-    for (size_t start = 0; start <= o.slowdownAt.size();) {
-      const size_t comma = o.slowdownAt.find(',', start);
-      const std::string item = o.slowdownAt.substr(start, comma - start);
-      items += (items.empty() ? "0:" : ",0:") + item;
-      if (comma == std::string::npos) break;
-      start = comma + 1;
-    }
-    request.slowdownChanges = parseSpeedChanges(items, "--slowdown-at", 1, 1);
-  }
+  request.slowdownChanges = slowdownChanges;
   request.connectTimeoutSeconds = o.connectTimeoutSeconds;
   MpiSession session(true);  // the connect watchdog may end the job from its own thread
   return session.exitCode(runJoinedWorkers(session, request));
 #else
+  (void)slowdownChanges;
   throw InputError("this prt was built without MPI; rebuild with Open MPI installed");
 #endif
 }

@@ -55,17 +55,21 @@ void Master::apply(const Decisions& decisions, Outbox& out) {
         // Tasks for a worker lost before the strategy learnt of it (at the start): they are
         // that worker's leftovers, and go back to the strategy for the live ones.
         ledger_.reissuedLate(a->tasks);
-        apply(strategy_->onWorkerLost(a->worker, a->tasks), out);
+        returnToStrategy(a->worker, a->tasks, out);
         continue;
       }
       assign(a->worker, map_.toPixels(a->tasks), out);
     } else if (std::holds_alternative<QueryQueues>(d)) {
       if (queryOpen_) continue;
       queryOpen_ = true;
+      // Only the workers the strategy knows of: a joiner still measuring its speed index
+      // would answer once measured, holding the round up that long, and its length is not
+      // passed on anyway (strategyQueueLengths).
       for (int w = 0; w < workerCount(); ++w) {
-        answered_[static_cast<size_t>(w)] = !isLive(w);
+        const bool ask = isLive(w) && w < strategyWorkers_;
+        answered_[static_cast<size_t>(w)] = !ask;
         queueLengths_[static_cast<size_t>(w)] = 0;
-        if (isLive(w)) out.push_back({w, QueryQueueMsg{}});
+        if (ask) out.push_back({w, QueryQueueMsg{}});
       }
     } else if (const auto* t = std::get_if<Transfer>(&d)) {
       // A transfer from or to a lost worker is moot: its tasks come back through
@@ -180,6 +184,22 @@ Outbox Master::onWorkerJoined(int worker, double now) {
   return out;
 }
 
+// A lost worker's unfinished `tasks` (in the strategy's numbering) go back to the strategy for
+// its live workers. When it has none left, the live workers being joiners it has not heard
+// of yet, it is told of the loss alone and the tasks wait for the next joiner it hears of: a
+// strategy with no live worker would drop them, and the image would never be finished.
+void Master::returnToStrategy(int worker, const TaskSet& tasks, Outbox& out) {
+  bool known = false;
+  for (int w = 0; w < strategyWorkers_ && !known; ++w) known = isLive(w);
+  if (known) {
+    apply(strategy_->onWorkerLost(worker, tasks), out);
+    return;
+  }
+  apply(strategy_->onWorkerLost(worker, TaskSet{}), out);
+  orphans_.append(tasks);
+  orphanOf_ = worker;
+}
+
 // Joiners whose speed index is in are introduced to the strategy in index order (a lost one
 // is introduced and lost at once, so the numbering stays whole); each then asks, as a
 // starting worker given nothing does.
@@ -199,6 +219,13 @@ void Master::introduceJoiners(Outbox& out) {
       continue;
     }
     apply(strategy_->onWorkerJoined(w, speed), out);
+    if (!orphans_.empty()) {
+      // The tasks of the workers lost while only joiners were left: the strategy has a live
+      // worker again.
+      const TaskSet tasks = std::move(orphans_);
+      orphans_ = TaskSet{};
+      apply(strategy_->onWorkerLost(orphanOf_, tasks), out);
+    }
     if (isLive(w) && !ledger_.holdsWork(w) && !complete()) apply(strategy_->onRequest(w), out);
   }
 }
@@ -306,7 +333,7 @@ Outbox Master::onMessage(int from, const Message& message, double now) {
         if (!ledger_.isDone(t)) left.append(TaskRun{t, 1, 1});
       });
       ledger_.reissuedLate(left);
-      if (!stopped_) apply(strategy_->onWorkerLost(n->to, map_.toTasks(left)), out);
+      if (!stopped_) returnToStrategy(n->to, map_.toTasks(left), out);
     }
   }
   // HeartbeatMsg: the lease is renewed above; nothing else to do.
@@ -331,7 +358,7 @@ void Master::lose(int worker, double now, const std::string& reason, Outbox& out
   if (worker >= strategyWorkers_) {
     introduceJoiners(out);  // a joiner the strategy had not heard of: it held nothing
   } else if (!stopped_ && ledger_.liveCount() > 0) {
-    apply(strategy_->onWorkerLost(worker, map_.toTasks(unfinished)), out);
+    returnToStrategy(worker, map_.toTasks(unfinished), out);
   }
   answerQueryIfComplete(out);
 }

@@ -86,6 +86,7 @@ class Master {
   void endgameCopy(int worker, Outbox& out);
   void introduceJoiners(Outbox& out);
   bool plausible(const Message& message) const;
+  void returnToStrategy(int worker, const TaskSet& tasks, Outbox& out);
   std::vector<uint64_t> strategyQueueLengths() const;
 
   std::unique_ptr<Strategy> strategy_;
@@ -100,6 +101,8 @@ class Master {
   int speedIndicesMissing_;
   bool started_ = false;  // strategy started (all speed indices in)
   int strategyWorkers_ = 0;  // workers the strategy knows of: 0 .. strategyWorkers_-1
+  TaskSet orphans_;          // lost workers' tasks waiting for a joiner (returnToStrategy)
+  int orphanOf_ = -1;        // the last worker lost with tasks among them
   bool stopped_ = false;  // StopMsg sent
 
   bool queryOpen_ = false;

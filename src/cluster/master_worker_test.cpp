@@ -198,6 +198,50 @@ TEST_P(MasterWorkerTest, ArrivalsAndLossesTogether) {
   }
 }
 
+// The last starting worker is lost while a joiner is still measuring its speed index: the
+// joiner is the only live worker, and once measured it gets everything left, for every
+// strategy (the image is finished, not left waiting for ever).
+TEST_P(MasterWorkerTest, AJoinerTakesOverWhenTheLastStartingWorkerIsLostBeforeItIsMeasured) {
+  const uint64_t pixels = 60;
+  Master master(makeStrategy(GetParam(), StrategyOptions{8, 2}), 1, pixels, SceneMsg{"s", 1, 1},
+                nullptr);
+  master.start(0);
+  master.onMessage(0, SpeedIndexMsg{0.1}, 0.1);
+  Worker joiner(1, WorkerOptions{7});
+  std::deque<Envelope> toJoiner;
+  auto post = [&](const Outbox& out) {
+    for (const Envelope& e : out) {
+      if (e.to == 1) toJoiner.push_back(e);
+    }
+  };
+  post(master.onWorkerJoined(1, 0.5));
+  post(master.onWorkerLost(0, 0.6, "gone"));
+  ASSERT_FALSE(master.failed());
+  bool measured = false;
+  double now = 1;
+  for (int step = 0; step < 10000 && !master.complete(); ++step, now += 0.01) {
+    if (!toJoiner.empty()) {
+      const Envelope e = toJoiner.front();
+      toJoiner.pop_front();
+      for (const Envelope& reply : joiner.onMessage(kMaster, e.message)) {
+        post(master.onMessage(1, reply.message, now));
+      }
+    } else if (joiner.needsSetup()) {
+      ASSERT_FALSE(measured);
+      measured = true;
+      for (const Envelope& reply : joiner.setupDone(0.1)) post(master.onMessage(1, reply.message, now));
+    } else if (joiner.hasWork()) {
+      const TaskSet batch = joiner.nextBatch();
+      for (const Envelope& reply : joiner.batchDone(batch, std::vector<float>(3 * batch.size()), 0.01)) {
+        post(master.onMessage(1, reply.message, now));
+      }
+    } else {
+      break;  // nothing in flight and nothing to do: stuck
+    }
+  }
+  EXPECT_TRUE(master.complete()) << master.doneCount() << " of " << pixels << " pixels done";
+}
+
 INSTANTIATE_TEST_SUITE_P(AllStrategies, MasterWorkerTest, ::testing::ValuesIn(strategyNames()));
 
 TEST(MasterTest, WorkerLostBeforeTheStartGetsNothing) {
@@ -278,6 +322,35 @@ TEST(MasterTest, AMessageThatCannotBeTrueLosesItsWorkerAndCrashesNothing) {
     ASSERT_EQ(run->ledger().losses().size(), 1u);
     EXPECT_NE(run->ledger().losses()[0].reason.find("invalid"), std::string::npos);
   }
+}
+
+// A joiner still measuring its speed index is unknown to the strategy: a diffusion round does
+// not ask it for its queue (it would answer only once measured, holding the round up that long).
+TEST(MasterTest, ADiffusionRoundDoesNotWaitForAJoinerStillMeasuring) {
+  Master master(makeStrategy("hybrid", {}), 2, 100, SceneMsg{"s", 1, 1}, nullptr);
+  master.start(0);
+  master.onMessage(0, SpeedIndexMsg{0.1}, 0.1);
+  master.onMessage(1, SpeedIndexMsg{0.1}, 0.1);  // scatter: 50 pixels each
+  master.onWorkerJoined(2, 0.5);                  // measuring from now on
+  master.onMessage(0, ResultsMsg{TaskSet::range(0, 50), {}}, 1.0);
+  ASSERT_FALSE(master.ledger().holdsWork(0));
+  const Outbox query = master.onMessage(0, RequestMsg{}, 1.0);
+  int asked = 0;
+  for (const Envelope& e : query) {
+    if (!std::holds_alternative<QueryQueueMsg>(e.message)) continue;
+    EXPECT_NE(e.to, 2) << "the joiner was asked for its queue before the strategy knew of it";
+    ++asked;
+  }
+  EXPECT_EQ(asked, 2);
+  master.onMessage(0, QueueLengthMsg{0}, 1.1);
+  const Outbox moves = master.onMessage(1, QueueLengthMsg{50}, 1.1);
+  bool transfer = false;
+  for (const Envelope& e : moves) {
+    if (const auto* t = std::get_if<TransferOrderMsg>(&e.message)) {
+      transfer = e.to == 1 && t->to == 0;
+    }
+  }
+  EXPECT_TRUE(transfer) << "the round waited for the joiner";
 }
 
 TEST(MasterTest, EveryWorkerLostIsAFailureNotAHang) {

@@ -73,6 +73,12 @@ ParallelRun runMasterSide(Transport& net, const RunRequest& request, const std::
   MasterLoopResult result = runMasterLoop(net, master, loop);
   if (!result.failure.empty()) {
     std::string message = result.failure;
+    // Workers of --join-at that had not arrived yet: the run does not wait for them.
+    const int due = options.joinerCount() - (master.workerCount() - options.workers);
+    if (master.failed() && due > 0) {
+      message += " (the run does not wait for the " + std::to_string(due) +
+                 (due == 1 ? " worker" : " workers") + " still due to join (--join-at))";
+    }
     if (!options.checkpointPath.empty()) {
       message += "; " + std::to_string(master.doneCount()) + " of " + std::to_string(pixels) +
                  " pixels (" + percent(master.doneCount(), pixels) + ") are saved in '" +

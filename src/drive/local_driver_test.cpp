@@ -196,6 +196,22 @@ TEST(LocalDriverFaultTest, EveryWorkerCrashingFailsInsteadOfHanging) {
   EXPECT_THROW(renderLocal(r), RunFailed);
 }
 
+// Every starting worker lost before the workers due to join arrive: the run fails (it does not
+// wait for them), and the message says so instead of leaving them unmentioned.
+TEST(LocalDriverFaultTest, EveryStartingWorkerLostBeforeTheJoinersSaysTheyWereNotWaitedFor) {
+  LocalRunRequest r = request("self", 1);
+  r.options.joins = {JoinWave{30, 2}};
+  r.options.faults.push_back({0, 0, FaultInjection::Kind::Crash});
+  try {
+    renderLocal(r);
+    FAIL() << "the run cannot finish";
+  } catch (const RunFailed& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("every worker was lost"), std::string::npos) << what;
+    EXPECT_NE(what.find("2 workers still due to join (--join-at)"), std::string::npos) << what;
+  }
+}
+
 TEST(LocalDriverOptionsTest, BadOptionsAreInputErrors) {
   LocalRunRequest r = request("reservoir", 2);
   r.options.slowdowns = {1, 2, 3};

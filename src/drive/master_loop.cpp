@@ -133,14 +133,19 @@ class MasterLoop {
   }
 
   // Every worker got StopMsg with the last results; each live one answers with its summary.
+  // One that joins meanwhile is told to stop at once, and its summary is waited for too.
   void collectSummaries() {
-    const int n = master_.workerCount();
-    std::vector<double> lastHeard(static_cast<size_t>(n), net_.now());
-    std::vector<bool> waiting(static_cast<size_t>(n));
-    for (int w = 0; w < n; ++w) waiting[static_cast<size_t>(w)] = master_.isLive(w);
+    std::vector<double> lastHeard;
+    std::vector<bool> waiting;
+    auto track = [&] {
+      for (int w = static_cast<int>(waiting.size()); w < master_.workerCount(); ++w) {
+        lastHeard.push_back(net_.now());
+        waiting.push_back(master_.isLive(w));
+      }
+    };
+    track();
     auto pending = [&] {
-      for (int w = 0; w < n; ++w) {
-        const auto i = static_cast<size_t>(w);
+      for (size_t i = 0; i < waiting.size(); ++i) {
         if (waiting[i] && !result_.summaries[i] &&
             net_.now() - lastHeard[i] <= options_.leaseSeconds) {
           return true;
@@ -151,10 +156,11 @@ class MasterLoop {
     while (pending()) {
       const Incoming in = net_.poll(net_.now() + 0.05);
       if (in.kind == Incoming::Kind::PeerJoined) {
-        receive(in);  // too late to help: told to stop, its summary is not waited for
+        receive(in);  // too late to help: told to stop
+        track();
         continue;
       }
-      if (!isWorker(in.from) || in.from >= n) continue;  // n: those there at the end
+      if (!isWorker(in.from)) continue;
       const auto i = static_cast<size_t>(in.from);
       if (in.kind == Incoming::Kind::PeerLost) {
         waiting[i] = false;

@@ -184,12 +184,38 @@ void finishMpiMaster(MpiSession& session, const ParallelRun& run) {
   };
   const bool clean = allThere(0, session.workerCount());
   const size_t losses = faults.lostWorkers.size() + faults.missingSummaries.size();
+  auto releaseOf = [](int32_t code) {
+    const auto* p = reinterpret_cast<const uint8_t*>(&code);
+    return Bytes(p, p + sizeof code);
+  };
+  // Every joining job first, on its own terms: all its workers there, it finalizes and is
+  // disconnected below; one that lost a worker is told to exit.
+  const std::vector<MpiLink::JoinedJob> joined = link.joinedJobs();
+  std::vector<bool> joinedClean;
+  for (const MpiLink::JoinedJob& j : joined) {
+    joinedClean.push_back(allThere(j.first, j.count));
+    for (int w = j.first; w < j.first + j.count; ++w) {
+      link.sendTagged(w, kReleaseTag, releaseOf(joinedClean.back() ? kReleaseFinalize : kReleaseExit));
+    }
+  }
+  // A joining job whose workers are all there disconnects; one that lost a worker is left:
+  // disconnecting could wait for the lost one.
+  auto disconnectJoined = [&] {
+    for (size_t i = 0; i < joined.size(); ++i) {
+      MPI_Comm inter = joined[i].comm;
+      if (joinedClean[i]) MPI_Comm_disconnect(&inter);
+    }
+  };
   if (!clean && !session.recoveryEnabled()) {
     // Without --enable-recovery the job is still alive only because the lost ranks hang, and a
     // rank that exits without MPI_Finalize would end it in error: end them all, and the job,
-    // with MPI_Abort's code 0. The live workers wait for it (see runMpiWorker); joiners of
-    // other jobs hear that the master is gone.
+    // with MPI_Abort's code 0. The live workers wait for it (see runMpiWorker); the joining
+    // jobs, released above, end on their own.
     session.comm().skipFinalize = true;
+    if (!joined.empty()) {
+      link.flush(2.0);
+      disconnectJoined();
+    }
     std::fprintf(stderr,
                  "prt: %zu worker(s) were lost; the image and report are complete. Ending "
                  "the job with MPI_Abort(0) so that mpirun does not wait for them\n",
@@ -199,10 +225,6 @@ void finishMpiMaster(MpiSession& session, const ParallelRun& run) {
     MPI_Abort(session.comm().comm, 0);
     std::_Exit(0);
   }
-  auto releaseOf = [](int32_t code) {
-    const auto* p = reinterpret_cast<const uint8_t*>(&code);
-    return Bytes(p, p + sizeof code);
-  };
   // The first live worker of this job also wakes the port listener on its way out.
   int waker = -1;
   if (comm.acceptor) {
@@ -216,22 +238,9 @@ void finishMpiMaster(MpiSession& session, const ParallelRun& run) {
                                  comm.acceptor->portName().end());
     link.sendTagged(w, kReleaseTag, std::move(bytes));
   }
-  const std::vector<MpiLink::JoinedJob> joined = link.joinedJobs();
-  std::vector<bool> joinedClean;
-  for (const MpiLink::JoinedJob& j : joined) {
-    joinedClean.push_back(allThere(j.first, j.count));
-    for (int w = j.first; w < j.first + j.count; ++w) {
-      link.sendTagged(w, kReleaseTag, releaseOf(joinedClean.back() ? kReleaseFinalize : kReleaseExit));
-    }
-  }
   link.flush(losses == 0 ? 30.0 : 2.0);
   if (comm.acceptor) comm.acceptor->finishStop(waker >= 0 ? 10.0 : 0.0);
-  // A joining job whose workers are all there disconnects; one that lost a worker is left:
-  // disconnecting could wait for the lost one.
-  for (size_t i = 0; i < joined.size(); ++i) {
-    MPI_Comm inter = joined[i].comm;
-    if (joinedClean[i]) MPI_Comm_disconnect(&inter);
-  }
+  disconnectJoined();
   if (clean) {
     if (losses > 0) {
       std::fprintf(stderr,

@@ -263,15 +263,18 @@ class Simulation {
 void validateSimulationOptions(const SimulationOptions& o, uint64_t pixelCount) {
   const auto workers = o.speeds.size();
   if (workers < 1) throw InputError("--workers must be at least 1");
-  if (workers > pixelCount) {
-    throw InputError("more workers (" + std::to_string(workers) + ") than pixels (" +
-                     std::to_string(pixelCount) + ")");
-  }
   validateWorkerSpeeds(o.speeds, static_cast<int>(workers));
   const int joiners = joinerCount(o.joins);
   if (static_cast<size_t>(joiners) >= workers) {
     throw InputError("--join-at adds " + std::to_string(joiners) + " workers but the run has " +
                      std::to_string(workers) + " in all: at least one must start");
+  }
+  // The starting workers, as the thread driver counts them: joiners that find nothing left
+  // simply get nothing.
+  const size_t starting = workers - static_cast<size_t>(joiners);
+  if (starting > pixelCount) {
+    throw InputError("more workers (" + std::to_string(starting) + ") than pixels (" +
+                     std::to_string(pixelCount) + ")");
   }
   if (o.batchPixels < 1) throw InputError("--batch must be at least 1");
   if (!(o.batchOverheadSeconds >= 0) || !std::isfinite(o.batchOverheadSeconds)) {

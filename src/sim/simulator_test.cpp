@@ -215,6 +215,16 @@ TEST(SimulatorTest, AnOracleSpeedIndexCostsNoSetupAndGivesTheTrueIndices) {
                    2 * run.report.workers[0].speedIndexSeconds);
 }
 
+// More joiners than pixels, as the thread driver takes them: only the starting workers must
+// not outnumber the pixels; the joiners that find nothing left get nothing, for every strategy.
+TEST_P(SimulatorStrategyTest, MoreJoinersThanPixels) {
+  const CostMap map = uniformCostMap(4, 3, 1.0);
+  SimulationOptions o = optionsFor(GetParam(), std::vector<double>(21, 1.0));
+  o.joins = {JoinWave{0.0, 10}, JoinWave{0.5, 10}};
+  const SimulatedRun run = simulate(map, o);
+  EXPECT_EQ(renderedPixels(run), map.pixelCount());
+}
+
 TEST(SimulatorTest, JoinersMustLeaveAStartingWorker) {
   const CostMap map = uniformCostMap(8, 8, 1.0);
   SimulationOptions o = optionsFor("self", {1, 1});

@@ -14,6 +14,10 @@
 #             killed joiner among the lost workers
 #   stop      as kill, with SIGSTOP instead: the same, and the joining mpirun still returns
 #             (its live rank's watchdog ends it once the grace period has passed)
+#   starthang 1 starting worker that hangs once it has rendered (no --enable-recovery: the
+#             master's job ends with MPI_Abort(0)), 2 joiners that finish the image: the
+#             serial image, and the joining job too exits 0 at once (it is released before
+#             the abort, not left to find the master gone)
 #   stale     prt join against the port file of a render that has ended: a clear error within
 #             its --connect-timeout, never a hang
 #   missing   prt join of a file that does not exist: exit 2 and a message naming it
@@ -77,7 +81,7 @@ start_master() {
     --strategy "$strategy" --speed-index slowdown --slowdown $slowdown -o mpi.pfm \
     --accept-workers "$work/port" \
     --worker-timeout 3 --report report.json --checkpoint ck --checkpoint-every 0.1 \
-    >master.out 2>master.err &
+    ${master_extra:-} >master.out 2>master.err &
   master=$!
   for i in $(seq 1 200); do [ -s port ] && break; sleep 0.05; done
   [ -s port ] || fail "the master wrote no port file"
@@ -171,6 +175,29 @@ else:
     assert lost == [1], lost  # its own times were lost with it, its unfinished pixels reissued
     assert r["reissued_tasks"] > 0, r["reissued_tasks"]
     assert w[2]["pixels"] > 0, w[2]
+PY
+    ;;
+  starthang)
+    # shellcheck disable=SC2086
+    "$prt" render "$scene" $size -q -o serial.pfm
+    master_extra="--inject-fault 0:40:hang"
+    start_master
+    # shellcheck disable=SC2086
+    timeout -k 5 100 "$mpiexec" $mca $uri -np 2 "$prt" join "$work/port" \
+      --slowdown $join_slowdown >join.out 2>join.err &
+    joiner=$!
+    wait_for "$master" 100
+    [ "$status" -eq 0 ] || fail "the render exited with $status"
+    ended=$(date +%s)
+    wait_for "$joiner" 60
+    [ "$status" -eq 0 ] || fail "prt join exited with $status after the render ended"
+    [ $(($(date +%s) - ended)) -lt 10 ] || fail "prt join took $(($(date +%s) - ended)) s to end after the render"
+    cmp serial.pfm mpi.pfm || fail "the image differs from the serial one"
+    python3 - <<'PY'
+import json
+r = json.load(open("report.json"))
+assert [l["worker"] for l in r["lost_workers"]] == [0], r["lost_workers"]
+assert [j["worker"] for j in r["joined_workers"]] == [1, 2], r["joined_workers"]
 PY
     ;;
   stale)
