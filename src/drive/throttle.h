@@ -40,6 +40,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <functional>
 #include <thread>
 #include <utility>
 #include <vector>
@@ -76,13 +77,15 @@ class Throttle {
   double slowdownAt(double seconds) const { return valueAt(changes_, slowdown_, seconds); }
 
   // Runs fn, then waits until it has lasted k times the CPU time it used (less the lag the
-  // previous stretch left, if this one follows it at once).
+  // previous stretch left, if this one follows it at once). `tick`, if given, is called at
+  // least every kTickSeconds of the wait (a worker's heartbeats: a machine emulated a
+  // thousand times slower waits seconds after each batch, longer than a short lease).
   template <typename F>
-  Stretch measure(F&& fn) {
+  Stretch measure(F&& fn, const std::function<void()>& tick = {}) {
     const auto start = std::chrono::steady_clock::now();
     const double cpuStart = threadCpuSeconds();
     fn();
-    return finish(start, threadCpuSeconds() - cpuStart, 1);
+    return finish(start, threadCpuSeconds() - cpuStart, 1, tick);
   }
 
   // A stretch computed by `threads` threads at once: fn returns the CPU seconds all of them
@@ -95,14 +98,17 @@ class Throttle {
     return finish(start, cpu, std::max(1, threads));
   }
 
-  // measure(fn), returning the wall seconds.
+  // measure(fn, tick), returning the wall seconds.
   template <typename F>
-  double run(F&& fn) {
-    return measure(std::forward<F>(fn)).wallSeconds;
+  double run(F&& fn, const std::function<void()>& tick = {}) {
+    return measure(std::forward<F>(fn), tick).wallSeconds;
   }
 
+  static constexpr double kTickSeconds = 0.05;
+
  private:
-  Stretch finish(std::chrono::steady_clock::time_point start, double totalCpu, int threads) {
+  Stretch finish(std::chrono::steady_clock::time_point start, double totalCpu, int threads,
+                 const std::function<void()>& tick = {}) {
     const double cpu = totalCpu / threads;
     // Before the first stretch lastEnd_ is the clock's epoch: never back to back.
     const bool backToBack =
@@ -110,8 +116,18 @@ class Throttle {
     const double lag = backToBack ? lagSeconds_ : 0.0;
     const double k = slowdownAt(std::chrono::duration<double>(start - epoch_).count());
     if (k > 1.0) {
-      std::this_thread::sleep_for(
-          std::chrono::duration<double>(throttlePauseSeconds(k, cpu, secondsSince(start), lag)));
+      const double pause = throttlePauseSeconds(k, cpu, secondsSince(start), lag);
+      const auto until = std::chrono::steady_clock::now() +
+                         std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                             std::chrono::duration<double>(pause));
+      for (;;) {
+        const double left =
+            std::chrono::duration<double>(until - std::chrono::steady_clock::now()).count();
+        if (left <= 0) break;
+        std::this_thread::sleep_for(
+            std::chrono::duration<double>(tick ? std::min(left, kTickSeconds) : left));
+        if (tick) tick();
+      }
     }
     lastEnd_ = std::chrono::steady_clock::now();
     const double wall = std::chrono::duration<double>(lastEnd_ - start).count();

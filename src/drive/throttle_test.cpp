@@ -2,6 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <vector>
+
+#include "core/cpu_time.h"
+
 namespace prt {
 namespace {
 
@@ -63,6 +67,29 @@ TEST(Throttle, RunReturnsTheStretchedWallTime) {
     cpu = cpuNow() - c0;
   });
   EXPECT_GE(wall, 3.0 * cpu * 0.999);
+}
+
+TEST(Throttle, ALongWaitTicksAtLeastEveryTickInterval) {
+  // A machine emulated 500 times slower: some CPU time makes a wait of many tick intervals,
+  // and the tick (a worker's heartbeat) comes all through it, never more than an interval
+  // (and scheduling slack) apart.
+  Throttle throttle(500.0);
+  volatile double sink = 0;
+  std::vector<std::chrono::steady_clock::time_point> ticks;
+  const auto start = std::chrono::steady_clock::now();
+  const double wall = throttle.run(
+      [&] {  // a millisecond of CPU time: half a second of waiting
+        const double c0 = threadCpuSeconds();
+        while (threadCpuSeconds() - c0 < 1e-3) sink = sink + 1e-9;
+      },
+      [&] { ticks.push_back(std::chrono::steady_clock::now()); });
+  ASSERT_GT(wall, 8 * Throttle::kTickSeconds) << "too little CPU time to test with";
+  ASSERT_GE(ticks.size(), 4u);
+  auto previous = start;
+  for (const auto& t : ticks) {
+    EXPECT_LT(std::chrono::duration<double>(t - previous).count(), 4 * Throttle::kTickSeconds);
+    previous = t;
+  }
 }
 
 TEST(Throttle, EmulatedTimeIsKTimesTheCpuTimeAndWallTimeWithoutSlowdown) {

@@ -88,16 +88,19 @@ std::vector<float> WorkerEngine::render(const TaskSet& batch, double& seconds, u
     // Pieces of a few pixels, `between` after each: a heartbeat is never more than a few
     // pixels late, and no thread hand-off costs a batch its wake-up latency.
     constexpr uint64_t kPiece = 16;
-    seconds = throttle_.run([&] {
-      colors.reserve(batch.size());
-      TaskSet left = batch;
-      std::vector<Color> piece;
-      while (!left.empty()) {
-        rays += renderTasks(*renderer_, left.takeFront(kPiece), 1, piece);
-        colors.insert(colors.end(), piece.begin(), piece.end());
-        if (!left.empty()) between();
-      }
-    });
+    // The throttle's wait after the batch calls `between` too.
+    seconds = throttle_.run(
+        [&] {
+          colors.reserve(batch.size());
+          TaskSet left = batch;
+          std::vector<Color> piece;
+          while (!left.empty()) {
+            rays += renderTasks(*renderer_, left.takeFront(kPiece), 1, piece);
+            colors.insert(colors.end(), piece.begin(), piece.end());
+            if (!left.empty()) between();
+          }
+        },
+        between);
   } else if (threads_ == 1) {
     seconds = throttle_.run([&] { rays += renderTasks(*renderer_, batch, 1, colors); });
   } else {
