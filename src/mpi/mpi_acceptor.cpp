@@ -20,46 +20,76 @@ MpiAcceptor::MpiAcceptor(const std::string& portFile) : file_(portFile) {
         -1);
   char name[MPI_MAX_PORT_NAME] = {};
   check(MPI_Open_port(MPI_INFO_NULL, name), "MPI_Open_port", -1);
-  port_ = name;
+  state_->port = name;
   try {
-    writeFileAtomically(file_, port_ + "\n");
+    writeFileAtomically(file_, state_->port + "\n");
   } catch (...) {
     MPI_Close_port(name);
     throw;
   }
-  thread_ = std::thread([this] { acceptLoop(); });
+  thread_ = std::thread([state = state_] { acceptLoop(state); });
 }
+
+namespace {
+
+constexpr int kWakeTag = 7;
+
+// After the stop began: whether `inter` is the wake-up call (a one-process job that sends
+// kWakeTag at once) rather than a late joiner.
+bool isWakeUp(MPI_Comm inter) {
+  int remote = 0;
+  if (MPI_Comm_remote_size(inter, &remote) != MPI_SUCCESS || remote != 1) return false;
+  const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(2);
+  while (std::chrono::steady_clock::now() < until) {
+    int found = 0;
+    MPI_Status status;
+    if (MPI_Iprobe(0, kWakeTag, inter, &found, &status) != MPI_SUCCESS) return false;
+    if (found) {
+      int32_t word = 0;
+      MPI_Recv(&word, 1, MPI_INT32_T, 0, kWakeTag, inter, MPI_STATUS_IGNORE);
+      return true;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  return false;
+}
+
+}  // namespace
 
 MpiAcceptor::~MpiAcceptor() {
   finishStop(0);
 }
 
-void MpiAcceptor::acceptLoop() {
-  std::vector<char> port(port_.begin(), port_.end());
+void MpiAcceptor::acceptLoop(const std::shared_ptr<State>& state) {
+  std::vector<char> port(state->port.begin(), state->port.end());
   port.push_back('\0');
   for (;;) {
     MPI_Comm inter = MPI_COMM_NULL;
     const int code = MPI_Comm_accept(port.data(), MPI_INFO_NULL, 0, MPI_COMM_SELF, &inter);
-    if (stopping_) {
-      if (code == MPI_SUCCESS) MPI_Comm_disconnect(&inter);  // the wake-up call
-      break;
-    }
     if (code != MPI_SUCCESS) {
+      if (state->stopping) break;
       // A joiner that failed half-way; the port stays open for the next.
       std::fprintf(stderr, "prt: warning: a worker could not join (MPI_Comm_accept failed)\n");
       continue;
     }
-    std::lock_guard<std::mutex> lock(mutex_);
-    accepted_.push_back(inter);
+    MPI_Comm_set_errhandler(inter, MPI_ERRORS_RETURN);
+    if (state->stopping) {
+      const bool wake = isWakeUp(inter);
+      MPI_Comm_disconnect(&inter);  // the wake-up call, or a joiner too late to help
+      if (wake) break;
+      continue;
+    }
+    std::lock_guard<std::mutex> lock(state->mutex);
+    state->accepted.push_back(inter);
   }
-  finished_ = true;
+  state->finished = true;
 }
 
 std::optional<MPI_Comm> MpiAcceptor::take() {
-  std::lock_guard<std::mutex> lock(mutex_);
-  if (accepted_.empty()) return std::nullopt;
-  MPI_Comm c = accepted_.front();
-  accepted_.pop_front();
+  std::lock_guard<std::mutex> lock(state_->mutex);
+  if (state_->accepted.empty()) return std::nullopt;
+  MPI_Comm c = state_->accepted.front();
+  state_->accepted.pop_front();
   return c;
 }
 
@@ -67,7 +97,7 @@ void MpiAcceptor::beginStop() {
   if (begun_) return;
   begun_ = true;
   std::remove(file_.c_str());
-  stopping_ = true;
+  state_->stopping = true;
 }
 
 void MpiAcceptor::finishStop(double graceSeconds) {
@@ -77,12 +107,12 @@ void MpiAcceptor::finishStop(double graceSeconds) {
   const auto until = std::chrono::steady_clock::now() +
                      std::chrono::duration_cast<std::chrono::steady_clock::duration>(
                          std::chrono::duration<double>(graceSeconds));
-  while (!finished_ && std::chrono::steady_clock::now() < until) {
+  while (!state_->finished && std::chrono::steady_clock::now() < until) {
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
   }
-  if (finished_) {
+  if (state_->finished) {
     thread_.join();
-    std::vector<char> port(port_.begin(), port_.end());
+    std::vector<char> port(state_->port.begin(), state_->port.end());
     port.push_back('\0');
     MPI_Close_port(port.data());
   } else {
@@ -96,6 +126,8 @@ void wakeAcceptor(const std::string& port) {
   name.push_back('\0');
   MPI_Comm c = MPI_COMM_NULL;
   if (MPI_Comm_connect(name.data(), MPI_INFO_NULL, 0, MPI_COMM_SELF, &c) == MPI_SUCCESS) {
+    const int32_t word = 1;
+    MPI_Send(&word, 1, MPI_INT32_T, 0, kWakeTag, c);
     MPI_Comm_disconnect(&c);
   }
 }

@@ -7,18 +7,22 @@
 // of its own, so the master's loop never blocks: each accepted intercommunicator waits in a
 // queue until the loop takes it (take()).
 //
-// Ending (stop()): MPI_Comm_accept cannot be cancelled, and a process that connects to its own
-// port deadlocks in Open MPI 4.1, so another process must connect once to wake the thread: the
+// Ending: MPI_Comm_accept cannot be cancelled, and a process that connects to its own port
+// deadlocks in Open MPI 4.1, so another process must connect once to wake the thread: the
 // master hands the port name to a live worker with its release (MpiLink::wakePort), which
-// connects and disconnects at once. stop() waits up to `graceSeconds` for the thread; when no
-// worker could wake it (all lost) the thread is left behind blocked, which Open MPI 4.1
-// tolerates at MPI_Finalize. The port file is removed first, so no new joiner reads it.
+// connects, says it is the wake-up call (a message with kWakeTag) and disconnects. A late
+// joiner that read the port file just before it was removed may connect first: without that
+// message it is turned away and the thread waits on for the real call. finishStop() waits up
+// to `graceSeconds` for the thread; when no worker could wake it (all lost) the thread is left
+// behind blocked, which Open MPI 4.1 tolerates at MPI_Finalize; what it uses is shared with
+// it, so it outlives this object. The port file is removed first, so no new joiner reads it.
 // Needs MPI_THREAD_MULTIPLE.
 
 #include <mpi.h>
 
 #include <atomic>
 #include <deque>
+#include <memory>
 #include <mutex>
 #include <optional>
 #include <string>
@@ -35,7 +39,7 @@ class MpiAcceptor {
   MpiAcceptor(const MpiAcceptor&) = delete;
   MpiAcceptor& operator=(const MpiAcceptor&) = delete;
 
-  const std::string& portName() const { return port_; }
+  const std::string& portName() const { return state_->port; }
   // The next accepted intercommunicator, if one is waiting.
   std::optional<MPI_Comm> take();
   // Stops accepting in two steps: beginStop() removes the port file and makes the next
@@ -46,20 +50,25 @@ class MpiAcceptor {
   void finishStop(double graceSeconds);
 
  private:
-  void acceptLoop();
+  // What the accepting thread uses: shared, so a thread left blocked outlives the acceptor.
+  struct State {
+    std::string port;
+    std::mutex mutex;
+    std::deque<MPI_Comm> accepted;
+    std::atomic<bool> stopping{false};
+    std::atomic<bool> finished{false};
+  };
+  static void acceptLoop(const std::shared_ptr<State>& state);
 
   std::string file_;
-  std::string port_;
-  std::mutex mutex_;
-  std::deque<MPI_Comm> accepted_;
-  std::atomic<bool> stopping_{false};
-  std::atomic<bool> finished_{false};
+  std::shared_ptr<State> state_ = std::make_shared<State>();
   std::thread thread_;
   bool begun_ = false;
   bool stopped_ = false;
 };
 
-// A worker's half of waking the acceptor: connects to `port` once and disconnects.
+// A worker's half of waking the acceptor: connects to `port` once, says it is the wake-up
+// call, and disconnects.
 void wakeAcceptor(const std::string& port);
 
 }  // namespace prt::mpi_detail

@@ -85,6 +85,7 @@ start_master() {
   master=$!
   for i in $(seq 1 200); do [ -s port ] && break; sleep 0.05; done
   [ -s port ] || fail "the master wrote no port file"
+  cp port stale-port  # for the stale mode: the port of a render that will have ended
   # Some pixels first, so the joiners arrive mid-render.
   for i in $(seq 1 200); do
     [ -f ck ] && [ "$(stat -c %s ck)" -gt 200 ] && break
@@ -201,8 +202,8 @@ assert [j["worker"] for j in r["joined_workers"]] == [1, 2], r["joined_workers"]
 PY
     ;;
   stale)
+    slowdown=20  # no joiner comes: a short render
     start_master
-    cp port stale-port
     wait_for "$master" 100
     [ "$status" -eq 0 ] || fail "the render exited with $status"
     started=$(date +%s)
