@@ -2,7 +2,7 @@
 # End-to-end tests of workers joining a running MPI render: a render started by one mpirun with
 # --accept-workers, and a second, independent mpirun of `prt join`, both pointed at the same
 # ompi-server (Open MPI needs one to connect two jobs).
-#   join_test.sh PRT MPIEXEC SCENE WORKDIR MODE [STRATEGY]
+#   join_test.sh PRT MPIEXEC SCENE WORKDIR MODE [STRATEGY [FLAG]]  (FLAG: one more for the render)
 # MODE
 # The workers report their slowdown as their speed index (the oracle): a Towers of Hanoi run,
 # slowed down as much as the rendering, would take most of the test.
@@ -23,7 +23,7 @@
 #   missing   prt join of a file that does not exist: exit 2 and a message naming it
 set -eu
 
-prt=$1 mpiexec=$2 scene=$3 work=$4 mode=$5 strategy=${6:-adaptive}
+prt=$1 mpiexec=$2 scene=$3 work=$4 mode=$5 strategy=${6:-adaptive} extra=${7:-}
 
 command -v ompi-server >/dev/null 2>&1 || { echo "skipped: no ompi-server"; exit 77; }
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
@@ -78,7 +78,7 @@ wait_for() {
 start_master() {
   # shellcheck disable=SC2086
   timeout -k 5 120 "$mpiexec" $mca $uri -np 2 "$prt" render "$scene" $size -q \
-    --strategy "$strategy" --speed-index slowdown --slowdown $slowdown -o mpi.pfm \
+    --strategy "$strategy" $extra --speed-index slowdown --slowdown $slowdown -o mpi.pfm \
     --accept-workers "$work/port" \
     --worker-timeout 3 --report report.json --checkpoint ck --checkpoint-every 0.1 \
     ${master_extra:-} >master.out 2>master.err &
