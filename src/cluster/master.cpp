@@ -120,13 +120,20 @@ void Master::endgameCopy(int worker, Outbox& out) {
   assign(worker, copy, out);
 }
 
+// The slowest speed index in (0 while none is): what the strategy is told of a worker lost
+// before it measured its own, so that its arithmetic stays finite.
+double Master::slowestSpeedIndex() const {
+  double slowest = 0;
+  for (double s : speedIndices_) slowest = std::max(slowest, s);
+  return slowest;
+}
+
 void Master::startStrategy(Outbox& out) {
   started_ = true;
   // The strategy sees every worker; one lost before the start gets the slowest live speed so
   // its arithmetic stays finite, and is reported lost straight away.
   std::vector<double> speeds = speedIndices_;
-  double slowest = 0;
-  for (double s : speeds) slowest = std::max(slowest, s);
+  const double slowest = slowestSpeedIndex();
   for (int w = 0; w < workerCount(); ++w) {
     if (!isLive(w)) speeds[static_cast<size_t>(w)] = slowest;
   }
@@ -212,8 +219,7 @@ void Master::introduceJoiners(Outbox& out) {
     ++strategyWorkers_;
     if (stopped_) continue;
     if (!isLive(w)) {
-      double slowest = 0;
-      for (double v : speedIndices_) slowest = std::max(slowest, v);
+      const double slowest = slowestSpeedIndex();
       apply(strategy_->onWorkerJoined(w, slowest > 0 ? slowest : 1.0), out);
       apply(strategy_->onWorkerLost(w, TaskSet{}), out);
       continue;
@@ -230,32 +236,16 @@ void Master::introduceJoiners(Outbox& out) {
   }
 }
 
-namespace {
-
-// Every task of `tasks` is below `n` (checked without overflow, whatever the runs say).
-bool within(const TaskSet& tasks, uint64_t n) {
-  for (const TaskRun& r : tasks.runs()) {
-    if (r.count == 0) continue;
-    if (r.first >= n) return false;
-    if (r.count > 1 && (r.stride == 0 || (r.count - 1) > (n - 1 - r.first) / r.stride)) {
-      return false;
-    }
-  }
-  return true;
-}
-
-}  // namespace
-
 // A message that decodes but cannot be true: pixels outside the image, colours that do not
 // match them, a transfer to no worker. Such a worker is lost, as one whose bytes do not decode.
 bool Master::plausible(const Message& message) const {
   if (const auto* r = std::get_if<ResultsMsg>(&message)) {
     const bool coloured = r->rgb.size() == 3 * r->tasks.size();
     // Without a sink (the simulator) results carry no colours; otherwise they must.
-    return within(r->tasks, taskCount()) && (coloured || (!sink_ && r->rgb.empty()));
+    return r->tasks.allBelow(taskCount()) && (coloured || (!sink_ && r->rgb.empty()));
   }
   if (const auto* n = std::get_if<TransferNoticeMsg>(&message)) {
-    return n->to >= 0 && n->to < workerCount() && within(n->tasks, taskCount());
+    return n->to >= 0 && n->to < workerCount() && n->tasks.allBelow(taskCount());
   }
   if (const auto* s = std::get_if<SpeedIndexMsg>(&message)) {
     return std::isfinite(s->seconds) && s->seconds > 0;

@@ -86,6 +86,7 @@ class Master {
   void endgameCopy(int worker, Outbox& out);
   void introduceJoiners(Outbox& out);
   bool plausible(const Message& message) const;
+  double slowestSpeedIndex() const;
   void returnToStrategy(int worker, const TaskSet& tasks, Outbox& out);
   std::vector<uint64_t> strategyQueueLengths() const;
 

@@ -32,10 +32,7 @@ TaskSet readTasks(ByteReader& r) {
     run.stride = r.pod<uint64_t>();
     // No image has 2^40 pixels: larger indices or counts are corruption, and would overflow
     // the task set's arithmetic (its last index, its size).
-    const bool beyond =
-        run.first > kMaxTaskIndex || run.count > kMaxTaskIndex - total ||
-        (run.count > 1 && run.stride > 0 &&
-         run.count - 1 > (kMaxTaskIndex - run.first) / run.stride);
+    const bool beyond = !run.endsBefore(kMaxTaskIndex + 1) || run.count > kMaxTaskIndex - total;
     if (beyond) r.fail("task run beyond 2^40 pixels");
     total += run.count;
     s.append(run);

@@ -71,13 +71,14 @@ std::vector<JoinWave> parseJoinWaves(const std::string& text, const std::string&
     }
     JoinWave w;
     if (!parseNumber(item.substr(0, a), w.atSeconds) || !(w.atSeconds >= 0) ||
-        !(w.atSeconds <= 86400)) {
-      throw bad("has no time in [0, 86400] seconds");
+        !(w.atSeconds <= kMaxJoinSeconds)) {
+      throw bad("has no time in [0, " + std::to_string(static_cast<int>(kMaxJoinSeconds)) +
+                "] seconds");
     }
     double count = 0;
     if (!parseNumber(item.substr(a + 1), count) || count != std::floor(count) || count < 1 ||
-        count > 4096) {
-      throw bad("has no worker count in [1, 4096]");
+        count > kMaxJoinWave) {
+      throw bad("has no worker count in [1, " + std::to_string(kMaxJoinWave) + "]");
     }
     w.count = static_cast<int>(count);
     out.push_back(w);
@@ -87,6 +88,24 @@ std::vector<JoinWave> parseJoinWaves(const std::string& text, const std::string&
   std::stable_sort(out.begin(), out.end(),
                    [](const JoinWave& x, const JoinWave& y) { return x.atSeconds < y.atSeconds; });
   return out;
+}
+
+void validateJoinWaves(const std::vector<JoinWave>& waves, const std::string& flag) {
+  for (size_t i = 0; i < waves.size(); ++i) {
+    const JoinWave& j = waves[i];
+    if (!(j.atSeconds >= 0 && j.atSeconds <= kMaxJoinSeconds) || j.count < 1 ||
+        j.count > kMaxJoinWave) {
+      std::ostringstream wave;
+      wave << j.atSeconds << ':' << j.count;
+      throw InputError(flag + " " + wave.str() +
+                       ": the time must be in [0, " +
+                       std::to_string(static_cast<int>(kMaxJoinSeconds)) +
+                       "] seconds and the count in [1, " + std::to_string(kMaxJoinWave) + "]");
+    }
+    if (i > 0 && j.atSeconds < waves[i - 1].atSeconds) {
+      throw InputError(flag + ": the waves must be in time order");
+    }
+  }
 }
 
 int joinerCount(const std::vector<JoinWave>& waves) {

@@ -31,10 +31,16 @@ struct JoinWave {
   bool operator==(const JoinWave&) const = default;
 };
 
+inline constexpr double kMaxJoinSeconds = 86400;
+inline constexpr int kMaxJoinWave = 4096;
+
 // Parses "T:K,T:K,..." and sorts the waves by time (joiners are numbered in the order they
 // join). Throws InputError (naming `flag` and the item) for a malformed item, T outside
-// [0, 86400] or K outside [1, 4096].
+// [0, kMaxJoinSeconds] or K outside [1, kMaxJoinWave].
 std::vector<JoinWave> parseJoinWaves(const std::string& text, const std::string& flag);
+// Throws InputError (naming `flag`) unless every wave is in those ranges and the waves are in
+// time order, as the drivers number joiners: what parseJoinWaves returns always passes.
+void validateJoinWaves(const std::vector<JoinWave>& waves, const std::string& flag);
 int joinerCount(const std::vector<JoinWave>& waves);
 
 // Worker `worker`'s changes, sorted by time (a later item wins at equal times).

@@ -18,6 +18,13 @@ struct TaskRun {
 
   uint64_t at(uint64_t i) const { return first + i * stride; }
   uint64_t last() const { return at(count - 1); }
+  // Whether every task of the run is below `end`, computed without overflow whatever the
+  // fields hold (a run that came over the network).
+  bool endsBefore(uint64_t end) const {
+    if (count == 0) return true;
+    if (first >= end) return false;
+    return count == 1 || stride == 0 || count - 1 <= (end - 1 - first) / stride;
+  }
   bool operator==(const TaskRun&) const = default;
 };
 
@@ -30,6 +37,13 @@ class TaskSet {
   uint64_t size() const { return size_; }
   bool empty() const { return size_ == 0; }
   const std::vector<TaskRun>& runs() const { return runs_; }
+  // Whether every task is below `end` (TaskRun::endsBefore for each run).
+  bool allBelow(uint64_t end) const {
+    for (const TaskRun& r : runs_) {
+      if (!r.endsBefore(end)) return false;
+    }
+    return true;
+  }
 
   // Appends at the back, merging with the last run when it continues it.
   void append(const TaskRun& run);

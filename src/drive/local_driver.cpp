@@ -1,6 +1,5 @@
 #include "drive/local_driver.h"
 
-#include <algorithm>
 #include <chrono>
 #include <memory>
 #include <thread>
@@ -59,12 +58,9 @@ ParallelRun renderLocal(const RunRequest& request) {
   // master first, as a machine connecting does. It ends early when the run does.
   if (!options.joins.empty()) {
     threads.emplace_back([&net, &options, &failures, n] {
-      std::vector<JoinWave> waves = options.joins;
-      std::stable_sort(waves.begin(), waves.end(),
-                       [](const JoinWave& a, const JoinWave& b) { return a.atSeconds < b.atSeconds; });
       std::vector<std::thread> joiners;
       int next = n;
-      for (const JoinWave& wave : waves) {
+      for (const JoinWave& wave : options.joins) {  // in time order (validated)
         while (!net.isShutDown() && net.now() < wave.atSeconds) {
           std::this_thread::sleep_for(std::chrono::milliseconds(2));
         }

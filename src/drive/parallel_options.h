@@ -39,7 +39,7 @@ struct ParallelOptions {
   double checkpointEverySeconds = 10;  // between periodic checkpoints
   std::string acceptWorkersPath;       // MPI: open a port for `prt join`, its name in this file
   std::vector<JoinWave> joins;         // threads: workers that join mid-render, numbered
-                                       // after the others in wave order (--join-at)
+                                       // after the others, waves in time order (--join-at)
 
   int joinerCount() const { return prt::joinerCount(joins); }
   // Every worker of the run: the starting ones and those that join (per-worker lists such as

@@ -28,12 +28,7 @@ void validateParallelOptions(const ParallelOptions& o, uint64_t pixelCount) {
     throw InputError("more workers (" + std::to_string(o.workers) + ") than pixels (" +
                      std::to_string(pixelCount) + ")");
   }
-  for (const JoinWave& j : o.joins) {
-    if (!(j.atSeconds >= 0 && j.atSeconds <= 86400) || j.count < 1 || j.count > 4096) {
-      throw InputError("--join-at " + formatNumber(j.atSeconds) + ":" + std::to_string(j.count) +
-                       ": the time must be in [0, 86400] seconds and the count in [1, 4096]");
-    }
-  }
+  validateJoinWaves(o.joins, "--join-at");
   const int total = o.totalWorkers();
   const std::string numbered =
       o.joins.empty() ? std::to_string(o.workers) + " workers are numbered 0 to " +

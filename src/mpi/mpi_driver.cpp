@@ -184,10 +184,6 @@ void finishMpiMaster(MpiSession& session, const ParallelRun& run) {
   };
   const bool clean = allThere(0, session.workerCount());
   const size_t losses = faults.lostWorkers.size() + faults.missingSummaries.size();
-  auto releaseOf = [](int32_t code) {
-    const auto* p = reinterpret_cast<const uint8_t*>(&code);
-    return Bytes(p, p + sizeof code);
-  };
   // Every joining job first, on its own terms: all its workers there, it finalizes and is
   // disconnected below; one that lost a worker is told to exit.
   const std::vector<MpiLink::JoinedJob> joined = link.joinedJobs();
@@ -195,7 +191,7 @@ void finishMpiMaster(MpiSession& session, const ParallelRun& run) {
   for (const MpiLink::JoinedJob& j : joined) {
     joinedClean.push_back(allThere(j.first, j.count));
     for (int w = j.first; w < j.first + j.count; ++w) {
-      link.sendTagged(w, kReleaseTag, releaseOf(joinedClean.back() ? kReleaseFinalize : kReleaseExit));
+      link.sendTagged(w, kReleaseTag, releaseMessage(joinedClean.back() ? kReleaseFinalize : kReleaseExit));
     }
   }
   // A joining job whose workers are all there disconnects; one that lost a worker is left:
@@ -233,10 +229,9 @@ void finishMpiMaster(MpiSession& session, const ParallelRun& run) {
     }
   }
   for (int w = 0; w < session.workerCount(); ++w) {
-    Bytes bytes = releaseOf(clean ? kReleaseFinalize : kReleaseExit);
-    if (w == waker) bytes.insert(bytes.end(), comm.acceptor->portName().begin(),
-                                 comm.acceptor->portName().end());
-    link.sendTagged(w, kReleaseTag, std::move(bytes));
+    link.sendTagged(w, kReleaseTag,
+                    releaseMessage(clean ? kReleaseFinalize : kReleaseExit,
+                                   w == waker ? comm.acceptor->portName() : std::string()));
   }
   link.flush(losses == 0 ? 30.0 : 2.0);
   if (comm.acceptor) comm.acceptor->finishStop(waker >= 0 ? 10.0 : 0.0);
@@ -406,8 +401,7 @@ int runJoinedWorkers(MpiSession& session, const JoinRequest& request) {
       session.comm().skipFinalize = true;
       return 1;
     }
-    const auto release =
-        link.release() ? link.release() : link.awaitRelease(link.now() + options.workerTimeoutSeconds + 30);
+    const auto release = link.awaitRelease(link.now() + options.workerTimeoutSeconds + 30);
     if (!release || *release != kReleaseFinalize) {
       // A worker of this job was lost: if it only hangs (stopped, cut off), this job's mpirun
       // would wait for it for ever. As the master does for its own job, each live rank (any

@@ -74,10 +74,9 @@ void MpiSession::releaseWorkers(int exitCode) {
   comm_->released = true;
   try {
     mpi_detail::MpiTransport transport(comm_->comm);
-    const auto code = static_cast<int32_t>(exitCode);
-    const auto* p = reinterpret_cast<const uint8_t*>(&code);
     for (int r = 1; r < size_; ++r) {
-      transport.send(r, mpi_detail::kReleaseTag, Bytes(p, p + sizeof code));
+      transport.send(r, mpi_detail::kReleaseTag,
+                     mpi_detail::releaseMessage(static_cast<int32_t>(exitCode)));
     }
     if (!transport.flush(10.0)) {
       throw std::runtime_error("the workers did not take the release message within 10 s");

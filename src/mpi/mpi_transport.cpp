@@ -17,6 +17,13 @@ void check(int code, const char* call, int rank) {
                  rank);
 }
 
+Bytes releaseMessage(int32_t code, const std::string& wakePort) {
+  Bytes out(sizeof code + wakePort.size());
+  std::memcpy(out.data(), &code, sizeof code);
+  if (!wakePort.empty()) std::memcpy(out.data() + sizeof code, wakePort.data(), wakePort.size());
+  return out;
+}
+
 void pollPause() {
   std::this_thread::sleep_for(std::chrono::milliseconds(1));
 }

@@ -41,6 +41,10 @@ enum ReleaseCode : int32_t {
   // > 0: the master refused the run (bad input): exit with this code
 };
 
+// A release's bytes: the code, then for the worker that must wake the master's port
+// listener, the port's name (MpiLink::poll reads both).
+Bytes releaseMessage(int32_t code, const std::string& wakePort = {});
+
 // A protocol endpoint (worker index, or kMaster = -1) and its rank: rank 0 is the master.
 inline int rankOf(int endpoint) {
   return endpoint + 1;

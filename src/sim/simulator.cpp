@@ -264,6 +264,7 @@ void validateSimulationOptions(const SimulationOptions& o, uint64_t pixelCount) 
   const auto workers = o.speeds.size();
   if (workers < 1) throw InputError("--workers must be at least 1");
   validateWorkerSpeeds(o.speeds, static_cast<int>(workers));
+  validateJoinWaves(o.joins, "--join-at");
   const int joiners = joinerCount(o.joins);
   if (static_cast<size_t>(joiners) >= workers) {
     throw InputError("--join-at adds " + std::to_string(joiners) + " workers but the run has " +

@@ -37,7 +37,7 @@ struct SimulationOptions {
   StrategyOptions strategyOptions;
   std::vector<double> speeds;             // one per worker, those that join included
   std::vector<JoinWave> joins;            // --join-at: the last joinerCount(joins) workers of
-                                          // `speeds` join at these times, in this order
+                                          // `speeds` join at these times (in time order)
   uint64_t batchPixels = 128;             // pixels per returned batch, as in a real run
   double batchOverheadSeconds = 0;        // full-speed seconds a batch costs besides its
                                           // pixels (the per-chunk overhead h of the
