@@ -6,6 +6,7 @@ set -euo pipefail
 packages=(
   build-essential cmake ninja-build pkg-config git
   libcli11-dev nlohmann-json3-dev libpng-dev libtbb-dev libassimp-dev
+  libtinygltf-dev libstb-dev  # glTF 2.0 model files, and texture images
   libgtest-dev libgmock-dev libbenchmark-dev
   openmpi-bin libopenmpi-dev
   povray

@@ -10,8 +10,18 @@
 
 namespace prt::cli {
 
+// The file a command renders, and how to read it: the scene (or model) argument and the
+// flags every command that reads one shares.
+struct SceneSource {
+  std::string path;
+  std::string camera;   // --camera: an imported file's camera, by name or index
+  bool strict = false;  // --strict: a model file's missing texture is an error
+};
+// Adds the scene argument (required), --camera and --strict to `cmd`.
+void addSceneSource(CLI::App& cmd, SceneSource& source);
+
 // loadSceneFile, printing what it skipped (Scene::warnings) to stderr.
-Scene loadScene(const std::string& path);
+Scene loadScene(const SceneSource& source);
 
 using Action = std::function<int()>;  // returns the process exit code
 

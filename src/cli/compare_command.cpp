@@ -30,7 +30,7 @@ namespace {
 namespace fs = std::filesystem;
 
 struct CompareOptions {
-  std::string scenePath;
+  SceneSource scene;
   std::optional<int> width;
   std::optional<int> height;
   std::optional<int> spp;
@@ -50,7 +50,7 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
 }
 
 int runCompare(const CompareOptions& o) {
-  Scene scene = loadScene(o.scenePath);
+  Scene scene = loadScene(o.scene);
   // As `prt render` resolves them: the scene's sampling, then --case, then --spp and --drt.
   RenderSettings settings{scene.sampling.samplesPerPixel, scene.sampling.drtRate};
   if (!o.testCase.empty()) settings = *paperTestCase(o.testCase);
@@ -63,7 +63,7 @@ int runCompare(const CompareOptions& o) {
     throw InputError("image too large for a comparison: " + std::to_string(scene.image.width) +
                      "x" + std::to_string(scene.image.height) + " exceeds 2^26 pixels");
   }
-  const std::string stem = fs::path(o.scenePath).stem().string();
+  const std::string stem = fs::path(o.scene.path).stem().string();
   if (!o.outDir.empty()) {
     std::error_code error;
     fs::create_directories(o.outDir, error);
@@ -156,7 +156,7 @@ Action addCompareCommand(CLI::App& app) {
       "Render a .scene file with PRT and with POV-Ray 3.7 and report how much the images "
       "differ (PSNR, share of differing pixels). Exit code 0 when the comparison ran, 1 when "
       "POV-Ray is missing or fails, 2 on bad input");
-  cmd->add_option("scene", o->scenePath, "Scene file (.scene)")->required();
+  addSceneSource(*cmd, o->scene);
   cmd->add_option("--width", o->width, "Image width in pixels (default: the scene's)")
       ->check(CLI::Range(1, 32768));
   cmd->add_option("--height", o->height, "Image height in pixels (default: the scene's)")

@@ -19,7 +19,7 @@ namespace prt::cli {
 namespace {
 
 struct ExportOptions {
-  std::string scenePath;
+  SceneSource scene;
   std::string format = "pov";
   std::string output;
   std::optional<int> width;
@@ -32,7 +32,7 @@ struct ExportOptions {
 };
 
 int runExport(const ExportOptions& o) {
-  Scene scene = loadScene(o.scenePath);
+  Scene scene = loadScene(o.scene);
   // As `prt render` resolves them: the scene's sampling, then --case, then --spp and --drt.
   RenderSettings settings{scene.sampling.samplesPerPixel, scene.sampling.drtRate};
   if (!o.testCase.empty()) settings = *paperTestCase(o.testCase);
@@ -61,7 +61,7 @@ Action addExportCommand(CLI::App& app) {
       "export",
       "Translate a .scene file for another renderer: POV-Ray 3.7 (the image POV-Ray renders "
       "from it matches PRT's except where docs/povray-mapping.md says otherwise)");
-  cmd->add_option("scene", o->scenePath, "Scene file (.scene)")->required();
+  addSceneSource(*cmd, o->scene);
   cmd->add_option("--format", o->format, "Output format")
       ->check(CLI::IsMember({"pov"}))
       ->capture_default_str();

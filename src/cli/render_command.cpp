@@ -128,14 +128,14 @@ int runRender(const RenderOptions& o) {
   // --- MPI hook: only rank 0 reads the scene file; the workers get the scene from it.
   if (mpi) {
     return renderParallelMpi(o, [&] {
-      Scene scene = loadScene(o.scenePath);
+      Scene scene = loadScene(o.scene);
       const RenderSettings settings = resolveSettings(o, scene);
       checkOutputs(o, scene);
       return std::pair{std::move(scene), settings};
     });
   }
   // --- end MPI hook
-  Scene scene = loadScene(o.scenePath);
+  Scene scene = loadScene(o.scene);
   const RenderSettings settings = resolveSettings(o, scene);
   const bool parallel = o.workers || o.strategyFlags.strategy;
   for (const bool parallelOnly : {!o.reportPath.empty(), !o.tracePath.empty(),
@@ -163,7 +163,7 @@ Action addRenderCommand(CLI::App& app, const std::string& commandLine) {
       "render",
       "Render a .scene file to an image, serially or in parallel (--workers N, or under "
       "mpirun with rank 0 as the master)");
-  cmd->add_option("scene", o->scenePath, "Scene file (.scene)")->required();
+  addSceneSource(*cmd, o->scene);
   cmd->add_option("-o,--output", o->output,
                   "Output image; the extension picks the format (.png, .ppm, .pfm). "
                   "Default: the scene's output file")

@@ -5,12 +5,13 @@
 #include <string>
 #include <vector>
 
+#include "cli/commands.h"
 #include "cli/strategy_flags.h"
 
 namespace prt::cli {
 
 struct RenderOptions {
-  std::string scenePath;
+  SceneSource scene;  // the scene or model file and how to read it
   std::string output;         // empty: the scene's own output file
   std::optional<int> width;   // overrides the scene's image width, pixels
   std::optional<int> height;  // overrides the scene's image height, pixels

@@ -110,7 +110,7 @@ void writeRenderReportAndPage(const RenderOptions& o, const Scene& scene, const 
   if (o.reportPath.empty() && o.htmlPath.empty()) return;
   RunContext context;
   context.commandLine = o.commandLine;
-  context.scene = o.scenePath;
+  context.scene = o.scene.path;
   context.machine = describeMachine();
   context.dateUtc = utcNow();
   context.parameters =

@@ -3,7 +3,7 @@
 #include <iterator>
 #include <stdexcept>
 
-#include "cluster/byte_codec.h"
+#include "core/byte_codec.h"
 
 namespace prt {
 namespace {
@@ -53,8 +53,8 @@ Bytes encode(const Message& message) {
           w.raw(m.sceneText.data(), m.sceneText.size());
           w.pod(static_cast<int32_t>(m.samplesPerPixel));
           w.pod(static_cast<int32_t>(m.drtRate));
-          w.pod(static_cast<uint64_t>(m.meshes.size()));
-          w.raw(m.meshes.data(), m.meshes.size());
+          w.pod(static_cast<uint64_t>(m.assets.size()));
+          w.raw(m.assets.data(), m.assets.size());
         } else if constexpr (std::is_same_v<M, SpeedIndexMsg>) {
           w.pod(m.seconds);
         } else if constexpr (std::is_same_v<M, TasksMsg>) {
@@ -93,8 +93,8 @@ Message decode(const uint8_t* data, size_t size) {
       s.drtRate = r.pod<int32_t>();
       const auto meshBytes = r.pod<uint64_t>();
       r.need(meshBytes);
-      s.meshes.resize(meshBytes);
-      r.raw(s.meshes.data(), meshBytes);
+      s.assets.resize(meshBytes);
+      r.raw(s.assets.data(), meshBytes);
       m = std::move(s);
       break;
     }

@@ -30,7 +30,7 @@ struct SceneMsg {
   std::string sceneText;  // the scene in .scene syntax, written by writeScene()
   int samplesPerPixel = 1;
   int drtRate = 1;
-  std::vector<uint8_t> meshes = {};  // the triangles of its `mesh` blocks (scene/mesh_pack.h)
+  std::vector<uint8_t> assets = {};  // its meshes, imported models and textures (scene/asset_pack.h)
   bool operator==(const SceneMsg&) const = default;
 };
 struct SpeedIndexMsg {

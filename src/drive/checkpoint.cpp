@@ -8,7 +8,7 @@
 #include <iterator>
 #include <stdexcept>
 
-#include "cluster/byte_codec.h"
+#include "core/byte_codec.h"
 #include "core/input_error.h"
 #include "image/atomic_file.h"
 #include "scene/scene_file.h"
@@ -39,6 +39,11 @@ CheckpointKey checkpointKey(const Scene& scene, const RenderSettings& settings) 
   keyed.image.output.clear();  // the same render may be written anywhere
   const std::string text = writeScene(keyed);
   uint64_t hash = fnv1a(reinterpret_cast<const uint8_t*>(text.data()), text.size());
+  // An import's text names its file, not what the file holds: its content is keyed too.
+  if (!scene.imports.empty()) {
+    const std::vector<uint8_t> assets = packAssets(scene);
+    hash = fnv1a(assets.data(), assets.size(), hash);
+  }
   const int32_t numbers[] = {scene.image.width, scene.image.height, settings.samplesPerPixel,
                              settings.drtRate};
   const uint64_t sceneHash = hash;

@@ -99,7 +99,7 @@ void ImageAssembler::restore(const Checkpoint& checkpoint) {
 
 SceneMsg makeSceneMessage(const Scene& scene, const RenderSettings& settings) {
   return SceneMsg{writeScene(scene), settings.samplesPerPixel, settings.drtRate,
-                  packMeshes(scene)};
+                  packAssets(scene)};
 }
 
 Image ownershipImage(const Image& image, const std::vector<int16_t>& owner) {

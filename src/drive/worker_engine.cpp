@@ -26,7 +26,7 @@ void solveHanoiOnce(int discs) {
 
 void WorkerEngine::load(const SceneMsg& scene) {
   world_ = std::make_unique<World>(
-      parseScene(scene.sceneText, "<scene from master>", unpackMeshes(scene.meshes)));
+      parseScene(scene.sceneText, "<scene from master>", unpackAssets(scene.assets)));
   renderer_ =
       std::make_unique<Renderer>(*world_, RenderSettings{scene.samplesPerPixel, scene.drtRate});
 }

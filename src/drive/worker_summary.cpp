@@ -4,7 +4,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "cluster/byte_codec.h"
+#include "core/byte_codec.h"
 
 namespace prt {
 namespace {

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "image/image.h"
 #include "trace/render_settings.h"
 #include "trace/scene.h"
 
@@ -22,9 +23,26 @@ struct PovOptions {
   std::string fileName = "scene.pov";  // the .pov file's name, for the command in its header
 };
 
+// A texture image the exported scene names, to be written beside the .pov file.
+struct PovImage {
+  std::string fileName;  // relative to the .pov file
+  Image image;           // linear RGB; written as an sRGB PNG
+};
+
+struct PovExport {
+  std::string text;  // the .pov file
+  std::vector<PovImage> images;
+};
+
 // The scene as POV-Ray 3.7 scene-description text for an image of scene.image.width x
-// scene.image.height pixels (the camera is exact for that size only). `settings` sets the
-// sampling of lights with extent and the command line written into the header comment.
+// scene.image.height pixels (the camera is exact for that size only), and the texture images
+// it names. `settings` sets the sampling of lights with extent and the command line written
+// into the header comment. A mesh placed by several instances is declared once and placed by
+// a matrix; a texture is written as an image map (with the material's colour multiplied in,
+// which POV-Ray's pigments cannot do), vertex colours as a texture per vertex.
+PovExport exportPovray(const Scene& scene, const RenderSettings& settings,
+                       const PovOptions& options = {});
+// Its text alone, for scenes without textures.
 std::string toPovray(const Scene& scene, const RenderSettings& settings,
                      const PovOptions& options = {});
 

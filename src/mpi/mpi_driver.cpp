@@ -17,7 +17,7 @@
 
 #include "core/check.h"
 #include "core/input_error.h"
-#include "cluster/byte_codec.h"
+#include "core/byte_codec.h"
 #include "mpi/mpi_acceptor.h"
 #include "mpi/mpi_comm.h"
 #include "mpi/mpi_transport.h"

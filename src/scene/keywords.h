@@ -14,7 +14,7 @@ namespace prt {
 
 inline constexpr std::string_view kDirectives[] = {
     "camera", "image",  "environment", "sampling", "material", "light",
-    "sphere", "box",    "plane",       "mesh",     "triangle"};
+    "sphere", "box",    "plane",       "mesh",     "triangle", "import"};
 
 inline bool isDirective(std::string_view word) {
   return std::find(std::begin(kDirectives), std::end(kDirectives), word) != std::end(kDirectives);

@@ -13,24 +13,6 @@
 namespace prt {
 namespace {
 
-// A scale of one number (all axes) or three, none of them zero.
-Vec3 readScale(MeshBlocks& b, const std::string& name) {
-  size_t at[3];
-  double value[3];
-  int given = 0;
-  do {
-    at[given] = b.in.position();
-    value[given] = readNumber(b.in, name, kCoordinate);
-    ++given;
-  } while (given < 3 && (given > 1 || b.in.peek().kind == TokenKind::Number));
-  for (int i = 0; i < given; ++i) {
-    if (value[i] == 0) {
-      b.in.fail(b.in.at(at[i]), "the mesh's 'scale' must not be zero: it would flatten the mesh");
-    }
-  }
-  return given == 1 ? Vec3(value[0]) : Vec3(value[0], value[1], value[2]);
-}
-
 // The placed mesh checked, its warnings kept, as the object's shape.
 Object withMesh(MeshBlocks& b, Object object, LoadedMesh loaded, MeshSource source,
                 const Token& at) {
@@ -51,6 +33,24 @@ Object withMesh(MeshBlocks& b, Object object, LoadedMesh loaded, MeshSource sour
 
 }  // namespace
 
+Vec3 readMeshScale(TokenStream& in, const std::string& name, const std::string& owner) {
+  size_t at[3];
+  double value[3];
+  int given = 0;
+  do {
+    at[given] = in.position();
+    value[given] = readNumber(in, name, kCoordinate);
+    ++given;
+  } while (given < 3 && (given > 1 || in.peek().kind == TokenKind::Number));
+  for (int i = 0; i < given; ++i) {
+    if (value[i] == 0) {
+      in.fail(in.at(at[i]), "the " + owner + "'s 'scale' must not be zero: it would flatten the " +
+                                (owner == "mesh" ? "mesh" : "model"));
+    }
+  }
+  return given == 1 ? Vec3(value[0]) : Vec3(value[0], value[1], value[2]);
+}
+
 Object readMeshBlock(MeshBlocks& b, const Token& keyword) {
   Object object{MeshShape{}, Material{}};
   MeshSource source;
@@ -59,7 +59,7 @@ Object readMeshBlock(MeshBlocks& b, const Token& keyword) {
   while (const Token* param = block.next()) {
     const std::string& name = param->text;
     if (name == "file") source.file = readString(b.in, name);
-    if (name == "scale") source.scale = readScale(b, name);
+    if (name == "scale") source.scale = readMeshScale(b.in, name, "mesh");
     if (name == "rotate")
       source.rotateDegrees = readVector(b.in, name, Range::closed(-36000, 36000));
     if (name == "translate") source.translate = readVector(b.in, name, kCoordinate);
@@ -75,12 +75,12 @@ Object readMeshBlock(MeshBlocks& b, const Token& keyword) {
   source.file = std::filesystem::absolute(path).lexically_normal().string();
   LoadedMesh loaded;
   if (b.shipped != nullptr) {
-    if (b.shippedUsed == b.shipped->size()) {
+    if (b.shippedUsed == b.shipped->meshBlocks.size()) {
       b.in.fail(fileToken, "the scene has more meshes than were sent with it (" +
-                               std::to_string(b.shipped->size()) + ")");
+                               std::to_string(b.shipped->meshBlocks.size()) + ")");
     }
     // Sent as read: a copy would be the same doubles (and the same warnings, given already).
-    loaded.mesh = std::const_pointer_cast<TriangleMesh>((*b.shipped)[b.shippedUsed++]);
+    loaded.mesh = std::const_pointer_cast<TriangleMesh>(b.shipped->meshBlocks[b.shippedUsed++]);
   } else {
     try {
       loaded = loadMeshFile(source);

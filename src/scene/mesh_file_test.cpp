@@ -11,7 +11,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "scene/mesh_pack.h"
+#include "scene/asset_pack.h"
 #include "scene/scene_file.h"
 
 namespace prt {
@@ -293,34 +293,39 @@ TEST_F(MeshFile, ShippedMeshesNeedNoFiles) {
       "sphere { center 0 0 0 radius 1 }\n"
       "mesh { file \"models/square.obj\" scale 3 }\n");
   const std::string text = writeScene(scene);
-  const std::vector<uint8_t> bytes = packMeshes(scene);
+  const std::vector<uint8_t> bytes = packAssets(scene);
   fs::remove_all(dir_ / "models");
-  const Scene again = parseScene(text, "<sent>", unpackMeshes(bytes));
+  const Scene again = parseScene(text, "<sent>", unpackAssets(bytes));
   ASSERT_EQ(again.objects.size(), scene.objects.size());
   for (size_t i = 0; i < scene.objects.size(); ++i) EXPECT_EQ(again.objects[i], scene.objects[i]);
-  // Vertices, indices and normals, nothing more: 4 + 4 vertices, 2 + 2 triangles, 4 normals.
-  EXPECT_EQ(bytes.size(), 8 + 2 * 24 + 8 * 24 + 4 * 12 + 4 * 24);
+  // Vertices, indices and normals, nothing more: 4 + 4 vertices, 2 + 2 triangles, 4 normals,
+  // after the tag, the counts (meshes; five arrays per mesh; images, blocks, imports) and
+  // the two blocks' mesh indices.
+  EXPECT_EQ(bytes.size(), 8 + 8 + 2 * 5 * 8 + 8 + 8 + 2 * 4 + 8 + 8 * 24 + 4 * 12 + 4 * 24);
   // Without them, the files are looked for (and are gone).
   EXPECT_THROW(parseScene(text, "<sent>"), InputError);
-  EXPECT_THROW(parseScene(text, "<sent>", ShippedMeshes{}), InputError);
+  EXPECT_THROW(parseScene(text, "<sent>", ShippedAssets{}), InputError);
 }
 
 TEST_F(MeshFile, MalformedPackedMeshesAreRefused) {
   write("models/square.obj", kSquareObj);
-  const std::vector<uint8_t> bytes = packMeshes(load("mesh { file \"models/square.obj\" }\n"));
-  for (size_t size : {size_t{0}, size_t{7}, size_t{30}, bytes.size() - 1}) {
-    EXPECT_THROW(unpackMeshes(std::vector<uint8_t>(
+  const std::vector<uint8_t> bytes = packAssets(load("mesh { file \"models/square.obj\" }\n"));
+  for (size_t size : {size_t{7}, size_t{30}, bytes.size() - 1}) {
+    EXPECT_THROW(unpackAssets(std::vector<uint8_t>(
                      bytes.begin(), bytes.begin() + static_cast<std::ptrdiff_t>(size))),
                  std::runtime_error)
         << size;
   }
   std::vector<uint8_t> longer = bytes;
   longer.push_back(0);
-  EXPECT_THROW(unpackMeshes(longer), std::runtime_error);
+  EXPECT_THROW(unpackAssets(longer), std::runtime_error);
   std::vector<uint8_t> badIndex = bytes;
-  badIndex[bytes.size() - 1] = 0x7f;  // the last triangle's last index
-  EXPECT_THROW(unpackMeshes(badIndex), std::runtime_error);
-  EXPECT_EQ(unpackMeshes(bytes).size(), 1u);
+  // The last triangle's last index: before the colours', uvs' and normals' counts, the images'
+  // count, the block (count and index) and the imports' count.
+  badIndex[bytes.size() - 1 - 8 * 3 - 8 - 12 - 8] = 0x7f;
+  EXPECT_THROW(unpackAssets(badIndex), std::runtime_error);
+  EXPECT_EQ(unpackAssets(bytes).meshBlocks.size(), 1u);
+  EXPECT_TRUE(unpackAssets({}).meshBlocks.empty());  // a scene with nothing to ship
 }
 
 }  // namespace

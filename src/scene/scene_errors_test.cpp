@@ -289,8 +289,9 @@ TEST(SceneErrors, RectLightMustHaveArea) {
 }
 
 TEST(SceneErrors, UnknownKindOfLight) {
-  expectBodyError("light spot { position 0 0 0 }", 7,
-                  {"unknown kind of light 'spot'; valid kinds: point, sphere, rect"});
+  expectBodyError("light spotlight { position 0 0 0 }", 7,
+                  {"unknown kind of light 'spotlight'; valid kinds: point, sphere, rect, spot, "
+                   "directional"});
   expectBodyError("light pont { position 0 0 0 }", 7, {"(did you mean 'point'?)"});
   expectBodyError("light { position 0 0 0 }", 7, {"expected the kind of light"});
 }

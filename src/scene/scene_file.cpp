@@ -3,12 +3,15 @@
 
 #include "scene/scene_file.h"
 
+#include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <memory>
 
+#include "scene/model_file.h"
 #include "scene/source_text.h"
 
 namespace prt {
@@ -147,7 +150,69 @@ bool hasContent(std::string_view text) {
 
 }  // namespace
 
-Scene loadSceneFile(const std::string& path) {
+std::string modelSceneText(const std::string& path, const ImportedModel& model,
+                           const SceneReadOptions& options) {
+  const std::filesystem::path file = std::filesystem::absolute(path).lexically_normal();
+  // The camera the render will look through decides the image's shape.
+  double aspect = 0;
+  if (!model.cameras.empty()) {
+    aspect = model.cameras.front().aspectRatio;
+    for (size_t i = 0; i < model.cameras.size(); ++i) {
+      if (model.cameras[i].name == options.camera || std::to_string(i) == options.camera) {
+        aspect = model.cameras[i].aspectRatio;
+      }
+    }
+  }
+  const int width = 640;
+  const int height = aspect > 0 ? std::clamp(static_cast<int>(std::lround(width / aspect)), 1, 32768)
+                                : 480;
+  std::string text = "image { width " + std::to_string(width) + " height " +
+                     std::to_string(height) + " output ";
+  auto quoted = [](const std::string& s) {
+    std::string q = "\"";
+    for (const char c : s) {
+      if (c == '"' || c == '\\') q += '\\';
+      q += c;
+    }
+    return q + "\"";
+  };
+  text += quoted(file.stem().string() + ".png") + " }\n";
+  text += "environment { background 0.05 0.05 0.05 ambient 0.05 0.05 0.05 }\n";
+  text += "import { file " + quoted(file.string()) + " }\n";
+  return text;
+}
+
+Scene loadSceneFile(const std::string& path, const SceneReadOptions& options) {
+  const std::string extension = std::filesystem::path(path).extension().string();
+  if (!path.empty() && (isModelFileName(path) || (extension != ".scene" && looksLikeModelFile(path)))) {
+    std::error_code error;
+    const auto status = std::filesystem::status(path, error);
+    if (status.type() == std::filesystem::file_type::not_found) {
+      throw InputError("model file " + quoted(path) + " does not exist");
+    }
+    if (status.type() != std::filesystem::file_type::regular) {
+      throw InputError(quoted(path) + " is not a regular file; give a scene or model file");
+    }
+    ModelCache local;
+    ModelCache& models = options.models != nullptr ? *options.models : local;
+    const std::string absolute = std::filesystem::absolute(path).lexically_normal().string();
+    std::shared_ptr<const ImportedModel> model;
+    try {
+      model = std::make_shared<const ImportedModel>(readModelFile(absolute, {options.strict}));
+    } catch (const ModelFileError& e) {
+      throw InputError(e.what());
+    }
+    models[absolute] = model;
+    SceneReadOptions read = options;
+    read.models = &models;
+    Scene scene = parseScene(modelSceneText(absolute, *model, options), path, read);
+    // The warnings name the generated text's line; the file itself is what they are about.
+    for (std::string& w : scene.warnings) {
+      const size_t at = w.find(": model file");
+      if (at != std::string::npos) w.erase(0, at + 2);
+    }
+    return scene;
+  }
   const std::string text = readWholeFile(path);
   std::string_view body = text;
   // Some editors start UTF-8 files with a byte order mark; it is not part of the scene.
@@ -157,7 +222,7 @@ Scene loadSceneFile(const std::string& path) {
     throw InputError("scene file " + quoted(path) + " is empty" +
                      (body.empty() ? "" : " (it has only comments and white space)"));
   }
-  return parseScene(body, path);
+  return parseScene(body, path, options);
 }
 
 }  // namespace prt

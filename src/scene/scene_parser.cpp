@@ -48,15 +48,24 @@ Vec3 unitLength(const Vec3& v) {
 
 class SceneParser {
  public:
-  SceneParser(const SourceText& source, const ShippedMeshes* shipped)
+  SceneParser(const SourceText& source, const ShippedAssets* shipped,
+              const SceneReadOptions& options)
       : in_(source),
         meshes_{in_, materials_, scene_.warnings,
-                std::filesystem::path(source.fileName()).parent_path(), shipped} {}
+                std::filesystem::path(source.fileName()).parent_path(), shipped},
+        options_(options),
+        imports_{in_, scene_, std::filesystem::path(source.fileName()).parent_path(), shipped,
+                 options.models != nullptr ? *options.models : models_,
+                 ModelReadOptions{options.strict}} {}
 
   Scene run() {
     while (!in_.atEnd()) directive(in_.next());
-    requireBlock(camera_, "camera", "camera { eye 0 1 -5  look_at 0 0 0 }");
+    chooseCamera();
     requireBlock(image_, "image", "image { width 320 height 240 }");
+    // A scene of imported models that brought no light gets one at the eye, so that it shows.
+    if (scene_.lights.empty() && !scene_.imports.empty()) {
+      scene_.lights.push_back(Light{PointLight{scene_.camera.eye}, Color(1), Falloff::none});
+    }
     return std::move(scene_);
   }
 
@@ -75,6 +84,7 @@ class SceneParser {
       if (name == "plane") return plane(keyword);
       if (name == "mesh") return mesh(keyword);
       if (name == "triangle") return triangle(keyword);
+      if (name == "import") return readImportBlock(imports_, keyword);
       const std::vector<std::string_view> directives(std::begin(kDirectives),
                                                      std::end(kDirectives));
       in_.fail(keyword, "unknown directive " + describe(keyword) + didYouMean(name, directives) +
@@ -106,16 +116,46 @@ class SceneParser {
   void camera(const Token& keyword) {
     once(keyword, camera_);
     Camera& camera = scene_.camera;
-    BlockReader block(in_, keyword, "camera", {"eye", "look_at", "up", "fov"});
+    BlockReader block(in_, keyword, "camera",
+                      {"eye", "look_at", "up", "fov", "ortho_height", "from", "name", "index"});
     while (const Token* param = block.next()) {
       const std::string& name = param->text;
       if (name == "eye") camera.eye = readVector(in_, name, kCoordinate);
       if (name == "look_at") camera.lookAt = readVector(in_, name, kCoordinate);
       if (name == "up") camera.up = readVector(in_, name, kCoordinate);
       if (name == "fov") camera.fovDegrees = readNumber(in_, name, Range::open(0, 180));
+      if (name == "ortho_height") camera.orthoHeight = readNumber(in_, name, kSize);
+      if (name == "from") cameraFrom_ = readString(in_, name);
+      if (name == "name") cameraName_ = readString(in_, name);
+      if (name == "index") cameraIndex_ = readInteger(in_, name, 0, 1 << 20);
+    }
+    if (block.has("from")) {
+      for (const char* other : {"eye", "look_at", "up", "fov", "ortho_height"}) {
+        if (block.has(other)) {
+          in_.fail(block.valueToken(other), std::string("a camera taken 'from' a model file has no '") +
+                                                other + "' of its own");
+        }
+      }
+      if (block.has("name") && block.has("index")) {
+        in_.fail(block.valueToken("index"), "give the camera's 'name' or its 'index', not both");
+      }
+      cameraFromToken_ = &block.valueToken("from");
+      std::filesystem::path path(cameraFrom_);
+      if (path.is_relative()) path = imports_.directory / path;
+      cameraFrom_ = std::filesystem::absolute(path).lexically_normal().string();
+      return;
+    }
+    for (const char* only : {"name", "index"}) {
+      if (block.has(only)) {
+        in_.fail(block.valueToken(only), std::string("'") + only +
+                                             "' picks a camera of a model file: give 'from' too");
+      }
     }
     block.require({"eye", "look_at"});
+    checkCamera(camera, block, keyword);
+  }
 
+  void checkCamera(const Camera& camera, const BlockReader& block, const Token& keyword) {
     // Lengths are tested with !(x > 0) so that vectors too short to square (1e-300) fail too.
     const Vec3 view = camera.lookAt - camera.eye;
     if (!(length(view) > 0)) {
@@ -136,6 +176,67 @@ class SceneParser {
                             "that is not");
     }
   }
+
+  // The camera: --camera's choice among the imported files' cameras, the block's (given, or
+  // taken 'from' a file), the first imported camera, or one that frames the imported models.
+  void chooseCamera() {
+    const std::vector<OfferedCamera>& offered = imports_.cameras;
+    auto names = [&] {
+      std::string list;
+      for (size_t i = 0; i < offered.size(); ++i) {
+        list += (i ? ", " : "") + std::to_string(i) + " '" + offered[i].camera.name + "'";
+      }
+      return list.empty() ? std::string("none") : list;
+    };
+    if (!options_.camera.empty()) {
+      const std::string& wanted = options_.camera;
+      const bool number = !wanted.empty() && std::all_of(wanted.begin(), wanted.end(), [](char c) {
+        return std::isdigit(static_cast<unsigned char>(c)) != 0;
+      });
+      for (size_t i = 0; i < offered.size(); ++i) {
+        if (offered[i].camera.name == wanted || (number && wanted.size() < 9 && std::stoul(wanted) == i)) {
+          return useCamera(offered[i]);
+        }
+      }
+      throw InputError("--camera " + wanted + ": no imported camera has that name or index; the " +
+                       "imported cameras are: " + names());
+    }
+    if (cameraFromToken_ != nullptr) {
+      std::vector<const OfferedCamera*> ofFile;
+      for (const OfferedCamera& c : offered) {
+        if (c.file == cameraFrom_) ofFile.push_back(&c);
+      }
+      bool imported = false;
+      for (const ImportSource& i : scene_.imports) imported = imported || i.file == cameraFrom_;
+      if (!imported) {
+        in_.fail(*cameraFromToken_, "the camera is taken from \"" + cameraFrom_ +
+                                        "\", which the scene does not import; import it first");
+      }
+      for (size_t i = 0; i < ofFile.size(); ++i) {
+        if ((!cameraName_.empty() && ofFile[i]->camera.name == cameraName_) ||
+            (cameraName_.empty() && static_cast<int>(i) == cameraIndex_)) {
+          return useCamera(*ofFile[i]);
+        }
+      }
+      std::string list;
+      for (size_t i = 0; i < ofFile.size(); ++i) {
+        list += (i ? ", " : "") + std::to_string(i) + " '" + ofFile[i]->camera.name + "'";
+      }
+      in_.fail(*cameraFromToken_,
+               "\"" + cameraFrom_ + "\" has no camera " +
+                   (cameraName_.empty() ? std::to_string(cameraIndex_) : "'" + cameraName_ + "'") +
+                   "; its cameras: " + (list.empty() ? "none" : list));
+    }
+    if (camera_ != nullptr) return;
+    if (!offered.empty()) return useCamera(offered.front());
+    if (!scene_.imports.empty()) {
+      scene_.camera = framingCamera(scene_);
+      return;
+    }
+    requireBlock(camera_, "camera", "camera { eye 0 1 -5  look_at 0 0 0 }");
+  }
+
+  void useCamera(const OfferedCamera& c) { scene_.camera = c.camera.camera; }
 
   void image(const Token& keyword) {
     once(keyword, image_);
@@ -214,7 +315,7 @@ class SceneParser {
 
   void light() {
     const Token& kind = in_.next();
-    const std::string kinds = "point, sphere, rect";
+    const std::string kinds = "point, sphere, rect, spot, directional";
     if (kind.kind != TokenKind::Word) {
       in_.fail(kind,
                "expected the kind of light (" + kinds + ") after 'light', found " + describe(kind));
@@ -222,44 +323,100 @@ class SceneParser {
     Light light;
     if (kind.text == "point") {
       PointLight point;
-      BlockReader block(in_, kind, "light point", {"position", "color"});
+      BlockReader block(in_, kind, "light point", {"position", "color", "falloff"});
       while (const Token* param = block.next()) {
         const std::string& name = param->text;
         if (name == "position") point.position = readVector(in_, name, kCoordinate);
         if (name == "color") light.color = readColor(in_, name);
+        if (name == "falloff") light.falloff = readFalloff();
       }
       block.require({"position"});
       light.shape = point;
     } else if (kind.text == "sphere") {
       SphereLight sphere;
-      BlockReader block(in_, kind, "light sphere", {"center", "radius", "color"});
+      BlockReader block(in_, kind, "light sphere", {"center", "radius", "color", "falloff"});
       while (const Token* param = block.next()) {
         const std::string& name = param->text;
         if (name == "center") sphere.center = readVector(in_, name, kCoordinate);
         if (name == "radius") sphere.radius = readNumber(in_, name, kSize);
         if (name == "color") light.color = readColor(in_, name);
+        if (name == "falloff") light.falloff = readFalloff();
       }
       block.require({"center", "radius"});
       light.shape = sphere;
     } else if (kind.text == "rect") {
-      light.shape = rectLight(kind, light.color);
+      light.shape = rectLight(kind, light);
+    } else if (kind.text == "spot") {
+      light.shape = spotLight(kind, light);
+    } else if (kind.text == "directional") {
+      DirectionalLight sun;
+      BlockReader block(in_, kind, "light directional", {"direction", "color"});
+      while (const Token* param = block.next()) {
+        const std::string& name = param->text;
+        if (name == "direction") sun.direction = readVector(in_, name, kCoordinate);
+        if (name == "color") light.color = readColor(in_, name);
+      }
+      block.require({"direction"});
+      sun.direction = unitDirection(sun.direction, block, "direction", "directional light");
+      light.shape = sun;
     } else {
       in_.fail(kind, "unknown kind of light " + describe(kind) +
-                         didYouMean(kind.text, {"point", "sphere", "rect"}) +
+                         didYouMean(kind.text, {"point", "sphere", "rect", "spot", "directional"}) +
                          "; valid kinds: " + kinds);
     }
     scene_.lights.push_back(light);
   }
 
-  RectLight rectLight(const Token& kind, Color& color) {
+  Falloff readFalloff() {
+    const Token& value = in_.next();
+    if (value.kind == TokenKind::Word && value.text == "none") return Falloff::none;
+    if (value.kind == TokenKind::Word && value.text == "inverse_square") return Falloff::inverseSquare;
+    in_.fail(value, "'falloff' is 'none' or 'inverse_square', found " + describe(value));
+  }
+
+  Vec3 unitDirection(const Vec3& v, const BlockReader& block, const char* param, const char* what) {
+    if (!(length(v) > 0)) {
+      in_.fail(block.valueToken(param), std::string("the ") + what + "'s '" + param +
+                                            "' must not be zero, nor so short that its length "
+                                            "underflows to zero");
+    }
+    return unitLength(v);
+  }
+
+  SpotLight spotLight(const Token& kind, Light& light) {
+    SpotLight spot;
+    BlockReader block(in_, kind, "light spot",
+                      {"position", "direction", "inner", "outer", "color", "falloff"});
+    while (const Token* param = block.next()) {
+      const std::string& name = param->text;
+      if (name == "position") spot.position = readVector(in_, name, kCoordinate);
+      if (name == "direction") spot.direction = readVector(in_, name, kCoordinate);
+      if (name == "inner") spot.innerDegrees = readNumber(in_, name, Range::closed(0, 90));
+      if (name == "outer") spot.outerDegrees = readNumber(in_, name, Range::closed(0, 90));
+      if (name == "color") light.color = readColor(in_, name);
+      if (name == "falloff") light.falloff = readFalloff();
+    }
+    block.require({"position", "direction", "outer"});
+    spot.direction = unitDirection(spot.direction, block, "direction", "spot light");
+    if (!block.has("inner")) spot.innerDegrees = spot.outerDegrees;
+    if (spot.innerDegrees > spot.outerDegrees) {
+      in_.fail(block.valueToken("inner"), "the spot light's 'inner' angle must not exceed its "
+                                          "'outer' one, found " + formatDouble(spot.innerDegrees) +
+                                              " > " + formatDouble(spot.outerDegrees));
+    }
+    return spot;
+  }
+
+  RectLight rectLight(const Token& kind, Light& light) {
     RectLight rect;
-    BlockReader block(in_, kind, "light rect", {"corner", "edge1", "edge2", "color"});
+    BlockReader block(in_, kind, "light rect", {"corner", "edge1", "edge2", "color", "falloff"});
     while (const Token* param = block.next()) {
       const std::string& name = param->text;
       if (name == "corner") rect.corner = readVector(in_, name, kCoordinate);
       if (name == "edge1") rect.edge1 = readVector(in_, name, kCoordinate);
       if (name == "edge2") rect.edge2 = readVector(in_, name, kCoordinate);
-      if (name == "color") color = readColor(in_, name);
+      if (name == "color") light.color = readColor(in_, name);
+      if (name == "falloff") light.falloff = readFalloff();
     }
     block.require({"corner", "edge1", "edge2"});
     const double area = length(cross(rect.edge1, rect.edge2));
@@ -344,6 +501,13 @@ class SceneParser {
   Scene scene_;
   MaterialTable materials_;
   MeshBlocks meshes_;
+  const SceneReadOptions& options_;
+  ModelCache models_;  // when the options bring no cache of their own
+  ImportBlocks imports_;
+  // A camera block's 'from': the file (absolute), the camera's name or index in it.
+  std::string cameraFrom_, cameraName_;
+  int cameraIndex_ = 0;
+  const Token* cameraFromToken_ = nullptr;
   const Token* camera_ = nullptr;  // where each once-only block was given, if it was
   const Token* image_ = nullptr;
   const Token* environment_ = nullptr;
@@ -352,23 +516,27 @@ class SceneParser {
 
 }  // namespace
 
-Scene parseScene(std::string_view text, const std::string& fileName) {
+Scene parseScene(std::string_view text, const std::string& fileName,
+                 const SceneReadOptions& options) {
   const SourceText source(text, fileName);
-  return SceneParser(source, nullptr).run();
+  return SceneParser(source, nullptr, options).run();
 }
 
 Scene parseScene(std::string_view text, const std::string& fileName,
-                 const ShippedMeshes& shipped) {
+                 const ShippedAssets& shipped) {
   const SourceText source(text, fileName);
-  Scene scene = SceneParser(source, &shipped).run();
+  const SceneReadOptions options;
+  Scene scene = SceneParser(source, &shipped, options).run();
   size_t meshes = 0;
   for (const Object& o : scene.objects) {
     const auto* m = std::get_if<MeshShape>(&o.shape);
     meshes += m != nullptr && !m->source.file.empty() ? 1 : 0;
   }
-  if (meshes != shipped.size()) {
-    throw InputError("the scene has " + std::to_string(meshes) + " meshes but " +
-                     std::to_string(shipped.size()) + " were sent with it");
+  if (meshes != shipped.meshBlocks.size() || scene.imports.size() != shipped.imports.size()) {
+    throw InputError("the scene has " + std::to_string(meshes) + " meshes and " +
+                     std::to_string(scene.imports.size()) + " imports but " +
+                     std::to_string(shipped.meshBlocks.size()) + " and " +
+                     std::to_string(shipped.imports.size()) + " were sent with it");
   }
   return scene;
 }

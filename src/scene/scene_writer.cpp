@@ -8,6 +8,7 @@
 #include <type_traits>
 #include <variant>
 
+#include "core/check.h"
 #include "scene/number_text.h"
 #include "scene/scene_file.h"
 
@@ -84,6 +85,8 @@ std::string surfaceFields(const Material& material) {
   out.numberUnlessDefault("gloss", material.glossDegrees, defaults.glossDegrees);
   out.numberUnlessDefault("translucency", material.translucencyDegrees,
                           defaults.translucencyDegrees);
+  out.numberUnlessDefault("metallic", material.metallic, defaults.metallic);
+  if (!sameBits(material.emission, defaults.emission)) out.vector("emission", material.emission);
   return out.take();
 }
 
@@ -98,6 +101,15 @@ void writeLight(Writer& out, const Light& light) {
           out.open("light sphere");
           out.vector("center", shape.center);
           out.number("radius", shape.radius);
+        } else if constexpr (std::is_same_v<T, SpotLight>) {
+          out.open("light spot");
+          out.vector("position", shape.position);
+          out.vector("direction", shape.direction);
+          out.number("inner", shape.innerDegrees);
+          out.number("outer", shape.outerDegrees);
+        } else if constexpr (std::is_same_v<T, DirectionalLight>) {
+          out.open("light directional");
+          out.vector("direction", shape.direction);
         } else {
           static_assert(std::is_same_v<T, RectLight>);
           out.open("light rect");
@@ -108,6 +120,18 @@ void writeLight(Writer& out, const Light& light) {
       },
       light.shape);
   out.vector("color", light.color);
+  if (light.falloff == Falloff::inverseSquare) out.raw(" falloff inverse_square");
+  out.close();
+}
+
+void writeImport(Writer& out, const ImportSource& import) {
+  out.open("import");
+  out.string("file", import.file);
+  out.vector("scale", import.scale);
+  out.vector("rotate", import.rotateDegrees);
+  out.vector("translate", import.translate);
+  // Its lights were written with the others, as light blocks.
+  out.raw(" no_lights");
   out.close();
 }
 
@@ -127,6 +151,8 @@ void writeObject(Writer& out, const Object& object) {
           out.open("plane");
           out.vector("point", shape.point);
           out.vector("normal", shape.normal);
+        } else if constexpr (std::is_same_v<T, InstanceShape>) {
+          PRT_CHECK(!"an instance is written by the import block that placed it");
         } else {
           static_assert(std::is_same_v<T, MeshShape>);
           const MeshSource& source = shape.source;
@@ -161,6 +187,7 @@ std::string writeScene(const Scene& scene) {
   out.vector("look_at", camera.lookAt);
   out.vector("up", camera.up);
   out.number("fov", camera.fovDegrees);
+  if (camera.orthoHeight > 0) out.number("ortho_height", camera.orthoHeight);
   out.close();
 
   out.open("image");
@@ -181,7 +208,17 @@ std::string writeScene(const Scene& scene) {
   out.close();
 
   for (const Light& light : scene.lights) writeLight(out, light);
-  for (const Object& object : scene.objects) writeObject(out, object);
+  // Each import where its objects began, in place of them.
+  auto import = scene.imports.begin();
+  for (size_t i = 0; i < scene.objects.size(); ++i) {
+    if (import != scene.imports.end() && import->firstObject == i) {
+      writeImport(out, *import);
+      i += import->objectCount - 1;
+      ++import;
+      continue;
+    }
+    writeObject(out, scene.objects[i]);
+  }
   return out.take();
 }
 

@@ -29,7 +29,7 @@ void readSurfaceBlock(TokenStream& in, const Token& keyword, const std::string& 
                       Material& material) {
   BlockReader block(in, keyword, title,
                     {"color", "ambient", "diffuse", "specular", "phong", "reflect", "transmit",
-                     "ior", "gloss", "translucency"});
+                     "ior", "gloss", "translucency", "metallic", "emission"});
   const Range weight = Range::closed(0, 1);
   while (const Token* param = block.next()) {
     const std::string& name = param->text;
@@ -52,6 +52,10 @@ void readSurfaceBlock(TokenStream& in, const Token& keyword, const std::string& 
       material.ior = readNumber(in, name, Range::closed(1, 10));
     } else if (name == "gloss") {
       material.glossDegrees = readNumber(in, name, Range::closedOpen(0, 90));
+    } else if (name == "metallic") {
+      material.metallic = readNumber(in, name, weight);
+    } else if (name == "emission") {
+      material.emission = readColor(in, name);
     } else {
       material.translucencyDegrees = readNumber(in, name, Range::closedOpen(0, 90));
     }

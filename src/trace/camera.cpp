@@ -12,7 +12,10 @@ PinholeCamera::PinholeCamera(const Camera& camera, int width, int height)
   forward_ = normalize(camera.lookAt - camera.eye);
   const Vec3 right = normalize(cross(camera.up, forward_));
   const Vec3 up = cross(forward_, right);
-  const double halfHeight = tanRadians(camera.fovDegrees * std::numbers::pi / 360.0);
+  orthographic_ = camera.orthoHeight > 0;
+  const double halfHeight = orthographic_
+                                ? 0.5 * camera.orthoHeight
+                                : tanRadians(camera.fovDegrees * std::numbers::pi / 360.0);
   const double halfWidth = halfHeight * static_cast<double>(width) / height;
   right_ = right * halfWidth;
   up_ = up * halfHeight;
@@ -23,8 +26,9 @@ bool PinholeCamera::project(const Vec3& p, double& px, double& py) const {
   const Vec3 v = p - eye_;
   const double depth = dot(v, forward_);
   if (!(depth > 0)) return false;
-  const double sx = dot(v, right_) / (dot(right_, right_) * depth);
-  const double sy = dot(v, up_) / (dot(up_, up_) * depth);
+  const double perspective = orthographic_ ? 1.0 : depth;  // parallel rays: no foreshortening
+  const double sx = dot(v, right_) / (dot(right_, right_) * perspective);
+  const double sy = dot(v, up_) / (dot(up_, up_) * perspective);
   px = (sx + 1.0) / (2.0 * invWidth_);
   py = (1.0 - sy) / (2.0 * invHeight_);
   return true;
@@ -33,6 +37,7 @@ bool PinholeCamera::project(const Vec3& p, double& px, double& py) const {
 Ray PinholeCamera::generateRay(double px, double py) const {
   const double sx = 2.0 * px * invWidth_ - 1.0;
   const double sy = 1.0 - 2.0 * py * invHeight_;
+  if (orthographic_) return Ray{eye_ + sx * right_ + sy * up_, forward_};
   return Ray{eye_, normalize(forward_ + sx * right_ + sy * up_)};
 }
 

@@ -1,6 +1,8 @@
 #pragma once
 // PinholeCamera: turns a position on the image plane into a primary ray. Left-handed like
 // POV-Ray: with the default camera (eye on -z looking at the origin, up +y), +x is right.
+// An orthographic camera (Camera::orthoHeight > 0) sends parallel rays from a plane through
+// the eye instead of rays from the eye.
 
 #include "core/ray.h"
 #include "trace/scene.h"
@@ -21,6 +23,7 @@ class PinholeCamera {
  private:
   Vec3 eye_, forward_, right_, up_;  // right_ and up_ are scaled to half the image plane
   double invWidth_, invHeight_;
+  bool orthographic_ = false;
 };
 
 }  // namespace prt

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <variant>
 
 #include "core/rng.h"
@@ -18,9 +19,12 @@ namespace prt {
 // The point shadow ray s of `samples` towards a light aims at, from a hit at `from`: the
 // light's position, or a point of its disc (a sphere light, seen from `from`) or of its
 // rectangle, stratified over the samples. Draws two random numbers for a light with extent,
-// none for a point light.
+// none for a point or spot light. Not for a directional light, which has no point to aim at
+// (the shader sends its shadow rays along its direction).
 inline Vec3 aimAt(const LightShape& shape, const Vec3& from, int s, int samples, Rng& rng) {
   if (const auto* p = std::get_if<PointLight>(&shape)) return p->position;
+  if (const auto* spot = std::get_if<SpotLight>(&shape)) return spot->position;
+  if (const auto* sun = std::get_if<DirectionalLight>(&shape)) return from - sun->direction;
   if (const auto* sph = std::get_if<SphereLight>(&shape)) {
     const Vec3 axis = normalize(sph->center - from);
     const double u1 = stratum(s, samples, rng.uniform());  // stratified over the samples
@@ -33,8 +37,12 @@ inline Vec3 aimAt(const LightShape& shape, const Vec3& from, int s, int samples,
 
 // How many random numbers aimAt draws for one point of the light.
 inline uint64_t aimDraws(const LightShape& shape) {
-  return std::holds_alternative<PointLight>(shape) ? 0 : 2;
+  return std::holds_alternative<SphereLight>(shape) || std::holds_alternative<RectLight>(shape) ? 2
+                                                                                                : 0;
 }
+
+// Whether a light is sampled at a single point (one shadow ray per shading point).
+inline bool isPointLike(const LightShape& shape) { return aimDraws(shape) == 0; }
 
 // A ball holding every point aimAt may return for a light: its centre and radius, and the sum
 // of the centre's coordinates' magnitudes (for rounding margins).
@@ -48,6 +56,11 @@ inline LightReach reachOf(const LightShape& shape) {
   LightReach r;
   if (const auto* p = std::get_if<PointLight>(&shape)) {
     r.center = p->position;
+  } else if (const auto* spot = std::get_if<SpotLight>(&shape)) {
+    r.center = spot->position;
+  } else if (std::holds_alternative<DirectionalLight>(shape)) {
+    // Never behind a surface by position: the shader tests the direction instead.
+    r.radius = std::numeric_limits<double>::infinity();
   } else if (const auto* sph = std::get_if<SphereLight>(&shape)) {
     r.center = sph->center;
     r.radius = sph->radius;

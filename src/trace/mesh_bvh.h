@@ -27,6 +27,8 @@ class MeshBvh {
   explicit MeshBvh(std::shared_ptr<const TriangleMesh> mesh);
 
   const Bounds& bounds() const { return bounds_; }
+  const TriangleMesh* mesh() const { return mesh_.get(); }
+  const TriangleMesh& triangles() const { return *mesh_; }
   size_t triangleCount() const { return mesh_->triangles.size(); }
   // Memory held for tracing (tree and triangle corners), the mesh itself not counted.
   size_t bytes() const {

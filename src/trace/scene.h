@@ -7,7 +7,9 @@
 #include <variant>
 #include <vector>
 
+#include "core/transform.h"
 #include "core/vec3.h"
+#include "trace/texture.h"
 #include "trace/triangle_mesh.h"
 
 namespace prt {
@@ -17,6 +19,10 @@ struct Camera {
   Vec3 lookAt{0, 0, 0};  // point at the centre of the image
   Vec3 up{0, 1, 0};      // approximate up direction; need not be perpendicular to the view
   double fovDegrees = 45;  // vertical field of view, degrees, in (0, 180)
+  // Orthographic when > 0: every ray runs along the view direction, and the image's height
+  // spans this many world units around the eye (the field of view is then not used).
+  double orthoHeight = 0;
+  bool operator==(const Camera&) const = default;
 };
 
 struct ImageSpec {
@@ -50,6 +56,13 @@ struct Material {
   double ior = 1.0;            // index of refraction of the inside (>= 1)
   double glossDegrees = 0.0;   // half-angle of the cone of reflected rays (0: perfect mirror)
   double translucencyDegrees = 0.0;  // half-angle of the cone of transmitted rays
+  // A metal's share: its mirror reflection and highlight take the surface colour by this much
+  // (POV-Ray's `metallic`), in [0, 1]; 0 leaves them the colour of what they reflect.
+  double metallic = 0.0;
+  Color emission{0, 0, 0};  // light the surface gives off itself, added to its colour (it
+                            // lights nothing else: it is not a light source)
+  TextureRef colorTexture;     // multiplies `color` (and a mesh's vertex colours)
+  TextureRef emissionTexture;  // multiplies `emission`
 
   bool operator==(const Material&) const = default;
 };
@@ -69,8 +82,17 @@ struct PlaneShape {  // one-sided: visible, and opaque to shadow rays, only from
   Vec3 normal{0, 1, 0};  // unit length
   bool operator==(const PlaneShape&) const = default;
 };
+// A mesh placed by a transform (an instance): the mesh, in its own coordinates, is stored and
+// its tree built once however many objects place it (World shares them by the pointer).
+struct InstanceShape {
+  std::shared_ptr<const TriangleMesh> mesh;  // never null; in the mesh's own coordinates
+  Transform worldFromMesh;                   // usable (Transform::isUsable)
+  bool operator==(const InstanceShape& o) const {
+    return worldFromMesh == o.worldFromMesh && (mesh == o.mesh || *mesh == *o.mesh);
+  }
+};
 // A triangle mesh (trace/triangle_mesh.h): closed or not, convex or not.
-using Shape = std::variant<SphereShape, BoxShape, PlaneShape, MeshShape>;
+using Shape = std::variant<SphereShape, BoxShape, PlaneShape, MeshShape, InstanceShape>;
 
 struct Object {
   Shape shape;
@@ -93,12 +115,47 @@ struct RectLight {  // soft shadows: the parallelogram corner + s*edge1 + t*edge
   Vec3 edge2;
   bool operator==(const RectLight&) const = default;
 };
-using LightShape = std::variant<PointLight, SphereLight, RectLight>;
+// A point light whose light is confined to a cone: full inside `innerDegrees` of the axis,
+// none beyond `outerDegrees`, a smooth step between (as Blender and POV-Ray fade a spot).
+struct SpotLight {
+  Vec3 position;
+  Vec3 direction{0, -1, 0};  // the cone's axis, unit length: where the light shines
+  double innerDegrees = 30;  // half-angles, 0 <= inner <= outer <= 90
+  double outerDegrees = 30;
+  bool operator==(const SpotLight&) const = default;
+};
+// Light from infinitely far away (the sun): parallel rays, one shadow ray per shading point.
+struct DirectionalLight {
+  Vec3 direction{0, -1, 0};  // unit length: the direction the light travels
+  bool operator==(const DirectionalLight&) const = default;
+};
+using LightShape = std::variant<PointLight, SphereLight, RectLight, SpotLight, DirectionalLight>;
+
+// How a light weakens with the distance d to it: not at all (the paper's lights), or as 1/d^2
+// (the physical law, which lights read from model files follow; `color` is then the intensity
+// at distance 1).
+enum class Falloff : uint8_t { none, inverseSquare };
 
 struct Light {
   LightShape shape;
   Color color{1, 1, 1};  // intensity I_l (may exceed 1)
+  Falloff falloff = Falloff::none;  // never inverseSquare for a directional light
   bool operator==(const Light&) const = default;
+};
+
+// How an `import` block brought a model file in, so that the scene can be written back (and
+// sent) as it was read: its objects and lights are those at the ranges given.
+struct ImportSource {
+  std::string file;  // absolute, as resolved against the scene file's directory
+  Vec3 scale{1, 1, 1};  // applied first,
+  Vec3 rotateDegrees;   // then rotations about x, then y, then z,
+  Vec3 translate;       // then the translation
+  bool lights = true;   // whether the file's lights were brought in
+  size_t firstObject = 0, objectCount = 0;  // in Scene::objects
+  size_t firstLight = 0, lightCount = 0;    // in Scene::lights
+  size_t firstTexture = 0, textureCount = 0;  // in Scene::textures
+  double lightScale = 1;  // what the file's light intensities were multiplied by
+  bool operator==(const ImportSource&) const = default;
 };
 
 struct Scene {
@@ -108,6 +165,8 @@ struct Scene {
   Sampling sampling;
   std::vector<Light> lights;
   std::vector<Object> objects;
+  std::vector<Texture> textures;  // what materials' TextureRefs index
+  std::vector<ImportSource> imports;  // in the order of their blocks
   // What reading the scene skipped and why (triangles of a mesh file), for the user to see;
   // "file:line: what". Not part of the scene itself: never written or sent.
   std::vector<std::string> warnings;

@@ -4,6 +4,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <numbers>
 
 #include "core/portable_math.h"
@@ -25,6 +26,11 @@ constexpr double kDegrees = std::numbers::pi / 180.0;
 // safe below).
 int binaryExponent(double x) {
   return static_cast<int>((std::bit_cast<uint64_t>(x) >> 52) & 0x7ff) - 1023;
+}
+
+// What a metal's reflections are multiplied by: its colour, by its metallic share.
+Color metallicTint(const Material& m, const Color& albedo) {
+  return Color(1 - m.metallic) + m.metallic * albedo;
 }
 
 }  // namespace
@@ -71,23 +77,89 @@ Shader::Shader(const World& world, const RenderSettings& settings)
     const double radians = degrees * kDegrees;
     return Spread{radians, cosRadians(radians)};
   };
-  for (const Object& o : world.scene().objects) {
-    surfaces_.push_back({spread(o.material.glossDegrees), spread(o.material.translucencyDegrees),
-                         1.0 / o.material.ior});
+  const Scene& scene = world.scene();
+  auto texture = [&](const TextureRef& ref) -> const Texture* {
+    return ref.texture >= 0 ? &scene.textures[static_cast<size_t>(ref.texture)] : nullptr;
+  };
+  for (const Object& o : scene.objects) {
+    Surface surface{spread(o.material.glossDegrees), spread(o.material.translucencyDegrees),
+                    1.0 / o.material.ior};
+    surface.colorTexture = texture(o.material.colorTexture);
+    surface.emissionTexture = texture(o.material.emissionTexture);
+    const TriangleMesh* mesh = nullptr;
+    if (const auto* m = std::get_if<MeshShape>(&o.shape)) mesh = m->mesh.get();
+    if (const auto* i = std::get_if<InstanceShape>(&o.shape)) mesh = i->mesh.get();
+    surface.vertexColors = mesh != nullptr && !mesh->colors.empty();
+    const bool textured = surface.colorTexture != nullptr || surface.emissionTexture != nullptr;
+    surface.attributes = surface.vertexColors || (textured && mesh != nullptr && !mesh->uvs.empty());
+    surface.emits = o.material.emission != Color();
+    surfaces_.push_back(surface);
   }
-  for (const Light& light : world.scene().lights) reaches_.push_back(reachOf(light.shape));
+  for (const Light& light : scene.lights) {
+    reaches_.push_back(reachOf(light.shape));
+    LightTerms terms;
+    terms.inverseSquare = light.falloff == Falloff::inverseSquare;
+    if (const auto* sun = std::get_if<DirectionalLight>(&light.shape)) {
+      terms.directional = true;
+      terms.sunward = -sun->direction;
+    } else if (const auto* spot = std::get_if<SpotLight>(&light.shape)) {
+      terms.spot = true;
+      terms.axis = spot->direction;
+      terms.cosOuter = cosRadians(spot->outerDegrees * kDegrees);
+      terms.cosInner = cosRadians(spot->innerDegrees * kDegrees);
+    }
+    lightTerms_.push_back(terms);
+  }
+}
+
+double Shader::LightTerms::scale(const Vec3& toLight, double distance) const {
+  double s = 1;
+  if (spot) {
+    const double along = -dot(axis, toLight);  // cosine of the angle off the cone's axis
+    if (!(along > cosOuter)) return 0;
+    if (along < cosInner) {
+      const double t = (along - cosOuter) / (cosInner - cosOuter);
+      s = t * t * (3 - 2 * t);  // smooth step
+    }
+  }
+  if (inverseSquare) s /= distance * distance;
+  return s;
+}
+
+Color Shader::albedoAt(const Ray& ray, const Hit& hit, const Surface& surface, const Material& m,
+                       Color* emission) const {
+  if (!surface.attributes) {
+    if (surface.emits && emission != nullptr) *emission = m.emission;
+    return m.color;
+  }
+  const SurfaceAttributes a = world_.attributesAt(ray, hit);
+  auto lookup = [&](const Texture& texture, const TextureRef& ref) {
+    const auto& t = ref.uv.m;
+    return sampleTexture(texture, t[0] * a.u + t[1] * a.v + t[2], t[3] * a.u + t[4] * a.v + t[5]);
+  };
+  Color albedo = m.color;
+  if (surface.vertexColors) albedo = albedo * a.color;
+  if (surface.colorTexture != nullptr) albedo = albedo * lookup(*surface.colorTexture, m.colorTexture);
+  if (surface.emits && emission != nullptr) {
+    *emission = m.emission;
+    if (surface.emissionTexture != nullptr) {
+      *emission = *emission * lookup(*surface.emissionTexture, m.emissionTexture);
+    }
+  }
+  return albedo;
 }
 
 Color Shader::direct(const Hit& hit, const Vec3& n, const Vec3& toEye, Rng& rng,
                      uint64_t& rays) const {
-  return direct(hit, n, toEye, surfaceEpsilon(hit.point), rng, rays);
+  return direct(hit, world_.material(hit.object).color, n, toEye, surfaceEpsilon(hit.point), rng,
+                rays);
 }
 
-Color Shader::direct(const Hit& hit, const Vec3& n, const Vec3& toEye, double eps, Rng& rng,
-                     uint64_t& rays) const {
+Color Shader::direct(const Hit& hit, const Color& albedo, const Vec3& n, const Vec3& toEye,
+                     double eps, Rng& rng, uint64_t& rays) const {
   const Scene& scene = world_.scene();
   const Material& m = world_.material(hit.object);
-  Color result = m.ambient * scene.environment.ambient * m.color;
+  Color result = m.ambient * scene.environment.ambient * albedo;
   const Vec3 origin = hit.point + eps * n;
   const double nn = dot(n, n);
   const World::ShadowOrigin from = world_.shadowOrigin(origin);
@@ -95,11 +167,40 @@ Color Shader::direct(const Hit& hit, const Vec3& n, const Vec3& toEye, double ep
   // Plain pointers: the shadow ray's call would make the vectors' be loaded again each time.
   const Light* const lights = scene.lights.data();
   const LightReach* const reaches = reaches_.data();
+  const LightTerms* const terms = lightTerms_.data();
   const size_t lightCount = scene.lights.size();
+  const Color tint = metallicTint(m, albedo);
+  // The diffuse and Phong terms of light arriving from unit direction toLight.
+  auto local = [&](const Vec3& toLight, double cosine) {
+    const Color diffuse = (m.diffuse * cosine) * albedo;
+    // +0^n is +0 for n > 0 (scene files require n >= 1): the power is skipped then, and when
+    // the term could not change the sum anyway; a surface with no specular term skips the
+    // highlight too.
+    bool needed = false;
+    double highlight = 0;
+    if (m.specular > 0) {
+      highlight = std::max(0.0, dot(reflect(-toLight, n), toEye));
+      const bool lit = highlight > 0 || !(m.phongExponent > 0);
+      needed = lit && !specularIsNegligible(highlight, m.phongExponent, m.specular, diffuse);
+    }
+    const double phong = needed ? m.specular * powNonNegative(highlight, m.phongExponent) : 0.0;
+    if (m.metallic > 0) return diffuse + phong * tint;
+    return diffuse + Color(phong);
+  };
   for (size_t l = 0; l < lightCount; ++l) {
     const Light& light = lights[l];
-    const bool point = std::holds_alternative<PointLight>(light.shape);
-    const int samples = point ? 1 : settings_.drtRate;
+    const LightTerms& shape = terms[l];
+    if (shape.directional) {  // one shadow ray, to infinity
+      const double cosine = dot(n, shape.sunward);
+      if (cosine <= 0) continue;
+      ++rays;
+      const double visible = world_.transmittanceToLight(
+          from, l, Ray{origin, shape.sunward}, std::numeric_limits<double>::infinity());
+      if (visible <= 0) continue;
+      result += visible * light.color * local(shape.sunward, cosine);
+      continue;
+    }
+    const int samples = isPointLike(light.shape) ? 1 : settings_.drtRate;
     // A light wholly behind the surface: every sample would be skipped below for its cosine.
     // Only the random numbers they would draw are taken.
     if (surelyBehind(reaches[l], origin, n, nn)) {
@@ -114,23 +215,14 @@ Color Shader::direct(const Hit& hit, const Vec3& n, const Vec3& toEye, double ep
       toLight /= distance;
       const double cosine = dot(n, toLight);
       if (cosine <= 0) continue;
+      // A spot's cone and the fall with distance (1 for the paper's lights, left out).
+      const double scale = shape.shaped() ? shape.scale(toLight, distance) : 1.0;
+      if (!(scale > 0)) continue;
       ++rays;
-      const double visible = world_.transmittanceToLight(from, l, Ray{origin, toLight}, distance);
+      double visible = world_.transmittanceToLight(from, l, Ray{origin, toLight}, distance);
       if (visible <= 0) continue;
-      const Color diffuse = (m.diffuse * cosine) * m.color;
-      // +0^n is +0 for n > 0 (scene files require n >= 1): the power is skipped then, and when
-      // the term could not change the sum anyway; a surface with no specular term skips the
-      // highlight too.
-      bool needed = false;
-      double highlight = 0;
-      if (m.specular > 0) {
-        highlight = std::max(0.0, dot(reflect(-toLight, n), toEye));
-        const bool lit = highlight > 0 || !(m.phongExponent > 0);
-        needed = lit && !specularIsNegligible(highlight, m.phongExponent, m.specular, diffuse);
-      }
-      const Color local =
-          diffuse + Color(needed ? m.specular * powNonNegative(highlight, m.phongExponent) : 0.0);
-      sum += visible * light.color * local;
+      if (shape.shaped()) visible *= scale;
+      sum += visible * light.color * local(toLight, cosine);
     }
     result += meanOf(sum, samples);
   }
@@ -213,9 +305,12 @@ Color Shader::shade(const Ray& ray, const Hit& hit, PathState path, Rng rng,
   const Vec3 toEye = -ray.direction;
 
   const double eps = surfaceEpsilon(hit.point);
-  Color color = direct(hit, n, toEye, eps, rng, rays);
-  if (path.depth >= scene.environment.maxDepth) return color;
   const Surface& surface = surfaces_[hit.object];
+  Color emission;
+  const Color albedo = albedoAt(ray, hit, surface, m, &emission);
+  Color color = direct(hit, albedo, n, toEye, eps, rng, rays);
+  if (surface.emits) color += emission;
+  if (path.depth >= scene.environment.maxDepth) return color;
   // Rays spawned back to the side the ray came from, and through to the other side: one of the
   // two is inside the object (a convex one: a sphere or a box; World knows which it is).
   const uint32_t sameSide = entering ? kOutside : hit.object;
@@ -225,7 +320,9 @@ Color Shader::shade(const Ray& ray, const Hit& hit, PathState path, Rng rng,
   const PathState reflected{path.depth + 1, path.weight * m.reflectivity};
   if (m.reflectivity > 0 && reflected.weight >= kMinPathWeight) {
     const Vec3 r = reflect(ray.direction, n);
-    color += m.reflectivity * spawn(sameSide, hit.point + eps * n, r, surface.reflection, n, true,
+    const Color weight =
+        m.metallic > 0 ? m.reflectivity * metallicTint(m, albedo) : Color(m.reflectivity);
+    color += weight * spawn(sameSide, hit.point + eps * n, r, surface.reflection, n, true,
                                     reflected, rng.child(1000), rays);
   }
   const PathState transmitted{path.depth + 1, path.weight * m.transmissivity};

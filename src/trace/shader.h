@@ -1,9 +1,11 @@
 #pragma once
 // Shader: the paper's simplified Hall model, recursively.
-//   colour = k_a I_a O_d
+//   colour = k_a I_a O_d + E
 //          + sum over lights of  S_l I_l (k_d O_d (N.L) + k_s (R.V)^n)
 //          + k_r * reflected colour + k_t * transmitted colour
-// S_l is the light's visibility: 0 behind an opaque object, the product of the
+// O_d is the surface colour, times the mesh's vertex colour and the colour texture where there
+// are; E the material's emission (times its texture). A spot light's I_l is weighed by its cone,
+// and a light with inverse-square falloff's by 1 / d^2. S_l is the light's visibility: 0 behind an opaque object, the product of the
 // transmissivities of the transmissive surfaces crossed, averaged over the light's samples
 // for lights with extent. Reflection and transmission recurse up to the environment's
 // maximum depth; with gloss or translucency each spawns drtRate perturbed rays.
@@ -69,10 +71,33 @@ class Shader {
   struct Surface {
     Spread reflection, transmission;
     double inverseIor = 1;  // 1 / ior: the relative index entering the object
+    const Texture* colorTexture = nullptr;     // the material's, in the scene's list
+    const Texture* emissionTexture = nullptr;
+    bool vertexColors = false;  // the object's mesh has them
+    bool attributes = false;    // a hit's texture coordinates or colour are needed
+    bool emits = false;         // the material's emission is not black
+  };
+  // What shading needs of a light beyond its shape, computed once.
+  struct LightTerms {
+    bool directional = false;
+    Vec3 sunward;  // a directional light's: against its direction
+    bool spot = false;
+    Vec3 axis;     // a spot's
+    double cosOuter = 0, cosInner = 1;
+    bool inverseSquare = false;
+    // Whether the light is weighed by scale(): the paper's lights are not.
+    bool shaped() const { return spot || inverseSquare; }
+    // The share of the light's intensity that arrives along unit direction toLight (towards
+    // the light) from `distance` away: the spot's cone and the inverse-square law.
+    double scale(const Vec3& toLight, double distance) const;
   };
 
-  Color direct(const Hit& hit, const Vec3& n, const Vec3& toEye, double eps, Rng& rng,
-               uint64_t& rays) const;
+  // The surface colour at a hit (the material's, times vertex colours and texture) and, when
+  // `emission` is given and the material emits, its emission there.
+  Color albedoAt(const Ray& ray, const Hit& hit, const Surface& surface, const Material& m,
+                 Color* emission) const;
+  Color direct(const Hit& hit, const Color& albedo, const Vec3& n, const Vec3& toEye, double eps,
+               Rng& rng, uint64_t& rays) const;
   // Where a ray is: its recursion depth (0 for primary rays) and its path weight.
   struct PathState {
     int depth = 0;
@@ -96,6 +121,7 @@ class Shader {
   RenderSettings settings_;
   std::vector<Surface> surfaces_;    // per object
   std::vector<LightReach> reaches_;  // per light
+  std::vector<LightTerms> lightTerms_;  // per light
 };
 
 // Whether the Phong term specular * highlight^exponent is surely below a quarter of the last

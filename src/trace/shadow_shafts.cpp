@@ -59,15 +59,19 @@ ShadowShafts::ShadowShafts(const std::vector<Bounds>& items, const std::vector<B
   Bounds grid;
   for (const Bounds& b : items) grid.extend(b);
   if (items.empty() || lights.empty() || !isFinite(grid.lo) || !isFinite(grid.hi)) return;
+  // A light without a finite box (a directional one) gets no lists: its rays go to the BVH.
+  auto bounded = [](const Bounds& l) { return isFinite(l.lo) && isFinite(l.hi); };
+  if (std::none_of(lights.begin(), lights.end(), bounded)) return;
   double magnitude = grid.largestMagnitude();
   for (const Bounds& l : lights) {
-    if (!isFinite(l.lo) || !isFinite(l.hi)) return;
-    magnitude = std::max(magnitude, l.largestMagnitude());
+    if (bounded(l)) magnitude = std::max(magnitude, l.largestMagnitude());
   }
   // Far above the rounding of any coordinate, of a cell lookup or of a shadow ray's end.
   margin_ = 1e-7 * std::max(1.0, magnitude);
   // From the objects up to the lights: the floor around the objects, under the lights, is in.
-  for (const Bounds& l : lights) grid.extend(l);
+  for (const Bounds& l : lights) {
+    if (bounded(l)) grid.extend(l);
+  }
   grid = grid.widened(margin_);
 
   // About cellsFor(lights) cells, as near cubes as the grid's shape allows; an axis shorter
@@ -102,6 +106,10 @@ ShadowShafts::ShadowShafts(const std::vector<Bounds>& items, const std::vector<B
   std::vector<uint32_t> all(items.size());
   for (uint32_t i = 0; i < all.size(); ++i) all[i] = i;
   for (size_t l = 0; l < lights_; ++l) {
+    if (!bounded(lights[l])) {
+      for (size_t cell = 0; cell < cellCount(); ++cell) lists_[cell * lights_ + l] = {0, kLong};
+      continue;
+    }
     refine(items, lights[l].widened(margin_), l, {{0, 0, 0}, {dims_[0], dims_[1], dims_[2]}}, all);
   }
 }

@@ -77,6 +77,30 @@ Crossings intersect(const MeshShape& m, const Ray& ray, double tMin, double tMax
   return c;
 }
 
+Crossings intersect(const InstanceShape& instance, const Ray& ray, double tMin, double tMax) {
+  const Transform meshFromWorld = instance.worldFromMesh.inverse();
+  const Ray local{meshFromWorld.point(ray.origin), meshFromWorld.vector(ray.direction)};
+  Crossings c = intersect(MeshShape{instance.mesh, {}}, local, tMin, tMax);
+  for (int k = 0; k < c.count; ++k) {
+    c.normal[k] = normalize(Transform::normal(meshFromWorld, c.normal[k]));
+  }
+  return c;
+}
+
+Bounds meshBounds(const TriangleMesh& mesh) {
+  Bounds b;
+  for (const auto& t : mesh.triangles) {
+    for (const uint32_t v : t) b.extend(mesh.vertices[v]);
+  }
+  return b;
+}
+
+Bounds placedBounds(const Bounds& box, const Transform& transform) {
+  Bounds b;
+  for (int corner = 0; corner < 8; ++corner) b.extend(transform.point(box.corner(corner)));
+  return b;
+}
+
 Bounds boundsOf(const Shape& shape) {
   Bounds b;
   if (const auto* s = std::get_if<SphereShape>(&shape)) {
@@ -89,6 +113,8 @@ Bounds boundsOf(const Shape& shape) {
     for (const auto& t : m->mesh->triangles) {
       for (const uint32_t v : t) b.extend(m->mesh->vertices[v]);
     }
+  } else if (const auto* i = std::get_if<InstanceShape>(&shape)) {
+    b = placedBounds(meshBounds(*i->mesh), i->worldFromMesh);
   }
   return b;
 }

@@ -32,10 +32,17 @@ Crossings intersect(const PlaneShape& p, const Ray& ray, double tMin, double tMa
 // index), each triangle tried in turn, with the geometric normals (World's MeshBvh answers
 // the same nearest crossing through its tree).
 Crossings intersect(const MeshShape& m, const Ray& ray, double tMin, double tMax);
+// The same for the placed mesh, through the instance's inverse transform (normals carried
+// back to world space).
+Crossings intersect(const InstanceShape& instance, const Ray& ray, double tMin, double tMax);
 
 // Bounds of a shape (a mesh: of its triangles); planes are unbounded and return an empty (inverted) box.
 Bounds boundsOf(const Shape& shape);
 bool isBounded(const Shape& shape);
+// The box around a mesh's triangles, in its own coordinates.
+Bounds meshBounds(const TriangleMesh& mesh);
+// A box holding `box` once carried by `transform` (the box around its eight corners).
+Bounds placedBounds(const Bounds& box, const Transform& transform);
 
 // --- kernels ---------------------------------------------------------------------------------
 

@@ -22,6 +22,10 @@ struct TriangleMesh {
   // One per vertex, unit length (or zero where the faces around a vertex cancel, when they
   // were computed); empty: flat shading.
   std::vector<Vec3> normals;
+  // Per vertex, or empty: texture coordinates (u across, v down the image: trace/texture.h)
+  // and linear RGB colours (which multiply the material's colour).
+  std::vector<std::array<float, 2>> uvs;
+  std::vector<std::array<float, 3>> colors;
   bool operator==(const TriangleMesh&) const = default;
 };
 

@@ -12,6 +12,7 @@
 
 #include "trace/bvh.h"
 #include "trace/shapes.h"
+#include "trace/triangle.h"
 
 namespace prt {
 namespace {
@@ -61,11 +62,17 @@ class Attenuators {
   uint32_t count_ = 0;
 };
 
-// Every point a shadow ray towards the light may aim at.
+// Every point a shadow ray towards the light may aim at (all of space for a directional
+// light, whose shadow rays run to infinity).
 Bounds boundsOf(const LightShape& shape) {
   Bounds b;
   if (const auto* p = std::get_if<PointLight>(&shape)) {
     b.extend(p->position);
+  } else if (const auto* spot = std::get_if<SpotLight>(&shape)) {
+    b.extend(spot->position);
+  } else if (std::holds_alternative<DirectionalLight>(shape)) {
+    const double inf = std::numeric_limits<double>::infinity();
+    b = Bounds{Vec3(-inf), Vec3(inf)};
   } else if (const auto* s = std::get_if<SphereLight>(&shape)) {
     b.extend(s->center - Vec3(s->radius));
     b.extend(s->center + Vec3(s->radius));
@@ -81,6 +88,21 @@ Bounds boundsOf(const LightShape& shape) {
 
 }  // namespace
 
+const MeshBvh& World::treeFor(const std::shared_ptr<const TriangleMesh>& mesh) {
+  for (const auto& tree : meshes_) {
+    if (tree->mesh() == mesh.get()) return *tree;  // placed again: built once
+  }
+  const auto start = std::chrono::steady_clock::now();
+  meshes_.push_back(std::make_unique<MeshBvh>(mesh));
+  const MeshBvh& tree = *meshes_.back();
+  meshStats_.buildSeconds +=
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  ++meshStats_.meshes;
+  meshStats_.triangles += tree.triangleCount();
+  meshStats_.bytes += tree.bytes();
+  return tree;
+}
+
 World::World(Scene scene) : scene_(std::move(scene)) {
   for (uint32_t i = 0; i < scene_.objects.size(); ++i) {
     const Object& o = scene_.objects[i];
@@ -91,15 +113,14 @@ World::World(Scene scene) : scene_(std::move(scene)) {
     } else if (const auto* b = std::get_if<BoxShape>(&o.shape)) {
       items_.push_back({b->min, b->max, boundsOf(o.shape), transmissivity, i, Kind::box});
     } else if (const auto* m = std::get_if<MeshShape>(&o.shape)) {
-      const auto start = std::chrono::steady_clock::now();
-      meshes_.push_back(std::make_unique<MeshBvh>(m->mesh));
-      const MeshBvh& mesh = *meshes_.back();
-      meshStats_.buildSeconds +=
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      ++meshStats_.meshes;
-      meshStats_.triangles += mesh.triangleCount();
-      meshStats_.bytes += mesh.bytes();
+      const MeshBvh& mesh = treeFor(m->mesh);
       items_.push_back({Vec3(), Vec3(), mesh.bounds(), transmissivity, i, Kind::mesh, &mesh});
+    } else if (const auto* instance = std::get_if<InstanceShape>(&o.shape)) {
+      const MeshBvh& mesh = treeFor(instance->mesh);
+      ++meshStats_.instances;
+      placements_.push_back(std::make_unique<Transform>(instance->worldFromMesh.inverse()));
+      items_.push_back({Vec3(), Vec3(), placedBounds(mesh.bounds(), instance->worldFromMesh),
+                        transmissivity, i, Kind::mesh, &mesh, placements_.back().get()});
     } else {
       const auto& p = std::get<PlaneShape>(o.shape);
       planes_.push_back({p.point, p.normal, transmissivity, i});
@@ -175,6 +196,30 @@ bool World::intersectFromInside(uint32_t object, const Ray& ray, Hit& hit) const
   return intersect(ray, 0.0, std::numeric_limits<double>::infinity(), hit);
 }
 
+SurfaceAttributes World::attributesAt(const Ray& ray, const Hit& hit) const {
+  SurfaceAttributes a;
+  const uint32_t index = hit.object < itemOfObject_.size() ? itemOfObject_[hit.object] : ~0u;
+  if (index >= items_.size() || items_[index].kind != Kind::mesh) return a;
+  const Item& item = items_[index];
+  const TriangleMesh& mesh = item.mesh->triangles();
+  if (mesh.uvs.empty() && mesh.colors.empty()) return a;
+  const auto& t = mesh.triangles[hit.triangle];
+  const TriangleHit h = triangleHit(ShearedRay(local(item, ray)), mesh.vertices[t[0]],
+                                    mesh.vertices[t[1]], mesh.vertices[t[2]]);
+  // Weights of a ray that grazes an edge may be a hair outside [0, 1]; they still interpolate.
+  if (!mesh.uvs.empty()) {
+    const auto &p = mesh.uvs[t[0]], &q = mesh.uvs[t[1]], &r = mesh.uvs[t[2]];
+    a.u = h.u * p[0] + h.v * q[0] + h.w * r[0];
+    a.v = h.u * p[1] + h.v * q[1] + h.w * r[1];
+  }
+  if (!mesh.colors.empty()) {
+    const auto &p = mesh.colors[t[0]], &q = mesh.colors[t[1]], &r = mesh.colors[t[2]];
+    a.color = {h.u * p[0] + h.v * q[0] + h.w * r[0], h.u * p[1] + h.v * q[1] + h.w * r[1],
+               h.u * p[2] + h.v * q[2] + h.w * r[2]};
+  }
+  return a;
+}
+
 std::vector<Bounds> World::itemBounds() const {
   std::vector<Bounds> boxes;
   for (const Item& item : items_) boxes.push_back(item.box);
@@ -204,7 +249,7 @@ bool World::intersect(const Ray& ray, double tMin, double tMax, Hit& hit,
     if (item.kind == Kind::mesh) {
       double t = nearest;
       uint32_t triangle = 0;
-      if (!item.mesh->nearest(ray, tMin, t, triangle)) return nearest;
+      if (!item.mesh->nearest(local(item, ray), tMin, t, triangle)) return nearest;
       if (!(t < nearest || ranks[index] < bestRank)) return nearest;  // t == nearest: a tie
       nearest = t;
       bestRank = ranks[index];
@@ -227,7 +272,13 @@ bool World::intersect(const Ray& ray, double tMin, double tMax, Hit& hit,
     // The normal as intersect(shape) gives it for its first crossing, which is this one.
     hit.object = bestItem->object;
     if (bestItem->kind == Kind::mesh) {
-      hit.normal = bestItem->mesh->normal(ray, bestTriangle);
+      hit.triangle = bestTriangle;
+      if (bestItem->meshFromWorld == nullptr) {
+        hit.normal = bestItem->mesh->normal(ray, bestTriangle);
+      } else {
+        hit.normal = normalize(Transform::normal(
+            *bestItem->meshFromWorld, bestItem->mesh->normal(local(*bestItem, ray), bestTriangle)));
+      }
     } else if (bestItem->kind == Kind::sphere) {
       hit.normal = (ray.at(nearest) - bestItem->a) * bestItem->b.y;  // times 1 / radius
     } else {
@@ -280,7 +331,7 @@ double World::transmittance(const Ray& ray, double tMin, double distance,
       if (!s.hit) return distance;
       crossings = s.nearCrosses(tMin, distance) + s.farCrosses(tMin, distance);
     } else {
-      crossings = item.mesh->crossings(ray, tMin, distance, item.transmissivity == 0);
+      crossings = item.mesh->crossings(local(item, ray), tMin, distance, item.transmissivity == 0);
       if (crossings == 0) return distance;
     }
     if (crossings == 0 ||

@@ -28,6 +28,14 @@ struct Hit {
   Vec3 point;
   Vec3 normal;          // outward unit normal of the surface at `point`
   uint32_t object = 0;  // index into Scene::objects
+  uint32_t triangle = 0;  // a mesh's: which of its triangles was met
+};
+
+// What a mesh carries at a point besides its normal (trace/triangle_mesh.h): the texture
+// coordinates and vertex colour interpolated there, when the mesh has them.
+struct SurfaceAttributes {
+  double u = 0, v = 0;
+  Color color{1, 1, 1};
 };
 
 class World {
@@ -50,13 +58,19 @@ class World {
   // leaves that box, and the BVH is asked only when the ray gets that far.
   bool intersectFromInside(uint32_t object, const Ray& ray, Hit& hit) const;
 
+  // The attributes of the mesh object met by `ray` at `hit` (hit.object a mesh or an
+  // instance; the defaults for any other object and for a mesh without them).
+  SurfaceAttributes attributesAt(const Ray& ray, const Hit& hit) const;
+
   // The boxes of the bounded objects, which the BVH holds as its items.
   std::vector<Bounds> itemBounds() const;
 
   // What the meshes cost to prepare: their triangles, the seconds their trees took to build
-  // (on the thread that built the World) and the bytes those trees and triangles hold.
+  // (on the thread that built the World) and the bytes those trees and triangles hold. A mesh
+  // placed by several instances is counted (and built) once; `instances` counts the objects
+  // that place one.
   struct MeshStats {
-    size_t meshes = 0, triangles = 0, bytes = 0;
+    size_t meshes = 0, triangles = 0, bytes = 0, instances = 0;
     double buildSeconds = 0;
   };
   const MeshStats& meshStats() const { return meshStats_; }
@@ -88,7 +102,16 @@ class World {
     uint32_t object = 0;
     Kind kind = Kind::box;
     const MeshBvh* mesh = nullptr;  // for a mesh; owned by meshes_
+    // For an instance of a mesh: the inverse of its placement (owned by placements_), which
+    // carries rays into the mesh's coordinates; null for a mesh placed in world space.
+    const Transform* meshFromWorld = nullptr;
   };
+  // The ray in the coordinates of a mesh item's tree (the same distances along it).
+  static Ray local(const Item& item, const Ray& ray) {
+    if (item.meshFromWorld == nullptr) return ray;
+    return {item.meshFromWorld->point(ray.origin), item.meshFromWorld->vector(ray.direction)};
+  }
+  const MeshBvh& treeFor(const std::shared_ptr<const TriangleMesh>& mesh);
   struct Plane {
     Vec3 point, normal;
     double transmissivity = 0;
@@ -108,6 +131,7 @@ class World {
   ShadowShafts shafts_;
   std::vector<Item> items_;
   std::vector<std::unique_ptr<MeshBvh>> meshes_;
+  std::vector<std::unique_ptr<Transform>> placements_;
   MeshStats meshStats_;
   Bounds itemsBox_;  // around all of them
   std::vector<Plane> planes_;

@@ -1,0 +1,40 @@
+#pragma once
+// The binary part of a scene, for the master to send with the scene text so that workers need
+// no copy of any file: the triangles of `mesh` blocks, and what each `import` block brought in
+// (its objects, placed, with their materials, and its textures' decoded texels). writeScene
+// writes each such block as it was read (file, transform); a worker parses that text with the
+// assets from here in place of the files (parseScene's `shipped`), the same doubles and texels
+// bit for bit. A mesh or an image used by several objects or imports is packed once.
+//
+// Layout (little-endian, as the hosts of a cluster are; core/byte_codec.h): a tag and version;
+// the meshes (counts of vertices, triangles, normals, texture coordinates and colours, then
+// each array), the images (size, channels, name, texels), the mesh blocks (a mesh index each),
+// then per import its textures (image index, wrap modes, filter) and its objects (mesh index,
+// transform, material with texture references local to the import).
+// Pure functions; thread-safe.
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "trace/scene.h"
+
+namespace prt {
+
+struct ShippedImport {
+  std::vector<Object> objects;    // placed; TextureRefs index `textures`
+  std::vector<Texture> textures;
+};
+
+struct ShippedAssets {
+  std::vector<std::shared_ptr<const TriangleMesh>> meshBlocks;  // one per `mesh` block, in order
+  std::vector<ShippedImport> imports;                           // one per `import` block
+};
+
+// Empty for a scene with nothing to ship.
+std::vector<uint8_t> packAssets(const Scene& scene);
+// Throws std::runtime_error for bytes that are not such a packing (truncated, inconsistent
+// counts, indices out of range, values no scene can hold).
+ShippedAssets unpackAssets(const std::vector<uint8_t>& bytes);
+
+}  // namespace prt

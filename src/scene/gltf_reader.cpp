@@ -1,0 +1,725 @@
+// readGltfFile: glTF 2.0 (.gltf with its buffers and images, .glb, data: URIs) read with
+// tinygltf and translated: the default scene's node tree with its transforms, each mesh
+// primitive a TriangleMesh shared by every node that uses it, materials by mapPbrMaterial,
+// textures with their samplers and KHR_texture_transform, cameras and KHR_lights_punctual.
+//
+// tinygltf parses the JSON and loads buffers and images; every index and byte range it
+// leaves unchecked is checked here before it is read, and every file it reads goes through
+// readBoundedFile (a regular file of bounded size), so a hostile file cannot make this read
+// out of bounds, read a FIFO or a device, or allocate without limit.
+
+#include <tiny_gltf.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <numbers>
+#include <optional>
+#include <set>
+
+#include "scene/material_mapping.h"
+#include "scene/model_file.h"
+#include "scene/model_mesh.h"
+#include "scene/texture_file.h"
+
+namespace prt {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr uintmax_t kMaxGltfFileBytes = uintmax_t{2} << 30;
+constexpr size_t kMaxElements = size_t{1} << 31;  // vertices or indices of one accessor
+constexpr size_t kMaxObjects = size_t{1} << 24;   // placements of meshes in one file
+constexpr int kMaxDepth = 1024;                   // of the node tree
+// Photometric glTF units to PRT's: Blender writes 683 lm/W (its default, "Standard"
+// lighting mode) and renders a Lambertian surface with 1/pi of the irradiance.
+constexpr double kLightScale = 1.0 / (683.0 * std::numbers::pi);
+
+// --- files, through tinygltf's callbacks -----------------------------------------------------
+
+bool readBoundedFile(std::vector<unsigned char>* out, std::string* err, const std::string& path,
+                     void*) {
+  std::error_code error;
+  const auto status = fs::status(path, error);
+  if (status.type() != fs::file_type::regular) {
+    if (err) *err += "\"" + path + "\" is not a regular file\n";
+    return false;
+  }
+  const uintmax_t size = fs::file_size(path, error);
+  if (error || size > kMaxGltfFileBytes) {
+    if (err) *err += "\"" + path + "\" is too large (over 2 GiB)\n";
+    return false;
+  }
+  std::ifstream in(path, std::ios::binary);
+  out->resize(static_cast<size_t>(size));
+  if (!in || !in.read(reinterpret_cast<char*>(out->data()), static_cast<std::streamsize>(size))) {
+    if (err) *err += "\"" + path + "\" could not be read\n";
+    return false;
+  }
+  return true;
+}
+bool fileExists(const std::string& path, void*) {
+  std::error_code error;
+  return fs::exists(path, error);
+}
+std::string expandNothing(const std::string& path, void*) { return path; }
+bool writeNothing(std::string*, const std::string&, const std::vector<unsigned char>&,
+                  void*) {
+  return false;
+}
+
+// Images are kept encoded here and decoded by decodeTextureImage, within the budget.
+bool keepEncoded(tinygltf::Image* image, const int, std::string*, std::string*, int, int,
+                 const unsigned char* bytes, int size, void*) {
+  image->image.assign(bytes, bytes + size);
+  image->as_is = true;
+  return true;
+}
+
+// --- accessors ---------------------------------------------------------------------------------
+
+// One accessor's elements, every byte of them checked to lie inside its buffer.
+class Accessor {
+ public:
+  Accessor(const tinygltf::Model& model, int index, const std::string& what) {
+    if (index < 0 || static_cast<size_t>(index) >= model.accessors.size()) {
+      fail(what + " names accessor " + std::to_string(index) + ", which does not exist");
+    }
+    const tinygltf::Accessor& a = model.accessors[static_cast<size_t>(index)];
+    if (a.sparse.isSparse) fail(what + " uses a sparse accessor, which PRT does not read");
+    components_ = tinygltf::GetNumComponentsInType(static_cast<uint32_t>(a.type));
+    componentBytes_ = tinygltf::GetComponentSizeInBytes(static_cast<uint32_t>(a.componentType));
+    if (components_ <= 0 || components_ > 16 || componentBytes_ <= 0) {
+      fail(what + ": accessor " + std::to_string(index) + " has an unknown type");
+    }
+    type_ = a.componentType;
+    normalized_ = a.normalized;
+    count_ = a.count;
+    if (count_ > kMaxElements) fail(what + ": accessor " + std::to_string(index) + " is too long");
+    if (a.bufferView < 0) return;  // all zeros (glTF 2.0, 3.6.2.3)
+    if (static_cast<size_t>(a.bufferView) >= model.bufferViews.size()) {
+      fail(what + ": buffer view " + std::to_string(a.bufferView) + " does not exist");
+    }
+    const tinygltf::BufferView& view = model.bufferViews[static_cast<size_t>(a.bufferView)];
+    if (view.buffer < 0 || static_cast<size_t>(view.buffer) >= model.buffers.size()) {
+      fail(what + ": buffer " + std::to_string(view.buffer) + " does not exist");
+    }
+    const std::vector<unsigned char>& buffer = model.buffers[static_cast<size_t>(view.buffer)].data;
+    const size_t element = static_cast<size_t>(components_) * static_cast<size_t>(componentBytes_);
+    stride_ = view.byteStride != 0 ? view.byteStride : element;
+    if (stride_ < element && count_ > 1) fail(what + ": a stride shorter than an element");
+    if (view.byteOffset > buffer.size() || view.byteLength > buffer.size() - view.byteOffset) {
+      fail(what + ": buffer view " + std::to_string(a.bufferView) + " reaches past its buffer");
+    }
+    if (count_ > 0) {
+      // offset + (count - 1) * stride + element <= byteLength, without overflowing.
+      const size_t length = view.byteLength;
+      if (a.byteOffset > length || element > length - a.byteOffset ||
+          (count_ - 1) > (length - a.byteOffset - element) / std::max<size_t>(stride_, 1)) {
+        fail(what + ": accessor " + std::to_string(index) + " reaches past its buffer view");
+      }
+    }
+    data_ = buffer.data() + view.byteOffset + a.byteOffset;
+  }
+
+  size_t count() const { return count_; }
+  int components() const { return components_; }
+  bool isFloat() const { return type_ == TINYGLTF_COMPONENT_TYPE_FLOAT; }
+
+  // Component c of element i, as a number (normalised integers in [0, 1] or [-1, 1]).
+  double get(size_t i, int c) const {
+    if (data_ == nullptr) return 0;
+    const unsigned char* p = data_ + i * stride_ + static_cast<size_t>(c * componentBytes_);
+    switch (type_) {
+      case TINYGLTF_COMPONENT_TYPE_FLOAT: return load<float>(p);
+      case TINYGLTF_COMPONENT_TYPE_DOUBLE: return load<double>(p);
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return scaled(load<uint8_t>(p), 255.0);
+      case TINYGLTF_COMPONENT_TYPE_BYTE: return signedScaled(load<int8_t>(p), 127.0);
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return scaled(load<uint16_t>(p), 65535.0);
+      case TINYGLTF_COMPONENT_TYPE_SHORT: return signedScaled(load<int16_t>(p), 32767.0);
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: return scaled(load<uint32_t>(p), 4294967295.0);
+      case TINYGLTF_COMPONENT_TYPE_INT: return signedScaled(load<int32_t>(p), 2147483647.0);
+      default: return 0;
+    }
+  }
+  // Element i of an index accessor.
+  uint64_t index(size_t i) const {
+    if (data_ == nullptr) return 0;
+    const unsigned char* p = data_ + i * stride_;
+    switch (type_) {
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return load<uint8_t>(p);
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return load<uint16_t>(p);
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: return load<uint32_t>(p);
+      default: return ~uint64_t{0};
+    }
+  }
+  bool isIndexType() const {
+    return components_ == 1 && (type_ == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
+                                type_ == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ||
+                                type_ == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT);
+  }
+
+ private:
+  template <typename T>
+  static T load(const unsigned char* p) {
+    T v;
+    std::memcpy(&v, p, sizeof v);
+    return v;
+  }
+  double scaled(double v, double range) const { return normalized_ ? v / range : v; }
+  double signedScaled(double v, double range) const {
+    return normalized_ ? std::max(v / range, -1.0) : v;
+  }
+  [[noreturn]] static void fail(const std::string& why) { throw ModelFileError(why); }
+
+  const unsigned char* data_ = nullptr;
+  size_t count_ = 0, stride_ = 0;
+  int components_ = 0, componentBytes_ = 0, type_ = 0;
+  bool normalized_ = false;
+};
+
+// --- the reader ------------------------------------------------------------------------------
+
+double number(const tinygltf::Value& v, const std::string& key, double fallback) {
+  if (!v.IsObject() || !v.Has(key) || !v.Get(key).IsNumber()) return fallback;
+  return v.Get(key).GetNumberAsDouble();
+}
+const tinygltf::Value* extension(const tinygltf::ExtensionMap& map, const std::string& name) {
+  const auto found = map.find(name);
+  return found == map.end() ? nullptr : &found->second;
+}
+Vec3 vec3(const std::vector<double>& v, const Vec3& fallback) {
+  return v.size() >= 3 ? Vec3(v[0], v[1], v[2]) : fallback;
+}
+double degrees(double radians) { return radians * 180.0 / std::numbers::pi; }
+
+class GltfReader {
+ public:
+  GltfReader(const std::string& path, const ModelReadOptions& options)
+      : path_(path), options_(options), budget_(options.textureBudgetBytes) {}
+
+  ImportedModel read() {
+    load();
+    out_.format = "glTF 2.0";
+    std::vector<int> roots;
+    if (!model_.scenes.empty()) {
+      const size_t scene = model_.defaultScene >= 0 &&
+                                   static_cast<size_t>(model_.defaultScene) < model_.scenes.size()
+                               ? static_cast<size_t>(model_.defaultScene)
+                               : 0;
+      roots = model_.scenes[scene].nodes;
+    } else {  // no scene: every node that is no node's child
+      std::vector<char> child(model_.nodes.size(), 0);
+      for (const auto& n : model_.nodes) {
+        for (const int c : n.children) {
+          if (c >= 0 && static_cast<size_t>(c) < child.size()) child[static_cast<size_t>(c)] = 1;
+        }
+      }
+      for (size_t i = 0; i < child.size(); ++i) {
+        if (!child[i]) roots.push_back(static_cast<int>(i));
+      }
+    }
+    onPath_.assign(model_.nodes.size(), 0);
+    for (const int root : roots) visit(root, Transform::identity(), 0);
+    finishWarnings();
+    if (out_.objects.empty()) {
+      throw ModelFileError("model file \"" + path_ + "\" has no triangles to render" +
+                           (model_.meshes.empty() ? " (it holds no meshes)" : ""));
+    }
+    return std::move(out_);
+  }
+
+ private:
+  void load() {
+    tinygltf::TinyGLTF loader;
+    loader.SetImageLoader(&keepEncoded, nullptr);
+    tinygltf::FsCallbacks files{};
+    files.FileExists = &fileExists;
+    files.ExpandFilePath = &expandNothing;
+    files.ReadWholeFile = &readBoundedFile;
+    files.WriteWholeFile = &writeNothing;
+    files.user_data = nullptr;
+    loader.SetFsCallbacks(files);
+    std::string error, warning;
+    std::vector<unsigned char> head;
+    std::string headError;
+    if (!readBoundedFile(&head, &headError, path_, nullptr)) {
+      throw ModelFileError("model file " + headError.substr(0, headError.size() - 1));
+    }
+    const bool binary = head.size() >= 4 && std::memcmp(head.data(), "glTF", 4) == 0;
+    const std::string base = fs::path(path_).parent_path().string();
+    if (head.size() > std::numeric_limits<unsigned int>::max()) {
+      throw ModelFileError("model file \"" + path_ + "\" is too large");
+    }
+    const bool ok =
+        binary ? loader.LoadBinaryFromMemory(&model_, &error, &warning, head.data(),
+                                             static_cast<unsigned int>(head.size()), base)
+               : loader.LoadASCIIFromString(&model_, &error, &warning,
+                                            reinterpret_cast<const char*>(head.data()),
+                                            static_cast<unsigned int>(head.size()), base);
+    if (!ok) {
+      while (!error.empty() && (error.back() == '\n' || error.back() == ' ')) error.pop_back();
+      std::replace(error.begin(), error.end(), '\n', ';');
+      throw ModelFileError("model file \"" + path_ + "\" could not be read as glTF: " +
+                           (error.empty() ? "malformed" : error));
+    }
+    static const std::set<std::string> kUnderstood = {
+        "KHR_lights_punctual",       "KHR_materials_emissive_strength", "KHR_materials_ior",
+        "KHR_materials_transmission", "KHR_materials_unlit",            "KHR_materials_volume",
+        "KHR_texture_transform",     "KHR_mesh_quantization",           "KHR_materials_pbrSpecularGlossiness"};
+    for (const std::string& name : model_.extensionsRequired) {
+      if (!kUnderstood.count(name)) {
+        throw ModelFileError("model file \"" + path_ + "\" requires the glTF extension " + name +
+                             ", which PRT does not read");
+      }
+    }
+    for (const std::string& name : model_.extensionsUsed) {
+      if (!kUnderstood.count(name)) notUsed_.insert("the extension " + name);
+    }
+  }
+
+  void visit(int index, const Transform& parent, int depth) {
+    if (index < 0 || static_cast<size_t>(index) >= model_.nodes.size()) {
+      throw ModelFileError("model file \"" + path_ + "\": node " + std::to_string(index) +
+                           " does not exist");
+    }
+    const size_t i = static_cast<size_t>(index);
+    if (onPath_[i]) {
+      throw ModelFileError("model file \"" + path_ + "\": node " + std::to_string(index) +
+                           " is its own ancestor (a cycle in the node tree)");
+    }
+    if (depth > kMaxDepth) {
+      throw ModelFileError("model file \"" + path_ + "\": the node tree is deeper than " +
+                           std::to_string(kMaxDepth));
+    }
+    const tinygltf::Node& node = model_.nodes[i];
+    const Transform world = parent * localTransform(node);
+    if (!world.isUsable()) {
+      ++hiddenNodes_;  // a zero scale hides a subtree (animations do that); nothing to trace
+      return;
+    }
+    onPath_[i] = 1;
+    if (node.mesh >= 0) placeMesh(node, world);
+    if (node.skin >= 0) ++skinned_;
+    if (node.camera >= 0) addCamera(node, world);
+    if (const tinygltf::Value* lights = extension(node.extensions, "KHR_lights_punctual")) {
+      if (lights->IsObject() && lights->Has("light") && lights->Get("light").IsInt()) {
+        addLight(lights->Get("light").GetNumberAsInt(), world);
+      }
+    }
+    for (const int child : node.children) visit(child, world, depth + 1);
+    onPath_[i] = 0;
+  }
+
+  Transform localTransform(const tinygltf::Node& node) const {
+    if (node.matrix.size() == 16) return Transform::fromColumnMajor(node.matrix.data());
+    Transform t;
+    if (node.translation.size() == 3) {
+      t = Transform::translation({node.translation[0], node.translation[1], node.translation[2]});
+    }
+    if (node.rotation.size() == 4) {
+      t = t * Transform::rotation(node.rotation[0], node.rotation[1], node.rotation[2],
+                                  node.rotation[3]);
+    }
+    if (node.scale.size() == 3) t = t * Transform::scaling({node.scale[0], node.scale[1], node.scale[2]});
+    return t;
+  }
+
+  void placeMesh(const tinygltf::Node& node, const Transform& world) {
+    if (static_cast<size_t>(node.mesh) >= model_.meshes.size()) {
+      throw ModelFileError("model file \"" + path_ + "\": mesh " + std::to_string(node.mesh) +
+                           " does not exist");
+    }
+    const tinygltf::Mesh& mesh = model_.meshes[static_cast<size_t>(node.mesh)];
+    for (size_t p = 0; p < mesh.primitives.size(); ++p) {
+      const tinygltf::Primitive& primitive = mesh.primitives[p];
+      if (!primitive.targets.empty()) ++morphed_;
+      std::shared_ptr<const TriangleMesh> triangles = primitiveMesh(node.mesh, p, primitive);
+      if (triangles == nullptr) continue;
+      if (out_.objects.size() >= kMaxObjects) {
+        throw ModelFileError("model file \"" + path_ + "\" places meshes more than " +
+                             std::to_string(kMaxObjects) + " times");
+      }
+      out_.objects.push_back({InstanceShape{std::move(triangles), world}, material(primitive.material)});
+    }
+  }
+
+  // The mesh of one primitive, read once however many nodes use it; null if it has nothing to
+  // trace (points, lines, only degenerate triangles, an accessor PRT cannot read).
+  std::shared_ptr<const TriangleMesh> primitiveMesh(int mesh, size_t p,
+                                                    const tinygltf::Primitive& primitive) {
+    const auto key = std::make_pair(mesh, p);
+    if (const auto found = meshes_.find(key); found != meshes_.end()) return found->second;
+    std::shared_ptr<const TriangleMesh> result;
+    try {
+      result = readPrimitive(primitive, "mesh " + std::to_string(mesh) + " primitive " +
+                                            std::to_string(p));
+    } catch (const ModelFileError& e) {
+      out_.warnings.push_back("model file \"" + path_ + "\": " + e.what() + "; skipped");
+    }
+    meshes_[key] = result;
+    return result;
+  }
+
+  std::shared_ptr<const TriangleMesh> readPrimitive(const tinygltf::Primitive& primitive,
+                                                    const std::string& what) {
+    const int mode = primitive.mode < 0 ? TINYGLTF_MODE_TRIANGLES : primitive.mode;
+    if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP &&
+        mode != TINYGLTF_MODE_TRIANGLE_FAN) {
+      ++skips_.notTriangles;
+      return nullptr;
+    }
+    const auto position = primitive.attributes.find("POSITION");
+    if (position == primitive.attributes.end()) throw ModelFileError(what + " has no POSITION");
+    const Accessor positions(model_, position->second, what + " POSITION");
+    if (positions.components() != 3) throw ModelFileError(what + ": POSITION is not 3-vectors");
+    RawMesh raw;
+    const size_t n = positions.count();
+    raw.positions.resize(n);
+    for (size_t i = 0; i < n; ++i) {
+      raw.positions[i] = {positions.get(i, 0), positions.get(i, 1), positions.get(i, 2)};
+    }
+    auto attribute = [&](const std::string& name) -> std::optional<Accessor> {
+      const auto found = primitive.attributes.find(name);
+      if (found == primitive.attributes.end()) return std::nullopt;
+      Accessor a(model_, found->second, what + " " + name);
+      if (a.count() != n) throw ModelFileError(what + ": " + name + " has a count unlike POSITION's");
+      return a;
+    };
+    if (const auto normals = attribute("NORMAL"); normals && normals->components() == 3) {
+      raw.normals.resize(n);
+      for (size_t i = 0; i < n; ++i) {
+        raw.normals[i] = {normals->get(i, 0), normals->get(i, 1), normals->get(i, 2)};
+      }
+    }
+    const int uvSet = uvSetOf(primitive.material);
+    if (const auto uvs = attribute("TEXCOORD_" + std::to_string(uvSet)); uvs && uvs->components() == 2) {
+      raw.uvs.resize(n);
+      for (size_t i = 0; i < n; ++i) {
+        raw.uvs[i] = {static_cast<float>(uvs->get(i, 0)), static_cast<float>(uvs->get(i, 1))};
+      }
+    }
+    if (const auto colors = attribute("COLOR_0");
+        colors && (colors->components() == 3 || colors->components() == 4)) {
+      raw.colors.resize(n);
+      for (size_t i = 0; i < n; ++i) {
+        raw.colors[i] = {static_cast<float>(colors->get(i, 0)), static_cast<float>(colors->get(i, 1)),
+                         static_cast<float>(colors->get(i, 2))};
+      }
+    }
+    std::vector<uint64_t> order;
+    if (primitive.indices >= 0) {
+      const Accessor indices(model_, primitive.indices, what + " indices");
+      if (!indices.isIndexType()) throw ModelFileError(what + ": indices are not unsigned integers");
+      order.resize(indices.count());
+      for (size_t i = 0; i < order.size(); ++i) order[i] = indices.index(i);
+    } else {
+      order.resize(n);
+      for (size_t i = 0; i < n; ++i) order[i] = i;
+    }
+    auto add = [&](uint64_t a, uint64_t b, uint64_t c) {
+      if (a >= n || b >= n || c >= n) {
+        ++skips_.outOfRange;
+        return;
+      }
+      raw.triangles.push_back({static_cast<uint32_t>(a), static_cast<uint32_t>(b),
+                               static_cast<uint32_t>(c)});
+    };
+    if (mode == TINYGLTF_MODE_TRIANGLES) {
+      for (size_t i = 0; i + 2 < order.size(); i += 3) add(order[i], order[i + 1], order[i + 2]);
+    } else if (mode == TINYGLTF_MODE_TRIANGLE_STRIP) {
+      for (size_t i = 0; i + 2 < order.size(); ++i) {
+        if (i % 2 == 0) add(order[i], order[i + 1], order[i + 2]);
+        else add(order[i + 1], order[i], order[i + 2]);
+      }
+    } else {
+      for (size_t i = 1; i + 1 < order.size(); ++i) add(order[0], order[i], order[i + 1]);
+    }
+    return cleanMesh(std::move(raw), skips_);
+  }
+
+  const tinygltf::Material* materialAt(int index) const {
+    if (index < 0 || static_cast<size_t>(index) >= model_.materials.size()) return nullptr;
+    return &model_.materials[static_cast<size_t>(index)];
+  }
+
+  // The texture coordinate set the material's textures read (PRT reads one per primitive).
+  int uvSetOf(int index) const {
+    const tinygltf::Material* m = materialAt(index);
+    if (m == nullptr) return 0;
+    const tinygltf::TextureInfo& base = m->pbrMetallicRoughness.baseColorTexture;
+    const tinygltf::TextureInfo& info = base.index >= 0 ? base : m->emissiveTexture;
+    int set = info.texCoord;
+    if (const tinygltf::Value* t = extension(info.extensions, "KHR_texture_transform")) {
+      set = static_cast<int>(number(*t, "texCoord", set));
+    }
+    return std::clamp(set, 0, 7);
+  }
+
+  Material material(int index) {
+    if (const auto found = materials_.find(index); found != materials_.end()) return found->second;
+    const tinygltf::Material* m = materialAt(index);
+    PbrMaterialInputs in;
+    if (m == nullptr) {  // no material: grey and rough, as Blender's default, not glTF's metal
+      in.baseColor = Color(0.8);
+      in.metallic = 0;
+      in.roughness = 0.5;
+    } else {
+      const std::string name = m->name.empty() ? "material " + std::to_string(index) : "'" + m->name + "'";
+      const auto& pbr = m->pbrMetallicRoughness;
+      if (pbr.baseColorFactor.size() == 4) {
+        in.baseColor = {pbr.baseColorFactor[0], pbr.baseColorFactor[1], pbr.baseColorFactor[2]};
+        in.alpha = pbr.baseColorFactor[3];
+      }
+      in.baseColorTexture = textureRef(pbr.baseColorTexture, name);
+      in.metallic = pbr.metallicFactor;
+      in.roughness = pbr.roughnessFactor;
+      in.emissive = vec3(m->emissiveFactor, Color());
+      in.emissiveTexture = textureRef(m->emissiveTexture, name);
+      if (m->alphaMode == "MASK") in.alphaMode = PbrMaterialInputs::AlphaMode::mask;
+      if (m->alphaMode == "BLEND") in.alphaMode = PbrMaterialInputs::AlphaMode::blend;
+      in.alphaCutoff = m->alphaCutoff;
+      if (const auto* e = extension(m->extensions, "KHR_materials_emissive_strength")) {
+        in.emissiveStrength = number(*e, "emissiveStrength", 1);
+      }
+      if (const auto* e = extension(m->extensions, "KHR_materials_transmission")) {
+        in.transmission = number(*e, "transmissionFactor", 0);
+        if (e->Has("transmissionTexture")) notUsed_.insert("transmission textures (" + name + ")");
+      }
+      if (const auto* e = extension(m->extensions, "KHR_materials_ior")) in.ior = number(*e, "ior", 1.5);
+      if (extension(m->extensions, "KHR_materials_unlit")) in.unlit = true;
+      if (const auto* e = extension(m->extensions, "KHR_materials_pbrSpecularGlossiness")) {
+        specularGlossiness(*e, in, name);
+      }
+      for (const char* other : {"KHR_materials_clearcoat", "KHR_materials_sheen",
+                                "KHR_materials_specular", "KHR_materials_iridescence",
+                                "KHR_materials_anisotropy"}) {
+        if (extension(m->extensions, other)) notUsed_.insert(std::string(other) + " (" + name + ")");
+      }
+      if (pbr.metallicRoughnessTexture.index >= 0) {
+        notUsed_.insert("metallic-roughness textures, their factors are (" + name + ")");
+      }
+      if (m->normalTexture.index >= 0) notUsed_.insert("normal maps (" + name + ")");
+      if (m->occlusionTexture.index >= 0) notUsed_.insert("occlusion maps (" + name + ")");
+      if (in.alphaMode != PbrMaterialInputs::AlphaMode::opaque && in.baseColorTexture.texture >= 0 &&
+          out_.textures[static_cast<size_t>(in.baseColorTexture.texture)].image->channels % 2 == 0) {
+        notUsed_.insert("a texture's alpha, the factor's is (" + name + ")");
+      }
+    }
+    const Material mapped = mapPbrMaterial(in);
+    materials_[index] = mapped;
+    return mapped;
+  }
+
+  void specularGlossiness(const tinygltf::Value& e, PbrMaterialInputs& in, const std::string& name) {
+    in.metallic = 0;
+    in.roughness = 1 - number(e, "glossinessFactor", 1);
+    if (e.Has("diffuseFactor") && e.Get("diffuseFactor").IsArray() &&
+        e.Get("diffuseFactor").ArrayLen() == 4) {
+      const auto& f = e.Get("diffuseFactor");
+      in.baseColor = {f.Get(0).GetNumberAsDouble(), f.Get(1).GetNumberAsDouble(),
+                      f.Get(2).GetNumberAsDouble()};
+      in.alpha = f.Get(3).GetNumberAsDouble();
+    } else {
+      in.baseColor = Color(1);
+      in.alpha = 1;
+    }
+    if (e.Has("diffuseTexture") && e.Get("diffuseTexture").IsObject()) {
+      tinygltf::TextureInfo info;
+      info.index = static_cast<int>(number(e.Get("diffuseTexture"), "index", -1));
+      in.baseColorTexture = textureRef(info, name);
+    }
+  }
+
+  TextureRef textureRef(const tinygltf::TextureInfo& info, const std::string& material) {
+    TextureRef ref;
+    if (info.index < 0) return ref;
+    ref.texture = texture(info.index, material);
+    if (ref.texture < 0) return {};
+    if (const tinygltf::Value* t = extension(info.extensions, "KHR_texture_transform")) {
+      double ox = 0, oy = 0, sx = 1, sy = 1;
+      if (t->Has("offset") && t->Get("offset").ArrayLen() == 2) {
+        ox = t->Get("offset").Get(0).GetNumberAsDouble();
+        oy = t->Get("offset").Get(1).GetNumberAsDouble();
+      }
+      if (t->Has("scale") && t->Get("scale").ArrayLen() == 2) {
+        sx = t->Get("scale").Get(0).GetNumberAsDouble();
+        sy = t->Get("scale").Get(1).GetNumberAsDouble();
+      }
+      const double r = number(*t, "rotation", 0);
+      const double c = std::cos(r), s = std::sin(r);
+      // Translation * rotation * scale, as the extension defines it.
+      ref.uv.m = {c * sx, s * sy, ox, -s * sx, c * sy, oy};
+      for (const double v : ref.uv.m) {
+        if (!std::isfinite(v)) ref.uv = {};
+      }
+    }
+    return ref;
+  }
+
+  // The index in out_.textures of glTF texture `index`, or -1 when its image is missing or
+  // unreadable (a warning, or an error with --strict).
+  int texture(int index, const std::string& material) {
+    if (const auto found = textures_.find(index); found != textures_.end()) return found->second;
+    int result = -1;
+    if (static_cast<size_t>(index) < model_.textures.size()) {
+      const tinygltf::Texture& t = model_.textures[static_cast<size_t>(index)];
+      if (auto image = textureImage(t.source, material)) {
+        Texture texture;
+        texture.image = std::move(image);
+        if (t.sampler >= 0 && static_cast<size_t>(t.sampler) < model_.samplers.size()) {
+          const tinygltf::Sampler& s = model_.samplers[static_cast<size_t>(t.sampler)];
+          texture.wrapU = wrapOf(s.wrapS);
+          texture.wrapV = wrapOf(s.wrapT);
+          texture.nearest = s.magFilter == TINYGLTF_TEXTURE_FILTER_NEAREST;
+        }
+        result = static_cast<int>(out_.textures.size());
+        out_.textures.push_back(std::move(texture));
+      }
+    } else {
+      problem("material " + material + " names texture " + std::to_string(index) +
+              ", which does not exist");
+    }
+    textures_[index] = result;
+    return result;
+  }
+
+  static TextureWrap wrapOf(int mode) {
+    if (mode == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE) return TextureWrap::clamp;
+    if (mode == TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT) return TextureWrap::mirror;
+    return TextureWrap::repeat;
+  }
+
+  std::shared_ptr<const TextureImage> textureImage(int index, const std::string& material) {
+    if (const auto found = images_.find(index); found != images_.end()) return found->second;
+    std::shared_ptr<const TextureImage> result;
+    if (index < 0 || static_cast<size_t>(index) >= model_.images.size()) {
+      problem("a texture of material " + material + " names image " + std::to_string(index) +
+              ", which does not exist");
+    } else {
+      const tinygltf::Image& image = model_.images[static_cast<size_t>(index)];
+      const std::string name = !image.uri.empty() && image.uri.rfind("data:", 0) != 0
+                                   ? image.uri
+                                   : fs::path(path_).filename().string() + " image " +
+                                         std::to_string(index) +
+                                         (image.name.empty() ? "" : " '" + image.name + "'");
+      if (image.image.empty()) {
+        problem("texture image " + name + " was not found");
+      } else {
+        try {
+          result = decodeTextureImage(image.image.data(), image.image.size(), name, budget_);
+        } catch (const TextureError& e) {
+          problem(e.what());
+        }
+      }
+    }
+    images_[index] = result;
+    return result;
+  }
+
+  void problem(const std::string& what) {
+    if (options_.strict) throw ModelFileError("model file \"" + path_ + "\": " + what);
+    out_.warnings.push_back("model file \"" + path_ + "\": " + what + "; rendered without it");
+  }
+
+  void addCamera(const tinygltf::Node& node, const Transform& world) {
+    if (static_cast<size_t>(node.camera) >= model_.cameras.size()) return;
+    const tinygltf::Camera& c = model_.cameras[static_cast<size_t>(node.camera)];
+    ModelCamera camera;
+    camera.name = !c.name.empty() ? c.name
+                  : !node.name.empty() ? node.name
+                                       : "camera " + std::to_string(out_.cameras.size());
+    Camera& view = camera.camera;
+    view.eye = world.point({});
+    const Vec3 forward = world.vector({0, 0, -1});
+    view.up = world.vector({0, 1, 0});
+    if (!(length(forward) > 0) || !(length(cross(forward, view.up)) > 0)) return;
+    view.lookAt = view.eye + normalize(forward);
+    if (c.type == "orthographic") {
+      const double ymag = std::abs(c.orthographic.ymag), xmag = std::abs(c.orthographic.xmag);
+      if (!(ymag > 0) || !std::isfinite(ymag)) return;
+      view.orthoHeight = 2 * ymag * length(view.up);
+      if (xmag > 0 && std::isfinite(xmag)) camera.aspectRatio = xmag / ymag;
+    } else {
+      const double fov = degrees(c.perspective.yfov);
+      view.fovDegrees = fov > 0 && fov < 180 ? fov : 45;
+      const double aspect = c.perspective.aspectRatio;
+      if (aspect > 0 && std::isfinite(aspect)) camera.aspectRatio = aspect;
+    }
+    out_.cameras.push_back(std::move(camera));
+  }
+
+  void addLight(int index, const Transform& world) {
+    if (index < 0 || static_cast<size_t>(index) >= model_.lights.size()) return;
+    const tinygltf::Light& l = model_.lights[static_cast<size_t>(index)];
+    Light light;
+    const Color color = l.color.size() == 3 ? Color(l.color[0], l.color[1], l.color[2]) : Color(1);
+    light.color = color * (std::isfinite(l.intensity) ? std::max(0.0, l.intensity) : 1.0) * kLightScale;
+    const Vec3 position = world.point({});
+    const Vec3 axis = world.vector({0, 0, -1});
+    if (!(length(axis) > 0)) return;
+    if (l.type == "directional") {
+      light.shape = DirectionalLight{normalize(axis)};
+    } else if (l.type == "spot") {
+      const double outer = std::clamp(degrees(l.spot.outerConeAngle), 0.0, 90.0);
+      const double inner = std::clamp(degrees(l.spot.innerConeAngle), 0.0, outer);
+      light.shape = SpotLight{position, normalize(axis), inner, outer};
+      light.falloff = Falloff::inverseSquare;
+    } else {
+      light.shape = PointLight{position};
+      light.falloff = Falloff::inverseSquare;
+    }
+    if (!isFinite(light.color)) return;
+    out_.lights.push_back(light);
+  }
+
+  void finishWarnings() {
+    skips_.warn(out_.warnings, path_);
+    const std::string file = "model file \"" + path_ + "\": ";
+    if (skinned_ > 0) {
+      out_.warnings.push_back(file + "skinning is not applied (" + std::to_string(skinned_) +
+                              " skinned node" + (skinned_ == 1 ? "" : "s") + "): the rest pose is rendered");
+    }
+    if (morphed_ > 0) {
+      out_.warnings.push_back(file + "morph targets are not applied: the base shape is rendered");
+    }
+    if (!model_.animations.empty()) {
+      out_.warnings.push_back(file + "animations are not played: nodes are rendered as the file places them");
+    }
+    if (hiddenNodes_ > 0) {
+      out_.warnings.push_back(file + std::to_string(hiddenNodes_) +
+                              " node" + (hiddenNodes_ == 1 ? " is" : "s are") +
+                              " scaled to nothing (or not finite): skipped with what they hold");
+    }
+    if (!notUsed_.empty()) {
+      std::string list;
+      for (const std::string& what : notUsed_) list += (list.empty() ? "" : "; ") + what;
+      out_.warnings.push_back(file + "not used: " + list);
+    }
+  }
+
+  const std::string path_;
+  const ModelReadOptions& options_;
+  size_t budget_;
+  tinygltf::Model model_;
+  ImportedModel out_;
+  std::vector<char> onPath_;
+  std::map<std::pair<int, size_t>, std::shared_ptr<const TriangleMesh>> meshes_;
+  std::map<int, Material> materials_;
+  std::map<int, int> textures_;
+  std::map<int, std::shared_ptr<const TextureImage>> images_;
+  std::set<std::string> notUsed_;
+  MeshSkips skips_;
+  size_t skinned_ = 0, morphed_ = 0, hiddenNodes_ = 0;
+};
+
+}  // namespace
+
+ImportedModel readGltfFile(const std::string& path, const ModelReadOptions& options) {
+  return GltfReader(path, options).read();
+}
+
+}  // namespace prt

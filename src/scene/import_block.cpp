@@ -1,0 +1,190 @@
+#include "scene/import_block.h"
+
+#include <cmath>
+#include <numbers>
+
+#include "core/portable_math.h"
+#include "scene/block_reader.h"
+#include "scene/mesh_block.h"
+#include "scene/value_reader.h"
+#include "trace/shapes.h"
+
+namespace prt {
+namespace {
+
+// The file's objects placed, their texture references moved past the scene's textures.
+void addObjects(Scene& scene, const std::vector<Object>& objects, const Transform* placement,
+                int32_t textureOffset) {
+  for (Object o : objects) {
+    auto& instance = std::get<InstanceShape>(o.shape);
+    if (placement != nullptr) instance.worldFromMesh = *placement * instance.worldFromMesh;
+    for (TextureRef* ref : {&o.material.colorTexture, &o.material.emissionTexture}) {
+      if (ref->texture >= 0) ref->texture += textureOffset;
+    }
+    scene.objects.push_back(std::move(o));
+  }
+}
+
+// A light carried by the placement. Lights that fall with distance are made brighter by the
+// square of the placement's scale, so that a model scaled up looks as it did.
+Light placed(Light light, const Transform& t, double scale, double lightScale) {
+  light.color = light.color * lightScale;
+  if (light.falloff == Falloff::inverseSquare) light.color = light.color * (scale * scale);
+  std::visit(
+      [&](auto& shape) {
+        using T = std::decay_t<decltype(shape)>;
+        if constexpr (std::is_same_v<T, PointLight>) {
+          shape.position = t.point(shape.position);
+        } else if constexpr (std::is_same_v<T, SpotLight>) {
+          shape.position = t.point(shape.position);
+          shape.direction = normalize(t.vector(shape.direction));
+        } else if constexpr (std::is_same_v<T, DirectionalLight>) {
+          shape.direction = normalize(t.vector(shape.direction));
+        } else if constexpr (std::is_same_v<T, SphereLight>) {
+          shape.center = t.point(shape.center);
+          shape.radius *= scale;
+        } else {
+          shape.corner = t.point(shape.corner);
+          shape.edge1 = t.vector(shape.edge1);
+          shape.edge2 = t.vector(shape.edge2);
+        }
+      },
+      light.shape);
+  return light;
+}
+
+Camera placed(Camera camera, const Transform& t, double scale) {
+  camera.eye = t.point(camera.eye);
+  camera.lookAt = t.point(camera.lookAt);
+  camera.up = t.vector(camera.up);
+  camera.orthoHeight *= scale;
+  return camera;
+}
+
+const Transform kFromRightHanded = Transform::scaling({1, 1, -1});
+
+bool finiteColor(const Color& c) { return isFinite(c) && maxComponent(c) <= kMaxColorComponent; }
+
+}  // namespace
+
+Transform placementTransform(const Vec3& scale, const Vec3& rotateDegrees, const Vec3& translate) {
+  Transform t = Transform::scaling(scale);
+  for (int axis = 0; axis < 3; ++axis) {
+    if (rotateDegrees[axis] == 0) continue;
+    double s = 0, c = 1;
+    sinCosRadians(rotateDegrees[axis] * std::numbers::pi / 180.0, s, c);
+    Transform r;
+    const int a = (axis + 1) % 3, b = (axis + 2) % 3;  // the plane turned: y z, z x, x y
+    r.m[a][a] = c, r.m[a][b] = -s, r.m[b][a] = s, r.m[b][b] = c;
+    t = r * t;
+  }
+  return Transform::translation(translate) * t;
+}
+
+void readImportBlock(ImportBlocks& b, const Token& keyword) {
+  ImportSource source;
+  BlockReader block(b.in, keyword, "import",
+                    {"file", "scale", "rotate", "translate", "no_lights", "light_scale"});
+  while (const Token* param = block.next()) {
+    const std::string& name = param->text;
+    if (name == "file") source.file = readString(b.in, name);
+    if (name == "scale") source.scale = readMeshScale(b.in, name, "import");
+    if (name == "rotate") source.rotateDegrees = readVector(b.in, name, Range::closed(-36000, 36000));
+    if (name == "translate") source.translate = readVector(b.in, name, kCoordinate);
+    if (name == "no_lights") source.lights = false;
+    if (name == "light_scale") source.lightScale = readNumber(b.in, name, Range::closed(0, 1e9));
+  }
+  block.require({"file"});
+  const Token& fileToken = block.valueToken("file");
+  if (source.file.empty()) b.in.fail(fileToken, "the import's 'file' must not be empty");
+  std::filesystem::path path(source.file);
+  if (path.is_relative()) path = b.directory / path;
+  source.file = std::filesystem::absolute(path).lexically_normal().string();
+  // Model files are right-handed (glTF, and assimp makes every format so); PRT, as POV-Ray,
+  // is left-handed: the file's z is turned over first, so that a model keeps its shape and a
+  // file's camera sees it as the tool that made it did, not mirrored.
+  const Transform placement =
+      placementTransform(source.scale, source.rotateDegrees, source.translate) * kFromRightHanded;
+  // The size factor of the placement: the cube root of its volume factor.
+  const double scale = std::cbrt(std::abs(placement.determinant()));
+  Scene& scene = b.scene;
+  source.firstObject = scene.objects.size();
+  source.firstLight = scene.lights.size();
+  source.firstTexture = scene.textures.size();
+  const auto textureOffset = static_cast<int32_t>(scene.textures.size());
+
+  if (b.shipped != nullptr) {
+    const size_t k = scene.imports.size();
+    if (k >= b.shipped->imports.size()) {
+      b.in.fail(fileToken, "the scene has more imports than were sent with it (" +
+                               std::to_string(b.shipped->imports.size()) + ")");
+    }
+    const ShippedImport& shipped = b.shipped->imports[k];
+    addObjects(scene, shipped.objects, nullptr, textureOffset);  // placed by the master
+    scene.textures.insert(scene.textures.end(), shipped.textures.begin(), shipped.textures.end());
+    source.lights = false;  // the master wrote them out as light blocks
+  } else {
+    std::shared_ptr<const ImportedModel> model;
+    if (const auto found = b.models.find(source.file); found != b.models.end()) {
+      model = found->second;
+    } else {
+      try {
+        model = std::make_shared<const ImportedModel>(readModelFile(source.file, b.options));
+      } catch (const ModelFileError& e) {
+        b.in.fail(fileToken, e.what());
+      }
+      b.models.emplace(source.file, model);
+    }
+    if (b.warned.insert(source.file).second) {  // once per file, however often imported
+      for (const std::string& w : model->warnings) {
+        scene.warnings.push_back(b.in.source().fileName() + ":" + std::to_string(keyword.line) +
+                                 ": " + w);
+      }
+    }
+    addObjects(scene, model->objects, &placement, textureOffset);
+    scene.textures.insert(scene.textures.end(), model->textures.begin(), model->textures.end());
+    if (source.lights) {
+      for (const Light& light : model->lights) {
+        const Light l = placed(light, placement, scale, source.lightScale);
+        if (finiteColor(l.color)) scene.lights.push_back(l);
+      }
+    }
+    for (const ModelCamera& camera : model->cameras) {
+      ModelCamera offered = camera;
+      offered.camera = placed(camera.camera, placement, scale);
+      b.cameras.push_back({std::move(offered), source.file});
+    }
+  }
+  // Every vertex once placed must stay within the coordinates a scene allows.
+  for (size_t i = source.firstObject; i < scene.objects.size(); ++i) {
+    const Bounds box = boundsOf(scene.objects[i].shape);
+    if (!(box.largestMagnitude() <= kMaxCoordinate)) {
+      b.in.fail(fileToken, "the model reaches beyond " + std::to_string(static_cast<long>(kMaxCoordinate)) +
+                               " world units once placed");
+    }
+  }
+  source.objectCount = scene.objects.size() - source.firstObject;
+  source.lightCount = scene.lights.size() - source.firstLight;
+  source.textureCount = scene.textures.size() - source.firstTexture;
+  scene.imports.push_back(std::move(source));
+}
+
+Camera framingCamera(const Scene& scene) {
+  Bounds box;
+  for (const Object& o : scene.objects) {
+    if (isBounded(o.shape)) box.extend(boundsOf(o.shape));
+  }
+  Camera camera;
+  camera.fovDegrees = 40;
+  if (!(box.lo.x <= box.hi.x)) return camera;  // nothing bounded
+  const Vec3 center = box.centroid();
+  const double radius = std::max(0.5 * length(box.diagonal()), 1e-6);
+  const double distance = radius / std::sin(0.5 * camera.fovDegrees * std::numbers::pi / 180.0);
+  camera.lookAt = center;
+  // Models face +z in their files (glTF's convention), -z once imported.
+  camera.eye = center + distance * normalize(Vec3(0.55, 0.45, -1.0));
+  camera.up = {0, 1, 0};
+  return camera;
+}
+
+}  // namespace prt

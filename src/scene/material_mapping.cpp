@@ -1,0 +1,124 @@
+#include "scene/material_mapping.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace prt {
+namespace {
+
+constexpr double kDielectricReflectance = 0.04;  // glTF's F0 for every non-metal
+// A mirror term weaker than this costs a ray per hit for a change the eye does not see.
+constexpr double kLeastReflection = 0.02;
+
+double clamp01(double v) { return std::isfinite(v) ? std::clamp(v, 0.0, 1.0) : 0.0; }
+Color clamp01(const Color& c) { return {clamp01(c.x), clamp01(c.y), clamp01(c.z)}; }
+Color nonNegative(const Color& c) {
+  auto f = [](double v) { return std::isfinite(v) && v > 0 ? v : 0.0; };
+  return {f(c.x), f(c.y), f(c.z)};
+}
+
+// The Phong exponent whose lobe is about as wide as a GGX lobe of this roughness: Blinn-Phong's
+// 2 / alpha^2 - 2 with alpha = roughness^2 (Walter et al. 2007), a quarter of it for Phong's
+// reflection-vector form, between 1 and 10000.
+double phongExponentFor(double roughness) {
+  const double r = std::max(roughness, 0.03);
+  return std::clamp((2 / (r * r * r * r) - 2) / 4, 1.0, 10000.0);
+}
+
+// The half-angle of the cone of glossy rays for a roughness, in degrees.
+double glossFor(double roughness) { return std::min(45.0, 60 * roughness * roughness); }
+
+}  // namespace
+
+Material mapPbrMaterial(const PbrMaterialInputs& in) {
+  Material m;
+  const double metallic = clamp01(in.metallic), roughness = clamp01(in.roughness);
+  m.color = clamp01(in.baseColor);
+  m.colorTexture = in.baseColorTexture;
+  m.emission = nonNegative(in.emissive * (std::isfinite(in.emissiveStrength)
+                                              ? std::max(0.0, in.emissiveStrength)
+                                              : 1.0));
+  m.emissionTexture = in.emissiveTexture;
+  if (in.unlit) {  // shown as its colour, whatever the lights
+    m.diffuse = m.ambient = m.specular = 0;
+    m.emission = m.color;
+    m.emissionTexture = in.baseColorTexture;
+    m.color = Color();
+    m.colorTexture = {};
+    return m;
+  }
+  const double reflectance = kDielectricReflectance * (1 - metallic) + metallic;
+  m.metallic = metallic;
+  m.phongExponent = phongExponentFor(roughness);
+  // The Phong lobe normalised as a BRDF peaks at (n + 2) / (2 pi) times the reflectance; with
+  // lights scaled by 1 / pi (model lights: see the import notes) that is (n + 2) / 2.
+  m.specular = std::min(1.0, reflectance * (m.phongExponent + 2) / 2);
+  const double smooth = (1 - roughness) * (1 - roughness);
+  double transmission = clamp01(in.transmission) * (1 - metallic);
+  double ior = std::isfinite(in.ior) ? std::clamp(in.ior, 1.0, 10.0) : 1.5;
+  double reflect = reflectance * smooth;
+  if (transmission > 0) {
+    const double f0 = (ior - 1) / (ior + 1);
+    reflect = std::max(reflect, f0 * f0 * smooth);  // glass shows its Fresnel reflection
+  }
+  m.reflectivity = reflect >= kLeastReflection ? reflect : 0.0;
+  m.glossDegrees = m.reflectivity > 0 ? glossFor(roughness) : 0.0;
+  double cover = 1;  // how much of the surface is there: alpha
+  const double alpha = clamp01(in.alpha);
+  if (in.alphaMode == PbrMaterialInputs::AlphaMode::mask && alpha < in.alphaCutoff) cover = 0;
+  if (in.alphaMode == PbrMaterialInputs::AlphaMode::blend) cover = alpha;
+  if (cover < 1 && transmission == 0) {
+    transmission = 1 - cover;  // light passes straight through the missing part
+    ior = 1;
+  }
+  m.transmissivity = std::min(transmission, 1 - m.reflectivity);
+  if (m.transmissivity > 0) {
+    m.ior = ior;
+    m.translucencyDegrees = ior > 1 ? glossFor(roughness) : 0.0;
+  }
+  m.diffuse = (1 - metallic) * (1 - m.transmissivity) * cover;
+  m.ambient = m.diffuse;
+  m.specular *= cover;
+  if (cover == 0) m.reflectivity = m.specular = 0, m.glossDegrees = 0, m.transmissivity = 1;
+  return m;
+}
+
+Material mapCommonMaterial(const CommonMaterialInputs& in) {
+  Material m;
+  m.color = clamp01(in.diffuse);
+  m.colorTexture = in.diffuseTexture;
+  m.diffuse = 1;
+  m.ambient = 1;
+  m.emission = nonNegative(in.emissive);
+  m.emissionTexture = in.emissiveTexture;
+  const int illum = in.illum;
+  if (illum == 0) {  // "colour on, ambient off": the colour, unlit
+    m.emission = m.color;
+    m.emissionTexture = m.colorTexture;
+    m.diffuse = m.ambient = 0;
+    return m;
+  }
+  const double specular = clamp01(maxComponent(in.specular));
+  if (illum != 1 && specular > 0) {
+    m.specular = specular;
+    m.phongExponent = std::isfinite(in.shininess) ? std::clamp(in.shininess, 1.0, 10000.0) : 40;
+  }
+  // Illumination models 3 and up trace reflections, weighted by Ks; other formats say how
+  // much they reflect with a reflectivity of their own.
+  double reflect = 0;
+  if (illum >= 3 && illum != 4 && illum != 6 && illum != 9) reflect = specular;
+  if (illum == 4 || illum == 6 || illum == 7) reflect = std::max(reflect, specular * 0.1);
+  reflect = std::max(reflect, clamp01(in.reflectivity));
+  m.reflectivity = reflect >= kLeastReflection ? reflect : 0.0;
+  const double opacity = clamp01(in.opacity);
+  if (opacity < 1) {
+    m.transmissivity = std::min(1 - opacity, 1 - m.reflectivity);
+    // Only the glass models refract: most files write Ni whatever the material.
+    const bool glass = illum == 4 || illum == 6 || illum == 7 || illum == 9 || illum < 0;
+    m.ior = glass && std::isfinite(in.ior) ? std::clamp(in.ior, 1.0, 10.0) : 1.0;
+    m.diffuse = m.ambient = opacity;
+  }
+  return m;
+}
+
+}  // namespace prt

@@ -1,0 +1,65 @@
+#include "scene/model_file.h"
+
+#include <assimp/Importer.hpp>
+#include <cctype>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+
+namespace prt {
+namespace {
+
+std::string lowerExtension(const std::string& path) {
+  std::string e = std::filesystem::path(path).extension().string();
+  for (char& c : e) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return e;
+}
+
+bool isGltf(const std::string& path) {
+  const std::string e = lowerExtension(path);
+  if (e == ".gltf" || e == ".glb") return true;
+  char head[4] = {};
+  std::ifstream in(path, std::ios::binary);
+  return in.read(head, 4) && std::memcmp(head, "glTF", 4) == 0;
+}
+
+}  // namespace
+
+bool isModelFileName(const std::string& path) {
+  const std::string e = lowerExtension(path);
+  if (e.empty() || e == ".scene") return false;
+  if (e == ".gltf" || e == ".glb") return true;
+  return Assimp::Importer().IsExtensionSupported(e);
+}
+
+bool looksLikeModelFile(const std::string& path) {
+  std::error_code error;
+  if (std::filesystem::status(path, error).type() != std::filesystem::file_type::regular) {
+    return false;
+  }
+  char head[4] = {};
+  std::ifstream in(path, std::ios::binary);
+  if (in.read(head, 4) && std::memcmp(head, "glTF", 4) == 0) return true;  // binary glTF
+  // Binary formats assimp knows by their first bytes; text ones are left to the extension.
+  static const char* const kMagic[] = {"ply\n", "ply\r", "Kayd", "solid"};
+  for (const char* magic : kMagic) {
+    if (std::strncmp(head, magic, std::min<size_t>(4, std::strlen(magic))) == 0 && magic[0] != 's') {
+      return true;
+    }
+  }
+  return false;
+}
+
+ImportedModel readModelFile(const std::string& path, const ModelReadOptions& options) {
+  std::error_code error;
+  const auto status = std::filesystem::status(path, error);
+  if (status.type() == std::filesystem::file_type::not_found) {
+    throw ModelFileError("model file \"" + path + "\" does not exist");
+  }
+  if (status.type() != std::filesystem::file_type::regular) {
+    throw ModelFileError("model file \"" + path + "\" is not a regular file");
+  }
+  return isGltf(path) ? readGltfFile(path, options) : readAssimpFile(path, options);
+}
+
+}  // namespace prt
