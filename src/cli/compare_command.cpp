@@ -84,7 +84,8 @@ int runCompare(const CompareOptions& o) {
   PovOptions povOptions;
   povOptions.areaLightGrid = o.areaGrid;
   povOptions.fileName = stem + ".pov";
-  const std::string povText = toPovray(scene, settings, povOptions);
+  const PovExport pov = exportPovray(scene, settings, povOptions);
+  const std::string& povText = pov.text;
 
   auto start = std::chrono::steady_clock::now();
   const World world(scene);
@@ -95,6 +96,7 @@ int runCompare(const CompareOptions& o) {
   PovrayJob job;
   job.program = o.povray;
   job.sceneText = povText;
+  job.images = pov.images;
   job.width = scene.image.width;
   job.height = scene.image.height;
   job.samplesPerPixel = settings.samplesPerPixel;
@@ -142,6 +144,7 @@ int runCompare(const CompareOptions& o) {
     const std::string pair = (dir / (stem + ".compare.png")).string();
     writeImage(sideBySide(a, b, o.diffScale), pair);
     writeFileAtomically((dir / povOptions.fileName).string(), povText);
+    for (const PovImage& image : pov.images) writeImage(image.image, (dir / image.fileName).string());
     std::printf("  wrote %s (PRT | POV-Ray | difference x%g)\n", pair.c_str(), o.diffScale);
   }
   return 0;

@@ -12,6 +12,7 @@
 #include "core/input_error.h"
 #include "export/pov_exporter.h"
 #include "image/atomic_file.h"
+#include "image/image_io.h"
 #include "scene/scene_file.h"
 #include "trace/render_settings.h"
 
@@ -44,8 +45,11 @@ int runExport(const ExportOptions& o) {
   PovOptions options;
   options.areaLightGrid = o.areaGrid;
   options.fileName = std::filesystem::path(o.output).filename().string();
-  const std::string text = toPovray(scene, settings, options);
-  writeFileAtomically(o.output, text);
+  const PovExport pov = exportPovray(scene, settings, options);
+  // The texture images first: a .pov file that exists is one whose images do too.
+  const std::filesystem::path directory = std::filesystem::path(o.output).parent_path();
+  for (const PovImage& image : pov.images) writeImage(image.image, (directory / image.fileName).string());
+  writeFileAtomically(o.output, pov.text);
   if (!o.quiet) {
     std::printf("%s: POV-Ray 3.7 scene for %dx%d pixels, %d spp\n", o.output.c_str(),
                 scene.image.width, scene.image.height, settings.samplesPerPixel);

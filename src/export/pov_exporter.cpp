@@ -2,11 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <functional>
+#include <map>
 #include <numbers>
 #include <variant>
 
 #include "core/check.h"
+#include "trace/shapes.h"
 
 namespace prt {
 namespace {
@@ -101,6 +105,18 @@ void writeGlobalSettings(std::string& out, const Scene& scene) {
 void writeCamera(std::string& out, const Scene& scene) {
   const Camera& c = scene.camera;
   const double aspect = static_cast<double>(scene.image.width) / scene.image.height;
+  if (c.orthoHeight > 0) {  // parallel rays: right and up span the image plane
+    line(out, 0, "camera {  // PRT: orthographic, " + num(c.orthoHeight) + " units high");
+    line(out, 1, "orthographic");
+    line(out, 1, "location " + vec(c.eye));
+    line(out, 1, "right x*" + num(c.orthoHeight * aspect));
+    line(out, 1, "up y*" + num(c.orthoHeight));
+    line(out, 1, "sky " + vec(c.up));
+    line(out, 1, "look_at " + vec(c.lookAt));
+    line(out, 0, "}");
+    out += '\n';
+    return;
+  }
   line(out, 0, "camera {  // PRT: vertical field of view " + num(c.fovDegrees) + " degrees");
   line(out, 1, "perspective");
   line(out, 1, "location " + vec(c.eye));
@@ -113,9 +129,44 @@ void writeCamera(std::string& out, const Scene& scene) {
   out += '\n';
 }
 
-void writeLight(std::string& out, const Light& light, int grid) {
+// POV-Ray's light fading, 2 / (1 + (d / fade_distance)^2), is 2 fade_distance^2 / d^2 to a
+// relative 1e-6 at a thousand fade distances: the inverse-square law, once the colour is
+// divided by 2 fade_distance^2.
+constexpr double kFadeDistance = 1e-3;
+
+std::string fading(const Light& light) {
+  if (light.falloff != Falloff::inverseSquare) return "";
+  return " fade_distance " + num(kFadeDistance) + " fade_power 2";
+}
+Color povColor(const Light& light) {
+  return light.falloff == Falloff::inverseSquare
+             ? light.color / (2 * kFadeDistance * kFadeDistance)
+             : light.color;
+}
+
+void writeLight(std::string& out, const Light& light, int grid, const Bounds& scene) {
   if (const auto* p = std::get_if<PointLight>(&light.shape)) {
-    line(out, 0, "light_source { " + vec(p->position) + " color " + rgb(light.color) + " }");
+    line(out, 0, "light_source { " + vec(p->position) + " color " + rgb(povColor(light)) +
+                     fading(light) + " }");
+    return;
+  }
+  if (const auto* spot = std::get_if<SpotLight>(&light.shape)) {
+    // POV-Ray fades a spot between `radius` and `falloff` by the same smooth step of the
+    // cosines as PRT (tightness 0: no further narrowing).
+    line(out, 0, "light_source { " + vec(spot->position) + " color " + rgb(povColor(light)) +
+                     fading(light));
+    line(out, 1, "spotlight point_at " + vec(spot->position + spot->direction) + " radius " +
+                     num(spot->innerDegrees) + " falloff " + num(spot->outerDegrees) +
+                     " tightness 0");
+    line(out, 0, "}");
+    return;
+  }
+  if (const auto* sun = std::get_if<DirectionalLight>(&light.shape)) {
+    // Parallel rays from far beyond everything, along the direction.
+    const Vec3 center = scene.lo.x <= scene.hi.x ? scene.centroid() : Vec3();
+    const double reach = scene.lo.x <= scene.hi.x ? 1e3 * (1 + length(scene.diagonal())) : 1e6;
+    line(out, 0, "light_source { " + vec(center - reach * sun->direction) + " color " +
+                     rgb(light.color) + " parallel point_at " + vec(center) + " }");
     return;
   }
   const auto* s = std::get_if<SphereLight>(&light.shape);
@@ -124,7 +175,7 @@ void writeLight(std::string& out, const Light& light, int grid) {
   line(out, 0,
        s ? "light_source {  // sphere light, radius " + num(s->radius)
          : "light_source {  // rectangle light, corner " + vec(r->corner));
-  line(out, 1, vec(center) + " color " + rgb(light.color));
+  line(out, 1, vec(center) + " color " + rgb(povColor(light)) + fading(light));
   if (grid <= 1) {
     line(out, 1, "// one sample: a point light at the centre");
     line(out, 0, "}");
@@ -150,66 +201,98 @@ void writeLight(std::string& out, const Light& light, int grid) {
 // Hall's surface in POV-Ray terms. POV-Ray multiplies ambient and diffuse (not phong) by the
 // opacity 1 - transmit, so both are divided by it here; transmit itself matches k_t for the
 // transmitted ray and for shadow rays (POV-Ray, like PRT, multiplies the light by transmit at
-// every surface crossed).
-void writeMaterial(std::string& out, const Material& m) {
+// every surface crossed). `pigment`, when given, replaces the material's colour (an image map,
+// or a vertex's colour); it must already carry the transmit. POV-Ray multiplies emission by
+// the pigment, PRT does not: the emission is divided by the colour, or, on a surface lit by
+// nothing else, becomes the pigment.
+void writeMaterial(std::string& out, const Material& m, const std::string& pigment = "",
+                   int indent = 1) {
   const bool localLight = m.ambient > 0 || m.diffuse > 0;
   const double transmit =
       localLight ? std::min(m.transmissivity, kMaxTransmitWithLocalLight) : m.transmissivity;
   const double opacity = 1.0 - transmit;
   const double ambient = localLight ? m.ambient / opacity : 0.0;
   const double diffuse = localLight ? m.diffuse / opacity : 0.0;
+  const bool emits = m.emission != Color();
+  const bool unlit = emits && !localLight && m.specular == 0 && pigment.empty();
 
-  line(out, 1, "texture {");
-  if (transmit > 0) {
-    line(out, 2,
+  line(out, indent, "texture {");
+  if (unlit) {
+    line(out, indent + 1, "pigment { " + rgb(m.emission) + " }");
+  } else if (!pigment.empty()) {
+    line(out, indent + 1, pigment);
+  } else if (transmit > 0) {
+    line(out, indent + 1,
          "pigment { rgbt <" + num(m.color.x) + ", " + num(m.color.y) + ", " + num(m.color.z) +
              ", " + num(transmit) + "> }");
   } else {
-    line(out, 2, "pigment { " + rgb(m.color) + " }");
+    line(out, indent + 1, "pigment { " + rgb(m.color) + " }");
   }
   std::string finish =
       "finish { ambient " + num(ambient) + " diffuse " + num(diffuse) + " brilliance 1";
-  if (m.specular > 0) {
-    finish += " phong " + num(m.specular) + " phong_size " + num(m.phongExponent);
+  if (unlit) {
+    finish += " emission 1";
+  } else if (emits) {
+    auto over = [](double e, double c) { return c > 0 ? e / c : 0.0; };
+    finish += " emission " + rgb(Color(over(m.emission.x, m.color.x), over(m.emission.y, m.color.y),
+                                       over(m.emission.z, m.color.z)));
   }
-  if (m.reflectivity > 0) finish += " reflection { " + num(m.reflectivity) + " }";
-  line(out, 2, finish + " }");
-  line(out, 1, "}");
-  if (m.transmissivity > 0) line(out, 1, "interior { ior " + num(m.ior) + " }");
+  const std::string metallic = m.metallic > 0 ? " metallic " + num(m.metallic) : "";
+  if (m.specular > 0) {
+    finish += " phong " + num(m.specular) + " phong_size " + num(m.phongExponent) + metallic;
+  }
+  if (m.reflectivity > 0) finish += " reflection { " + num(m.reflectivity) + metallic + " }";
+  line(out, indent + 1, finish + " }");
+  line(out, indent, "}");
+  if (indent > 1) return;  // a vertex's texture: the object has the interior
+  if (m.transmissivity > 0) line(out, indent, "interior { ior " + num(m.ior) + " }");
   if (m.glossDegrees > 0 && m.reflectivity > 0) {
-    line(out, 1, "// gloss " + num(m.glossDegrees) + " degrees: POV-Ray reflects as a mirror");
+    line(out, indent, "// gloss " + num(m.glossDegrees) + " degrees: POV-Ray reflects as a mirror");
   }
   if (m.translucencyDegrees > 0 && m.transmissivity > 0) {
-    line(out, 1,
+    line(out, indent,
          "// translucency " + num(m.translucencyDegrees) +
              " degrees: POV-Ray transmits without blur");
   }
   if (transmit != m.transmissivity) {
-    line(out, 1,
+    line(out, indent,
          "// transmit " + num(m.transmissivity) + " capped at " + num(transmit) +
              " to keep ambient and diffuse");
   }
 }
 
+// Rows of items, a few to a line.
+void rows(std::string& out, int indent, size_t count, const std::function<std::string(size_t)>& item) {
+  std::string row;
+  for (size_t i = 0; i < count; ++i) {
+    row += item(i);
+    if (i + 1 < count) row += ", ";
+    if (row.size() > 90 || i + 1 == count) {
+      line(out, indent, row);
+      row.clear();
+    }
+  }
+}
+
+std::string triple(const std::array<uint32_t, 3>& t) {
+  return "<" + std::to_string(t[0]) + ", " + std::to_string(t[1]) + ", " + std::to_string(t[2]) + ">";
+}
+
+// What a mesh2 carries besides its triangles: texture coordinates (already mapped by the
+// material's transform, in POV-Ray's v-up convention), and per-vertex textures (the material
+// at each vertex's colour).
+struct MeshExtras {
+  const UvTransform* uv = nullptr;    // write the mesh's uv_vectors through this
+  const Material* vertexColors = nullptr;  // write a texture per vertex of this material
+};
+
 // POV-Ray's mesh2: the vertices (and normals, for smooth shading) once each, then the
 // triangles by index. POV-Ray, like PRT, refracts at each triangle a ray crosses.
-void writeMesh(std::string& out, const TriangleMesh& mesh) {
+void writeMesh(std::string& out, const TriangleMesh& mesh, const MeshExtras& extras = {}) {
   line(out, 0, "mesh2 {");
   auto vectors = [&](const char* name, const std::vector<Vec3>& values) {
-    std::string head = name;
-    head += " { ";
-    head += std::to_string(values.size());
-    head += ',';
-    line(out, 1, head);
-    std::string row;
-    for (size_t i = 0; i < values.size(); ++i) {
-      row += vec(values[i]);
-      if (i + 1 < values.size()) row += ", ";
-      if (row.size() > 90 || i + 1 == values.size()) {
-        line(out, 2, row);
-        row.clear();
-      }
-    }
+    line(out, 1, std::string(name) + " { " + std::to_string(values.size()) + ",");
+    rows(out, 2, values.size(), [&](size_t i) { return vec(values[i]); });
     line(out, 1, "}");
   };
   vectors("vertex_vectors", mesh.vertices);
@@ -218,48 +301,159 @@ void writeMesh(std::string& out, const TriangleMesh& mesh) {
   bool smooth = !mesh.normals.empty();
   for (const Vec3& n : mesh.normals) smooth = smooth && n != Vec3();
   if (smooth) vectors("normal_vectors", mesh.normals);
-  std::string faces = "face_indices { ";
-  faces += std::to_string(mesh.triangles.size());
-  faces += ',';
-  line(out, 1, faces);
-  std::string row;
-  for (size_t i = 0; i < mesh.triangles.size(); ++i) {
-    const auto& t = mesh.triangles[i];
-    row += '<';
-    row += std::to_string(t[0]);
-    row += ", ";
-    row += std::to_string(t[1]);
-    row += ", ";
-    row += std::to_string(t[2]);
-    row += i + 1 < mesh.triangles.size() ? ">, " : ">";
-    if (row.size() > 90 || i + 1 == mesh.triangles.size()) {
-      line(out, 2, row);
-      row.clear();
-    }
+  const bool uvs = extras.uv != nullptr && !mesh.uvs.empty();
+  if (uvs) {
+    line(out, 1, "uv_vectors { " + std::to_string(mesh.uvs.size()) + ",");
+    const auto& t = extras.uv->m;
+    rows(out, 2, mesh.uvs.size(), [&](size_t i) {
+      const double u = mesh.uvs[i][0], v = mesh.uvs[i][1];
+      const double a = t[0] * u + t[1] * v + t[2], b = t[3] * u + t[4] * v + t[5];
+      return "<" + num(a) + ", " + num(1 - b) + ">";  // v down (PRT) to v up (POV-Ray)
+    });
+    line(out, 1, "}");
   }
+  const bool perVertex = extras.vertexColors != nullptr && !mesh.colors.empty();
+  if (perVertex) {
+    line(out, 1, "texture_list { " + std::to_string(mesh.colors.size()) + ",");
+    for (const auto& c : mesh.colors) {
+      Material at = *extras.vertexColors;
+      at.color = at.color * Color(c[0], c[1], c[2]);
+      const double transmit = std::min(at.transmissivity, kMaxTransmitWithLocalLight);
+      writeMaterial(out, at,
+                    transmit > 0 ? "pigment { rgbt <" + num(at.color.x) + ", " + num(at.color.y) +
+                                       ", " + num(at.color.z) + ", " + num(transmit) + "> }"
+                                 : "pigment { " + rgb(at.color) + " }",
+                    2);
+    }
+    line(out, 1, "}");
+  }
+  line(out, 1, "face_indices { " + std::to_string(mesh.triangles.size()) + ",");
+  rows(out, 2, mesh.triangles.size(), [&](size_t i) {
+    const auto& t = mesh.triangles[i];
+    return perVertex ? triple(t) + ", " + std::to_string(t[0]) + ", " + std::to_string(t[1]) +
+                           ", " + std::to_string(t[2])
+                     : triple(t);
+  });
   line(out, 1, "}");
+  if (uvs) {  // the uv coordinates of each corner are those of its vertex
+    line(out, 1, "uv_indices { " + std::to_string(mesh.triangles.size()) + ",");
+    rows(out, 2, mesh.triangles.size(), [&](size_t i) { return triple(mesh.triangles[i]); });
+    line(out, 1, "}");
+  }
 }
 
-void writeObject(std::string& out, const Object& object) {
-  if (const auto* s = std::get_if<SphereShape>(&object.shape)) {
-    line(out, 0, "sphere {");
-    line(out, 1, vec(s->center) + ", " + num(s->radius));
-  } else if (const auto* b = std::get_if<BoxShape>(&object.shape)) {
-    line(out, 0, "box {");
-    line(out, 1, vec(b->min) + ", " + vec(b->max));
-  } else if (const auto* m = std::get_if<MeshShape>(&object.shape)) {
-    writeMesh(out, *m->mesh);
-  } else {
-    const auto& p = std::get<PlaneShape>(object.shape);
-    const Vec3 n = normalize(p.normal);
-    // POV-Ray's plane is the solid half-space below it, visible from both sides; PRT's is
-    // visible, and casts shadows, only from the side its normal faces.
-    line(out, 0, "plane {  // through " + vec(p.point) + "; PRT's plane is one-sided");
-    line(out, 1, vec(n) + ", " + num(dot(p.point, n)));
+// The export of one scene: declared meshes and written texture images kept so that each is
+// written once.
+class PovWriter {
+ public:
+  PovWriter(const Scene& scene, const PovOptions& options) : scene_(scene), options_(options) {
+    const std::string& f = options.fileName;
+    const size_t dot = f.rfind('.');
+    stem_ = f.substr(0, dot == 0 || dot == std::string::npos ? f.size() : dot);
   }
-  writeMaterial(out, object.material);
-  line(out, 0, "}");
-}
+
+  void object(std::string& out, const Object& object) {
+    if (const auto* s = std::get_if<SphereShape>(&object.shape)) {
+      line(out, 0, "sphere {");
+      line(out, 1, vec(s->center) + ", " + num(s->radius));
+    } else if (const auto* b = std::get_if<BoxShape>(&object.shape)) {
+      line(out, 0, "box {");
+      line(out, 1, vec(b->min) + ", " + vec(b->max));
+    } else if (const auto* m = std::get_if<MeshShape>(&object.shape)) {
+      writeMesh(out, *m->mesh);
+    } else if (const auto* i = std::get_if<InstanceShape>(&object.shape)) {
+      return instance(out, *i, object.material);
+    } else {
+      const auto& p = std::get<PlaneShape>(object.shape);
+      const Vec3 n = normalize(p.normal);
+      // POV-Ray's plane is the solid half-space below it, visible from both sides; PRT's is
+      // visible, and casts shadows, only from the side its normal faces.
+      line(out, 0, "plane {  // through " + vec(p.point) + "; PRT's plane is one-sided");
+      line(out, 1, vec(n) + ", " + num(dot(p.point, n)));
+    }
+    writeMaterial(out, object.material);
+    line(out, 0, "}");
+  }
+
+  std::vector<PovImage> takeImages() { return std::move(images_); }
+
+ private:
+  // A mesh placed by a matrix, its mesh2 declared once for each way it is textured.
+  void instance(std::string& out, const InstanceShape& instance, const Material& m) {
+    const TriangleMesh& mesh = *instance.mesh;
+    const bool textured = m.colorTexture.texture >= 0 && !mesh.uvs.empty();
+    const bool perVertex = !mesh.colors.empty();
+    MeshExtras extras;
+    if (textured) extras.uv = &m.colorTexture.uv;
+    if (perVertex) extras.vertexColors = &m;
+    std::string key = std::to_string(reinterpret_cast<uintptr_t>(&mesh));
+    if (textured) {
+      for (const double v : m.colorTexture.uv.m) key += " " + num(v);
+    }
+    if (perVertex) key += " material " + std::to_string(declared_.size());  // its own each time
+    auto [at, added] = declared_.try_emplace(key, "PRT_mesh_" + std::to_string(declared_.size()));
+    if (added) {
+      std::string text;
+      writeMesh(text, mesh, extras);
+      line(text, 0, "}");
+      out += "#declare " + at->second + " =\n" + text;
+    }
+    const auto& t = instance.worldFromMesh.m;
+    line(out, 0, "object { " + at->second);
+    // POV-Ray's rows are the images of x, y and z, then the translation.
+    line(out, 1, "matrix <" + num(t[0][0]) + ", " + num(t[1][0]) + ", " + num(t[2][0]) + ", " +
+                     num(t[0][1]) + ", " + num(t[1][1]) + ", " + num(t[2][1]) + ", " +
+                     num(t[0][2]) + ", " + num(t[1][2]) + ", " + num(t[2][2]) + ", " +
+                     num(t[0][3]) + ", " + num(t[1][3]) + ", " + num(t[2][3]) + ">");
+    if (!perVertex) writeMaterial(out, m, textured ? imagePigment(m) : "");
+    else if (m.transmissivity > 0) line(out, 1, "interior { ior " + num(m.ior) + " }");
+    if (m.emissionTexture.texture >= 0) {
+      line(out, 1, "// emission texture: POV-Ray gets the emission colour only");
+    }
+    line(out, 0, "}");
+  }
+
+  // The material's texture times its colour as an image map: POV-Ray's pigments cannot be
+  // multiplied by a colour, so the product is written as the image.
+  std::string imagePigment(const Material& m) {
+    const Texture& texture = scene_.textures[static_cast<size_t>(m.colorTexture.texture)];
+    std::string key = std::to_string(m.colorTexture.texture) + " " + vec(m.color);
+    auto [at, added] = imageFiles_.try_emplace(key, "");
+    if (added) {
+      at->second = stem_ + "_texture" + std::to_string(images_.size()) + ".png";
+      const TextureImage& source = *texture.image;
+      Image image(source.width, source.height);
+      for (int y = 0; y < source.height; ++y) {
+        for (int x = 0; x < source.width; ++x) {
+          const size_t i = static_cast<size_t>(y) * static_cast<size_t>(source.width) + static_cast<size_t>(x);
+          const uint8_t* p = source.texels.data() + i * static_cast<size_t>(source.channels);
+          const Color c = source.channels >= 3
+                              ? Color(srgbToLinear(p[0]), srgbToLinear(p[1]), srgbToLinear(p[2]))
+                              : Color(srgbToLinear(p[0]));
+          image.set(i, c * m.color);
+        }
+      }
+      images_.push_back({at->second, std::move(image)});
+    }
+    const bool localLight = m.ambient > 0 || m.diffuse > 0;
+    const double transmit =
+        localLight ? std::min(m.transmissivity, kMaxTransmitWithLocalLight) : m.transmissivity;
+    std::string map = "pigment { uv_mapping image_map { png \"" + at->second + "\" interpolate 2";
+    if (transmit > 0) map += " transmit all " + num(transmit);
+    map += " } }";
+    if (texture.wrapU != TextureWrap::repeat || texture.wrapV != TextureWrap::repeat) {
+      map += "  // PRT clamps or mirrors this texture; POV-Ray repeats it";
+    }
+    return map;
+  }
+
+  const Scene& scene_;
+  const PovOptions& options_;
+  std::string stem_;
+  std::map<std::string, std::string> declared_;    // mesh and texturing -> declared name
+  std::map<std::string, std::string> imageFiles_;  // texture and colour -> file name
+  std::vector<PovImage> images_;
+};
 
 }  // namespace
 
@@ -315,18 +509,30 @@ std::vector<std::string> povrayArguments(const PovRun& run) {
   return args;
 }
 
-std::string toPovray(const Scene& scene, const RenderSettings& settings,
-                     const PovOptions& options) {
+PovExport exportPovray(const Scene& scene, const RenderSettings& settings,
+                       const PovOptions& options) {
   PRT_CHECK(scene.image.width > 0 && scene.image.height > 0);
-  std::string out;
+  PovExport result;
+  std::string& out = result.text;
   writeHeader(out, scene, settings, options);
   writeGlobalSettings(out, scene);
   writeCamera(out, scene);
   const int grid = povAreaLightGrid(settings, options);
-  for (const Light& light : scene.lights) writeLight(out, light, grid);
+  Bounds box;
+  for (const Object& o : scene.objects) {
+    if (isBounded(o.shape)) box.extend(boundsOf(o.shape));
+  }
+  for (const Light& light : scene.lights) writeLight(out, light, grid, box);
   out += '\n';
-  for (const Object& object : scene.objects) writeObject(out, object);
-  return out;
+  PovWriter writer(scene, options);
+  for (const Object& object : scene.objects) writer.object(out, object);
+  result.images = writer.takeImages();
+  return result;
+}
+
+std::string toPovray(const Scene& scene, const RenderSettings& settings,
+                     const PovOptions& options) {
+  return exportPovray(scene, settings, options).text;
 }
 
 }  // namespace prt

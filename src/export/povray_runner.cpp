@@ -46,6 +46,12 @@ Image renderWithPovray(const PovrayJob& job) {
     scene.close();
     if (!scene) throw PovrayError("cannot write the POV-Ray scene to " + dir.path().string(), "");
   }
+  for (const PovImage& image : job.images) {
+    asPovrayError([&] {
+      writeImage(image.image, (dir.path() / image.fileName).string());
+      return 0;
+    });
+  }
   PovRun run;
   run.sceneFile = "scene.pov";  // relative: POV-Ray runs in the directory
   run.imageFile = "image.png";

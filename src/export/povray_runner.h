@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "export/pov_exporter.h"
 #include "image/image.h"
 
 namespace prt {
@@ -28,7 +29,8 @@ class PovrayError : public std::runtime_error {
 
 struct PovrayJob {
   std::string program = "povray";  // a path, or a name looked up on PATH
-  std::string sceneText;           // the .pov text (toPovray)
+  std::string sceneText;           // the .pov text (exportPovray)
+  std::vector<PovImage> images;    // the texture images it names, written beside it
   int width = 320;
   int height = 240;
   int samplesPerPixel = 1;  // mapped to POV-Ray antialiasing (povAntialiasDepth)

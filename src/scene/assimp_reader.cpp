@@ -176,7 +176,9 @@ class AssimpReader {
     float metallic = 0, roughness = 0;
     const bool hasMetallic = m.Get(AI_MATKEY_METALLIC_FACTOR, metallic) == AI_SUCCESS;
     const bool hasRoughness = m.Get(AI_MATKEY_ROUGHNESS_FACTOR, roughness) == AI_SUCCESS;
-    const bool pbr = shading == aiShadingMode_PBR_BRDF || hasMetallic || hasRoughness;
+    // assimp gives some Phong materials a roughness of their own (FBX): only a metallic factor
+    // or the PBR shading model says the file meant metallic-roughness.
+    const bool pbr = shading == aiShadingMode_PBR_BRDF || hasMetallic;
     Material result;
     if (pbr) {
       PbrMaterialInputs in;
@@ -363,8 +365,9 @@ class AssimpReader {
         view.orthoHeight = 2 * c.mOrthographicWidth / (aspect > 0 ? aspect : 1.0) *
                            length(world.vector({0, 1, 0}));
       } else {
-        // mHorizontalFOV is half the horizontal angle.
-        const double half = c.mHorizontalFOV;
+        // The whole horizontal angle, whatever assimp's header says (its FBX and COLLADA
+        // readers give 0.95 for a 35 mm lens on a 36 mm film, a whole angle of 54.4 degrees).
+        const double half = 0.5 * c.mHorizontalFOV;
         const double vertical =
             2 * std::atan(std::tan(half) / (aspect > 0 ? aspect : 4.0 / 3.0)) * 180 / std::numbers::pi;
         view.fovDegrees = vertical > 0 && vertical < 180 ? vertical : 45;
@@ -409,8 +412,11 @@ class AssimpReader {
       }
       if (!std::holds_alternative<DirectionalLight>(light.shape)) {
         if (falls) {
+          // A light node scaled with its file's units (FBX in centimetres: 100) sees every
+          // distance so scaled: its intensity is too, by the square.
+          const double size = std::cbrt(std::abs(world.determinant()));
           light.falloff = Falloff::inverseSquare;
-          light.color = light.color * kPointLightScale;
+          light.color = light.color * (kPointLightScale * size * size);
         }
       }
       if (!isFinite(light.color) || !isFinite(position)) continue;
