@@ -6,7 +6,6 @@
 namespace prt {
 namespace {
 
-constexpr double kDielectricReflectance = 0.04;  // glTF's F0 for every non-metal
 // A mirror term weaker than this costs a ray per hit for a change the eye does not see.
 constexpr double kLeastReflection = 0.02;
 
@@ -47,36 +46,34 @@ Material mapPbrMaterial(const PbrMaterialInputs& in) {
     m.colorTexture = {};
     return m;
   }
-  const double reflectance = kDielectricReflectance * (1 - metallic) + metallic;
+  // A dielectric reflects ((n - 1) / (n + 1))^2 at normal incidence: 4 % at glTF's default
+  // index of 1.5 (KHR_materials_ior changes both); a metal reflects its colour.
+  const double ior = std::isfinite(in.ior) ? std::clamp(in.ior, 1.0, 10.0) : 1.5;
+  const double f0 = (ior - 1) / (ior + 1);
+  const double reflectance = f0 * f0 * (1 - metallic) + metallic;
   m.metallic = metallic;
   m.phongExponent = phongExponentFor(roughness);
   // The Phong lobe normalised as a BRDF peaks at (n + 2) / (2 pi) times the reflectance; with
   // lights scaled by 1 / pi (model lights: see the import notes) that is (n + 2) / 2.
   m.specular = std::min(1.0, reflectance * (m.phongExponent + 2) / 2);
   const double smooth = (1 - roughness) * (1 - roughness);
-  double transmission = clamp01(in.transmission) * (1 - metallic);
-  double ior = std::isfinite(in.ior) ? std::clamp(in.ior, 1.0, 10.0) : 1.5;
-  double reflect = reflectance * smooth;
-  if (transmission > 0) {
-    const double f0 = (ior - 1) / (ior + 1);
-    reflect = std::max(reflect, f0 * f0 * smooth);  // glass shows its Fresnel reflection
-  }
+  const double reflect = reflectance * smooth;
   m.reflectivity = reflect >= kLeastReflection ? reflect : 0.0;
   m.glossDegrees = m.reflectivity > 0 ? glossFor(roughness) : 0.0;
+  const double transmission = clamp01(in.transmission) * (1 - metallic);
   double cover = 1;  // how much of the surface is there: alpha
   const double alpha = clamp01(in.alpha);
   if (in.alphaMode == PbrMaterialInputs::AlphaMode::mask && alpha < in.alphaCutoff) cover = 0;
   if (in.alphaMode == PbrMaterialInputs::AlphaMode::blend) cover = alpha;
-  if (cover < 1 && transmission == 0) {
-    transmission = 1 - cover;  // light passes straight through the missing part
-    ior = 1;
-  }
-  m.transmissivity = std::min(transmission, 1 - m.reflectivity);
-  if (m.transmissivity > 0) {
+  if (transmission > 0) {  // glass: refracts by its index
+    m.transmissivity = std::min(transmission, 1 - m.reflectivity);
     m.ior = ior;
     m.translucencyDegrees = ior > 1 ? glossFor(roughness) : 0.0;
+  } else if (cover < 1) {  // light passes straight through the missing part
+    m.transmissivity = std::min(1 - cover, 1 - m.reflectivity);
+    m.ior = 1;
   }
-  m.diffuse = (1 - metallic) * (1 - m.transmissivity) * cover;
+  m.diffuse = (1 - metallic) * (1 - transmission) * cover;
   m.ambient = m.diffuse;
   m.specular *= cover;
   if (cover == 0) m.reflectivity = m.specular = 0, m.glossDegrees = 0, m.transmissivity = 1;

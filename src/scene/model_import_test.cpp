@@ -1,0 +1,299 @@
+// Model files that Blender wrote (tests/models, scenes/models: scripts/make-models.py made the
+// geometry and Blender's own exporters the files): what the readers make of their meshes,
+// instances, materials, textures, cameras and lights; the `import` block and `camera { from }`
+// of the scene format; and a scene of imports written and sent as a worker receives it.
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+#include <set>
+
+#include "scene/asset_pack.h"
+#include "scene/model_file.h"
+#include "scene/scene_file.h"
+#include "trace/shapes.h"
+
+namespace prt {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kSource(PRT_SOURCE_DIR);
+const fs::path kModels = kSource / "tests" / "models";
+constexpr double kDegrees = 180 / std::numbers::pi;
+
+size_t distinctMeshes(const std::vector<Object>& objects) {
+  std::set<const TriangleMesh*> meshes;
+  for (const Object& o : objects) meshes.insert(std::get<InstanceShape>(o.shape).mesh.get());
+  return meshes.size();
+}
+
+bool anyWarning(const std::vector<std::string>& warnings, const std::string& fragment) {
+  for (const std::string& w : warnings) {
+    if (w.find(fragment) != std::string::npos) return true;
+  }
+  return false;
+}
+
+TEST(ModelFile, GltfInstancesShareTheirMeshes) {
+  const ImportedModel pawns = readModelFile((kSource / "scenes/models/pawns.gltf").string());
+  // The board (2 primitives) and 16 pawns of 2 primitives each, from 3 meshes of 6 primitives.
+  EXPECT_EQ(pawns.objects.size(), 2u + 16u * 2u);
+  EXPECT_EQ(distinctMeshes(pawns.objects), 6u);
+  EXPECT_EQ(pawns.format, "glTF 2.0");
+  // The board's checker and the marble, one of them named with a space ("pawn marble.png").
+  EXPECT_EQ(pawns.textures.size(), 2u);
+  for (const Texture& t : pawns.textures) EXPECT_GE(t.image->width, 64);
+  // The glass pawns' body: KHR_materials_transmission and KHR_materials_ior.
+  bool glass = false;
+  for (const Object& o : pawns.objects) glass = glass || o.material.transmissivity > 0.5;
+  EXPECT_TRUE(glass);
+  // The node tree composes: the pawns stand on the board, rotated with it, above y = 0.12.
+  for (const Object& o : pawns.objects) EXPECT_GE(boundsOf(o.shape).lo.y, 0.12 - 0.13);
+}
+
+TEST(ModelFile, GltfCamerasAndLightsAsBlenderExportsThem) {
+  const ImportedModel pawns = readModelFile((kSource / "scenes/models/pawns.gltf").string());
+  ASSERT_EQ(pawns.cameras.size(), 1u);
+  EXPECT_EQ(pawns.cameras[0].name, "Camera");
+  EXPECT_NEAR(pawns.cameras[0].camera.fovDegrees, 0.6509916954952726 * kDegrees, 1e-9);
+  EXPECT_NEAR(pawns.cameras[0].aspectRatio, 4.0 / 3, 1e-12);
+  ASSERT_EQ(pawns.lights.size(), 2u);
+  const auto* spot = std::get_if<SpotLight>(&pawns.lights[0].shape);
+  ASSERT_NE(spot, nullptr);
+  // Blender's 50-degree cone with blend 0.3: outer 25 degrees, inner 17.5.
+  EXPECT_NEAR(spot->outerDegrees, 25, 1e-5);
+  EXPECT_NEAR(spot->innerDegrees, 17.5, 1e-5);
+  EXPECT_EQ(pawns.lights[0].falloff, Falloff::inverseSquare);
+  // 900 W in Blender, 900 * 683 / (4 pi) cd in the file: 900 / (4 pi^2) in PRT's terms.
+  EXPECT_NEAR(pawns.lights[0].color.x, 900 / (4 * std::numbers::pi * std::numbers::pi), 1e-3);
+  const ImportedModel lights = readModelFile((kModels / "blender-lights.glb").string());
+  std::set<size_t> kinds;
+  for (const Light& l : lights.lights) kinds.insert(l.shape.index());
+  EXPECT_EQ(kinds.size(), 3u);  // point, spot and sun
+  for (const Light& l : lights.lights) {
+    if (const auto* sun = std::get_if<DirectionalLight>(&l.shape)) {
+      EXPECT_NEAR(length(sun->direction), 1, 1e-12);
+      EXPECT_EQ(l.falloff, Falloff::none);
+    }
+  }
+}
+
+TEST(ModelFile, MirroredAndScaledInstancesKeepTheirTransforms) {
+  const ImportedModel model = readModelFile((kModels / "blender-instances.glb").string());
+  EXPECT_EQ(model.objects.size(), 10u);  // 5 nodes of a 2-primitive mesh
+  EXPECT_EQ(distinctMeshes(model.objects), 2u);
+  int mirrored = 0;
+  for (const Object& o : model.objects) {
+    mirrored += std::get<InstanceShape>(o.shape).worldFromMesh.determinant() < 0 ? 1 : 0;
+  }
+  EXPECT_EQ(mirrored, 2);  // both primitives of the mirrored node
+}
+
+TEST(ModelFile, OrthographicCameraKeepsItsHeight) {
+  const ImportedModel model = readModelFile((kModels / "blender-ortho.glb").string());
+  ASSERT_EQ(model.cameras.size(), 1u);
+  EXPECT_NEAR(model.cameras[0].camera.orthoHeight, 2 * 1.875, 1e-6);
+  EXPECT_NEAR(model.cameras[0].aspectRatio, 2.5 / 1.875, 1e-9);
+}
+
+TEST(ModelFile, EmbeddedAndSeparateGltfGiveTheSameScene) {
+  const ImportedModel glb = readModelFile((kModels / "blender-cube.glb").string());
+  const ImportedModel embedded = readModelFile((kModels / "blender-cube.gltf").string());
+  ASSERT_EQ(glb.objects.size(), 1u);
+  ASSERT_EQ(embedded.objects.size(), 1u);
+  EXPECT_EQ(glb.objects[0], embedded.objects[0]);
+  ASSERT_EQ(glb.textures.size(), 1u);
+  EXPECT_EQ(glb.textures[0].image->texels, embedded.textures[0].image->texels);
+  EXPECT_EQ(glb.textures[0].image->width, embedded.textures[0].image->width);
+  EXPECT_FALSE(std::get<InstanceShape>(glb.objects[0].shape).mesh->uvs.empty());
+}
+
+TEST(ModelFile, SkinningAndMorphTargetsWarnAndGiveTheRestPose) {
+  const ImportedModel model = readModelFile((kModels / "blender-skinned.glb").string());
+  EXPECT_FALSE(model.objects.empty());
+  EXPECT_TRUE(anyWarning(model.warnings, "skinning is not applied"));
+  EXPECT_TRUE(anyWarning(model.warnings, "morph targets are not applied"));
+  EXPECT_TRUE(anyWarning(model.warnings, "animations are not played"));
+}
+
+TEST(ModelFile, ObjTexturesAreFoundAsWindowsToolsWriteTheirPaths) {
+  for (const char* name : {"blender-cube.obj", "blender-cube-winpath.obj"}) {
+    const ImportedModel model = readModelFile((kModels / name).string());
+    ASSERT_EQ(model.objects.size(), 1u) << name;
+    EXPECT_EQ(model.textures.size(), 1u) << name;  // textures\cube tex.png found as well
+    EXPECT_TRUE(model.warnings.empty()) << name << ": " << model.warnings.front();
+    EXPECT_EQ(model.objects[0].material.colorTexture.texture, 0) << name;
+  }
+}
+
+TEST(ModelFile, FbxAndColladaOfOneSceneAgree) {
+  const ImportedModel fbx = readModelFile((kModels / "blender-scene.fbx").string());
+  const ImportedModel dae = readModelFile((kModels / "blender-scene.dae").string());
+  ASSERT_EQ(fbx.objects.size(), 2u);
+  ASSERT_EQ(dae.objects.size(), 2u);
+  ASSERT_EQ(fbx.cameras.size(), 1u);
+  ASSERT_EQ(dae.cameras.size(), 1u);
+  // A 35 mm lens on a 36 mm film at 4:3: a vertical field of view of 42.2 degrees in both
+  // (the FBX in centimetres, the COLLADA file in metres).
+  EXPECT_NEAR(fbx.cameras[0].camera.fovDegrees, 2 * std::atan(18.0 / 35 * 0.75) * kDegrees, 0.01);
+  EXPECT_NEAR(dae.cameras[0].camera.fovDegrees, fbx.cameras[0].camera.fovDegrees, 0.01);
+  ASSERT_EQ(fbx.lights.size(), 1u);
+  ASSERT_EQ(dae.lights.size(), 1u);
+  // The same 1000 W point light, once the FBX's centimetres are counted.
+  const Vec3 p = std::get<PointLight>(fbx.lights[0].shape).position;
+  const Vec3 q = std::get<PointLight>(dae.lights[0].shape).position;
+  const double scale = length(p) / length(q);
+  EXPECT_NEAR(scale, 100, 1e-3);
+  EXPECT_NEAR(fbx.lights[0].color.x / (scale * scale), dae.lights[0].color.x, 1e-3);
+  EXPECT_NEAR(dae.lights[0].color.x, 1000 / (4 * std::numbers::pi * std::numbers::pi), 1e-3);
+  EXPECT_EQ(fbx.textures.size(), 1u);
+  EXPECT_EQ(dae.textures.size(), 1u);
+}
+
+class ImportScene : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    dir_ = fs::temp_directory_path() / ("prt-import-" + std::to_string(::getpid()) + "-" + info->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+    for (const char* f : {"blender-cube.glb", "blender-lights.glb", "blender-cube.obj",
+                          "blender-cube.mtl", "blender-cube.png"}) {
+      fs::copy_file(kModels / f, dir_ / f);
+    }
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  Scene load(const std::string& text, const SceneReadOptions& options = {}) const {
+    std::ofstream(dir_ / "s.scene") << text;
+    return loadSceneFile((dir_ / "s.scene").string(), options);
+  }
+  std::string errorOf(const std::string& text, const SceneReadOptions& options = {}) const {
+    try {
+      load(text, options);
+    } catch (const InputError& e) {
+      return e.format();
+    }
+    ADD_FAILURE() << "no error for:\n" << text;
+    return {};
+  }
+  fs::path dir_;
+};
+
+const char* kImage = "image { width 8 height 6 }\n";
+
+TEST_F(ImportScene, ImportBringsMeshesLightsAndTheCamera) {
+  const Scene scene = load(std::string(kImage) + "import { file \"blender-lights.glb\" }\n" +
+                           "sphere { center 0 5 0 radius 1 }\n");
+  ASSERT_EQ(scene.imports.size(), 1u);
+  const ImportSource& import = scene.imports[0];
+  EXPECT_EQ(import.objectCount, 2u);
+  EXPECT_EQ(import.lightCount, 3u);
+  EXPECT_EQ(scene.objects.size(), 3u);
+  EXPECT_EQ(scene.lights.size(), 3u);
+  // No camera block: the file's.
+  const ImportedModel model = readModelFile((dir_ / "blender-lights.glb").string());
+  EXPECT_EQ(scene.camera.fovDegrees, model.cameras[0].camera.fovDegrees);
+  // Right-handed files become left-handed: z is turned over.
+  EXPECT_EQ(scene.camera.eye.z, -model.cameras[0].camera.eye.z);
+}
+
+TEST_F(ImportScene, PlacementScaleRotationAndTranslationApplyOnTop) {
+  const Scene plain = load(std::string(kImage) + "import { file \"blender-cube.glb\" }\n");
+  const Scene placed = load(std::string(kImage) +
+                            "import { file \"blender-cube.glb\" scale 2 rotate 0 90 0 translate 10 0 0 "
+                            "no_lights }\n");
+  const Bounds a = boundsOf(plain.objects[0].shape), b = boundsOf(placed.objects[0].shape);
+  EXPECT_NEAR(b.diagonal().y, 2 * a.diagonal().y, 1e-9);
+  EXPECT_NEAR(b.centroid().x, 10 + 2 * a.centroid().z, 1e-6);  // +z turned to +x
+  EXPECT_TRUE(placed.lights.size() == 1);  // no light of the file: the headlight
+  EXPECT_EQ(std::get<PointLight>(placed.lights[0].shape).position, placed.camera.eye);
+}
+
+TEST_F(ImportScene, CameraFromPicksAFilesCameraByNameOrIndex) {
+  const std::string base = std::string(kImage) + "import { file \"blender-cube.glb\" }\n";
+  const Scene byName = load(base + "camera { from \"blender-cube.glb\" name \"Camera\" }\n");
+  const Scene byIndex = load(base + "camera { from \"blender-cube.glb\" index 0 }\n");
+  EXPECT_EQ(byName.camera, byIndex.camera);
+  EXPECT_NE(errorOf(base + "camera { from \"blender-cube.glb\" name \"Nope\" }\n")
+                .find("has no camera 'Nope'; its cameras: 0 'Camera'"),
+            std::string::npos);
+  EXPECT_NE(errorOf(base + "camera { from \"other.glb\" }\n").find("which the scene does not import"),
+            std::string::npos);
+  EXPECT_NE(errorOf(base + "camera { from \"blender-cube.glb\" eye 0 0 0 }\n").find("has no 'eye'"),
+            std::string::npos);
+  SceneReadOptions options;
+  options.camera = "2";
+  EXPECT_NE(errorOf(base, options).find("--camera 2: no imported camera"), std::string::npos);
+  options.camera = "Camera";
+  EXPECT_EQ(load(base + "camera { eye 0 0 -9 look_at 0 0 0 }\n", options).camera, byName.camera);
+}
+
+TEST_F(ImportScene, AModelWithoutCameraOrLightIsFramedAndLit) {
+  const Scene scene = load(std::string(kImage) + "import { file \"blender-cube.obj\" }\n");
+  const Bounds box = boundsOf(scene.objects[0].shape);
+  EXPECT_LT(length(scene.camera.lookAt - box.centroid()), 1e-9);
+  EXPECT_LT(scene.camera.eye.z, box.lo.z);  // in front: on the side imported models face
+  ASSERT_EQ(scene.lights.size(), 1u);
+}
+
+TEST_F(ImportScene, BadImportsAreLocated) {
+  EXPECT_NE(errorOf(std::string(kImage) + "import { file \"missing.glb\" }\n").find("s.scene:2:"),
+            std::string::npos);
+  EXPECT_NE(errorOf(std::string(kImage) + "import { file \"missing.glb\" }\n").find("does not exist"),
+            std::string::npos);
+  EXPECT_NE(errorOf(std::string(kImage) + "import { file \"blender-cube.glb\" scale 0 }\n")
+                .find("must not be zero"),
+            std::string::npos);
+  EXPECT_NE(errorOf(std::string(kImage) + "import { scale 2 }\n").find("file"), std::string::npos);
+  // A scene file that is a model file by its content but named .scene is read as text.
+  fs::copy_file(dir_ / "blender-cube.glb", dir_ / "cube.scene");
+  EXPECT_THROW(loadSceneFile((dir_ / "cube.scene").string()), InputError);
+}
+
+TEST_F(ImportScene, ModelFilesRenderDirectly) {
+  const Scene scene = loadSceneFile((dir_ / "blender-cube.glb").string());
+  EXPECT_EQ(scene.image.width, 640);
+  EXPECT_EQ(scene.image.height, 480);  // the camera's 4:3
+  EXPECT_EQ(scene.image.output, "blender-cube.png");
+  EXPECT_EQ(scene.imports.size(), 1u);
+  EXPECT_EQ(scene.lights.size(), 1u);  // the file's point light
+  std::ofstream(dir_ / "empty.glb");
+  EXPECT_THROW(loadSceneFile((dir_ / "empty.glb").string()), InputError);
+  EXPECT_THROW(loadSceneFile((dir_ / "none.obj").string()), InputError);
+}
+
+// The master writes the scene as text and packs its assets; the worker parses the text with
+// them, no file at hand: the same objects, lights, camera and textures, bit for bit.
+TEST_F(ImportScene, AScenesImportsTravelWithItToWorkers) {
+  const Scene scene = load(std::string(kImage) +
+                           "import { file \"blender-lights.glb\" rotate 0 30 0 }\n"
+                           "sphere { center 0 5 0 radius 1 }\n"
+                           "import { file \"blender-cube.glb\" translate 3 0 0 }\n"
+                           "import { file \"blender-cube.glb\" translate -3 0 0 light_scale 2 }\n"
+                           "light spot { position 0 9 0 direction 0 -1 0 inner 10 outer 20 falloff inverse_square }\n"
+                           "light directional { direction 0 -1 1 color 0.5 0.5 0.5 }\n");
+  const std::string text = writeScene(scene);
+  const std::vector<uint8_t> assets = packAssets(scene);
+  fs::remove_all(dir_);
+  const Scene again = parseScene(text, "<from master>", unpackAssets(assets));
+  ASSERT_EQ(again.objects.size(), scene.objects.size());
+  for (size_t i = 0; i < scene.objects.size(); ++i) EXPECT_EQ(again.objects[i], scene.objects[i]) << i;
+  EXPECT_EQ(again.lights, scene.lights);
+  EXPECT_EQ(again.camera, scene.camera);
+  EXPECT_EQ(again.textures, scene.textures);
+  // The cube's mesh and texture travel once for its two imports.
+  const ShippedAssets shipped = unpackAssets(assets);
+  EXPECT_EQ(std::get<InstanceShape>(shipped.imports[1].objects[0].shape).mesh,
+            std::get<InstanceShape>(shipped.imports[2].objects[0].shape).mesh);
+  EXPECT_EQ(shipped.imports[1].textures[0].image, shipped.imports[2].textures[0].image);
+  // The text is stable: written again from the worker's scene, it is the same.
+  EXPECT_EQ(writeScene(again), text);
+}
+
+}  // namespace
+}  // namespace prt
