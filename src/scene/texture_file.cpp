@@ -104,6 +104,19 @@ std::filesystem::path findTextureFile(const std::filesystem::path& modelDirector
   std::vector<fs::path> tries;
   if (given.is_absolute() && !windowsAbsolute) tries.push_back(given);
   if (given.is_relative()) tries.push_back(modelDirectory / given);
+  if (text.find('%') != std::string::npos) {  // a URI's escapes: "my%20texture.png"
+    std::string decoded;
+    for (size_t i = 0; i < text.size(); ++i) {
+      if (text[i] == '%' && i + 2 < text.size() && std::isxdigit(static_cast<unsigned char>(text[i + 1])) &&
+          std::isxdigit(static_cast<unsigned char>(text[i + 2]))) {
+        decoded += static_cast<char>(std::stoi(text.substr(i + 1, 2), nullptr, 16));
+        i += 2;
+      } else {
+        decoded += text[i];
+      }
+    }
+    tries.push_back(fs::path(decoded).is_relative() ? modelDirectory / decoded : fs::path(decoded));
+  }
   const fs::path base = given.filename();
   tries.push_back(modelDirectory / base);
   tries.push_back(modelDirectory / "textures" / base);
