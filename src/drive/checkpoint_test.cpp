@@ -7,6 +7,7 @@
 #include <fstream>
 
 #include "core/input_error.h"
+#include "scene/scene_file.h"
 
 namespace prt {
 namespace {
@@ -63,6 +64,25 @@ TEST(CheckpointTest, TheOutputPathIsNotPartOfTheRender) {
   EXPECT_NE(checkpointKey(a, {2, 1}).hash, checkpointKey(scene(8, 5), {2, 1}).hash);
   b.objects[0].material.diffuse = 0.25;
   EXPECT_NE(checkpointKey(a, {2, 1}).hash, checkpointKey(b, {2, 1}).hash);
+}
+
+// An import's text names its file, not what the file holds: a checkpoint of a model that has
+// changed since must not be taken for this render's.
+TEST(CheckpointTest, ImportedModelsAreKeyedByWhatTheyHold) {
+  namespace fs = std::filesystem;
+  const fs::path dir = tempPath("models");
+  fs::create_directories(dir);
+  const fs::path models = fs::path(PRT_SOURCE_DIR) / "tests" / "models";
+  fs::copy_file(models / "blender-cube.glb", dir / "model.glb", fs::copy_options::overwrite_existing);
+  const std::string text = "image { width 8 height 6 }\nimport { file \"model.glb\" }\n";
+  std::ofstream(dir / "s.scene") << text;
+  const uint64_t before = checkpointKey(loadSceneFile((dir / "s.scene").string()), {1, 1}).hash;
+  EXPECT_EQ(checkpointKey(loadSceneFile((dir / "s.scene").string()), {1, 1}).hash, before);
+  fs::copy_file(models / "blender-ortho.glb", dir / "model.glb", fs::copy_options::overwrite_existing);
+  Scene changed = loadSceneFile((dir / "s.scene").string());
+  changed.camera = loadSceneFile((dir / "s.scene").string()).camera;
+  EXPECT_NE(checkpointKey(changed, {1, 1}).hash, before);
+  fs::remove_all(dir);
 }
 
 TEST(CheckpointTest, AnotherRendersOrADamagedCheckpointIsRefused) {

@@ -119,8 +119,12 @@ World::World(Scene scene) : scene_(std::move(scene)) {
       const MeshBvh& mesh = treeFor(instance->mesh);
       ++meshStats_.instances;
       placements_.push_back(std::make_unique<Transform>(instance->worldFromMesh.inverse()));
-      items_.push_back({Vec3(), Vec3(), placedBounds(mesh.bounds(), instance->worldFromMesh),
-                        transmissivity, i, Kind::mesh, &mesh, placements_.back().get()});
+      const Bounds box = placedBounds(mesh.bounds(), instance->worldFromMesh);
+      // Tested before a ray is carried into the mesh's coordinates; widened far beyond the
+      // rounding of the placement, so that it never turns away a ray the mesh's tree meets.
+      const Bounds reach = box.widened(1e-9 * std::max(1.0, box.largestMagnitude()));
+      items_.push_back({reach.lo, reach.hi, box, transmissivity, i, Kind::mesh, &mesh,
+                        placements_.back().get()});
     } else {
       const auto& p = std::get<PlaneShape>(o.shape);
       planes_.push_back({p.point, p.normal, transmissivity, i});
@@ -247,6 +251,10 @@ bool World::intersect(const Ray& ray, double tMin, double tMax, Hit& hit,
   candidates(nearest, [&](uint32_t index) {
     const Item& item = items_[index];
     if (item.kind == Kind::mesh) {
+      if (item.meshFromWorld != nullptr &&
+          !hitsBounds(Bounds{item.a, item.b}, RayQuery(ray), tMin, nearest)) {
+        return nearest;  // an instance the ray passes by: not worth carrying the ray over
+      }
       double t = nearest;
       uint32_t triangle = 0;
       if (!item.mesh->nearest(local(item, ray), tMin, t, triangle)) return nearest;
@@ -331,6 +339,10 @@ double World::transmittance(const Ray& ray, double tMin, double distance,
       if (!s.hit) return distance;
       crossings = s.nearCrosses(tMin, distance) + s.farCrosses(tMin, distance);
     } else {
+      if (item.meshFromWorld != nullptr &&
+          !hitsBounds(Bounds{item.a, item.b}, RayQuery(ray), tMin, distance)) {
+        return distance;
+      }
       crossings = item.mesh->crossings(local(item, ray), tMin, distance, item.transmissivity == 0);
       if (crossings == 0) return distance;
     }

@@ -96,7 +96,8 @@ class World {
   // A bounded object as the BVH's item, flattened for the hot loops.
   enum class Kind : uint8_t { box, sphere, mesh };
   struct Item {
-    Vec3 a, b;   // sphere: centre, (radius, 1 / radius, 0); box: min, max; mesh: unused
+    Vec3 a, b;   // sphere: centre, (radius, 1 / radius, 0); box: min, max; an instance of a
+                 // mesh: its box, widened; a mesh in world space: unused
     Bounds box;  // for the paper's per-object box test (a mesh's tree tests boxes itself)
     double transmissivity = 0;
     uint32_t object = 0;
