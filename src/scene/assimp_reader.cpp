@@ -26,6 +26,7 @@
 #include "scene/material_mapping.h"
 #include "scene/model_file.h"
 #include "scene/model_mesh.h"
+#include "scene/model_notes.h"
 #include "scene/texture_file.h"
 
 namespace prt {
@@ -56,8 +57,10 @@ Color color(const aiColor3D& c) { return {c.r, c.g, c.b}; }
 class AssimpReader {
  public:
   AssimpReader(const std::string& path, const ModelReadOptions& options)
-      : path_(path), directory_(fs::path(path).parent_path()), options_(options),
-        budget_(options.textureBudgetBytes) {}
+      : path_(path), directory_(fs::path(path).parent_path()), budget_(options.textureBudgetBytes) {
+    notes_.file = path;
+    notes_.strict = options.strict;
+  }
 
   ImportedModel read() {
     std::error_code error;
@@ -85,8 +88,8 @@ class AssimpReader {
     visit(scene_->mRootNode, Transform::identity(), 0);
     addCameras();
     addLights();
-    skips_.warn(out_.warnings, path_);
-    finishWarnings();
+    notes_.animations = scene_->mNumAnimations;
+    notes_.warn(out_.warnings);
     if (out_.objects.empty()) {
       throw ModelFileError("model file \"" + path_ + "\" has no triangles to render");
     }
@@ -102,7 +105,7 @@ class AssimpReader {
     const Transform world = parent * transformOf(node->mTransformation);
     nodeTransforms_.emplace(node->mName.C_Str(), world);
     if (!world.isUsable()) {
-      ++hiddenNodes_;
+      ++notes_.hiddenNodes;
       return;
     }
     for (unsigned i = 0; i < node->mNumMeshes; ++i) {
@@ -124,8 +127,8 @@ class AssimpReader {
     if (meshRead_[index]) return meshes_[index];
     meshRead_[index] = 1;
     const aiMesh& m = *scene_->mMeshes[index];
-    if (m.mAnimMeshes != nullptr && m.mNumAnimMeshes > 0) ++morphed_;
-    if (m.HasBones()) ++skinned_;
+    if (m.mAnimMeshes != nullptr && m.mNumAnimMeshes > 0) ++notes_.morphed;
+    if (m.HasBones()) ++notes_.skinned;
     RawMesh raw;
     raw.positions.resize(m.mNumVertices);
     for (unsigned v = 0; v < m.mNumVertices; ++v) raw.positions[v] = vec(m.mVertices[v]);
@@ -150,12 +153,12 @@ class AssimpReader {
     for (unsigned f = 0; f < m.mNumFaces; ++f) {
       const aiFace& face = m.mFaces[f];
       if (face.mNumIndices != 3) {
-        ++skips_.notTriangles;
+        ++notes_.skips.notTriangles;
         continue;
       }
       raw.triangles.push_back({face.mIndices[0], face.mIndices[1], face.mIndices[2]});
     }
-    meshes_[index] = cleanMesh(std::move(raw), skips_);
+    meshes_[index] = cleanMesh(std::move(raw), notes_.skips);
     return meshes_[index];
   }
 
@@ -235,10 +238,10 @@ class AssimpReader {
       result = mapCommonMaterial(in);
     }
     if (m.GetTextureCount(aiTextureType_NORMALS) > 0 || m.GetTextureCount(aiTextureType_HEIGHT) > 0) {
-      notUsed_.insert("normal and bump maps (" + name + ")");
+      notes_.notUsed.insert("normal and bump maps (" + name + ")");
     }
-    if (m.GetTextureCount(aiTextureType_OPACITY) > 0) notUsed_.insert("opacity maps (" + name + ")");
-    if (m.GetTextureCount(aiTextureType_SPECULAR) > 0) notUsed_.insert("specular maps (" + name + ")");
+    if (m.GetTextureCount(aiTextureType_OPACITY) > 0) notes_.notUsed.insert("opacity maps (" + name + ")");
+    if (m.GetTextureCount(aiTextureType_SPECULAR) > 0) notes_.notUsed.insert("specular maps (" + name + ")");
     materials_[index] = result;
     return result;
   }
@@ -251,7 +254,7 @@ class AssimpReader {
     if (m.GetTexture(type, 0, &written, nullptr, &uvIndex, nullptr, nullptr, modes) != AI_SUCCESS) {
       return ref;
     }
-    if (uvIndex != 0) notUsed_.insert("texture coordinate sets other than the first (" + material + ")");
+    if (uvIndex != 0) notes_.notUsed.insert("texture coordinate sets other than the first (" + material + ")");
     int mode = 0;
     if (m.Get(AI_MATKEY_MAPPINGMODE_U(type, 0), mode) == AI_SUCCESS) modes[0] = static_cast<aiTextureMapMode>(mode);
     if (m.Get(AI_MATKEY_MAPPINGMODE_V(type, 0), mode) == AI_SUCCESS) modes[1] = static_cast<aiTextureMapMode>(mode);
@@ -271,7 +274,7 @@ class AssimpReader {
       // In assimp's coordinates (v up): u' = s u + t; turned over to v down.
       const double su = uv.mScaling.x, sv = uv.mScaling.y;
       ref.uv.m = {su, 0, uv.mTranslation.x, 0, sv, 1 - sv - uv.mTranslation.y};
-      if (uv.mRotation != 0) notUsed_.insert("rotated texture coordinates (" + material + ")");
+      if (uv.mRotation != 0) notes_.notUsed.insert("rotated texture coordinates (" + material + ")");
       for (const double v : ref.uv.m) {
         if (!std::isfinite(v)) ref.uv = {};
       }
@@ -293,14 +296,14 @@ class AssimpReader {
       } else {
         const fs::path file = findTextureFile(directory_, written);
         if (file.empty()) {
-          problem("texture \"" + written + "\" of material " + material + " was not found");
+          notes_.problem(out_.warnings, "texture \"" + written + "\" of material " + material + " was not found");
         } else {
           const std::vector<uint8_t> bytes = readTextureFile(file);
           result = decodeTextureImage(bytes.data(), bytes.size(), file.string(), budget_);
         }
       }
     } catch (const TextureError& e) {
-      problem(e.what());
+      notes_.problem(out_.warnings, e.what());
     }
     images_[written] = result;
     return result;
@@ -330,11 +333,6 @@ class AssimpReader {
     }
     budget_ -= texels * 4;
     return image;
-  }
-
-  void problem(const std::string& what) {
-    if (options_.strict) throw ModelFileError("model file \"" + path_ + "\": " + what);
-    out_.warnings.push_back("model file \"" + path_ + "\": " + what + "; rendered without it");
   }
 
   // A camera or light's node by name: its world transform (identity when no node has it).
@@ -407,7 +405,7 @@ class AssimpReader {
           light.shape = PointLight{position};
           break;
         default:
-          ++unusedLights_;
+          ++notes_.unusedLights;
           continue;
       }
       if (!std::holds_alternative<DirectionalLight>(light.shape)) {
@@ -424,33 +422,10 @@ class AssimpReader {
     }
   }
 
-  void finishWarnings() {
-    const std::string file = "model file \"" + path_ + "\": ";
-    if (skinned_ > 0) out_.warnings.push_back(file + "skinning is not applied: the rest pose is rendered");
-    if (morphed_ > 0) out_.warnings.push_back(file + "morph targets are not applied: the base shape is rendered");
-    if (scene_->mNumAnimations > 0) {
-      out_.warnings.push_back(file + "animations are not played: nodes are rendered as the file places them");
-    }
-    if (unusedLights_ > 0) {
-      out_.warnings.push_back(file + std::to_string(unusedLights_) +
-                              " ambient or area light" + (unusedLights_ == 1 ? " is" : "s are") +
-                              " not used");
-    }
-    if (hiddenNodes_ > 0) {
-      out_.warnings.push_back(file + std::to_string(hiddenNodes_) + " node" +
-                              (hiddenNodes_ == 1 ? " is" : "s are") +
-                              " scaled to nothing (or not finite): skipped with what they hold");
-    }
-    if (!notUsed_.empty()) {
-      std::string list;
-      for (const std::string& what : notUsed_) list += (list.empty() ? "" : "; ") + what;
-      out_.warnings.push_back(file + "not used: " + list);
-    }
-  }
+
 
   const std::string path_;
   const fs::path directory_;
-  const ModelReadOptions& options_;
   size_t budget_;
   const aiScene* scene_ = nullptr;
   ImportedModel out_;
@@ -460,9 +435,7 @@ class AssimpReader {
   std::vector<char> materialRead_;
   std::map<std::string, std::shared_ptr<const TextureImage>> images_;
   std::map<std::string, Transform> nodeTransforms_;
-  std::set<std::string> notUsed_;
-  MeshSkips skips_;
-  size_t skinned_ = 0, morphed_ = 0, hiddenNodes_ = 0, unusedLights_ = 0;
+  ModelNotes notes_;
 };
 
 }  // namespace

@@ -23,6 +23,7 @@
 #include "scene/material_mapping.h"
 #include "scene/model_file.h"
 #include "scene/model_mesh.h"
+#include "scene/model_notes.h"
 #include "scene/texture_file.h"
 
 namespace prt {
@@ -199,7 +200,10 @@ double degrees(double radians) { return radians * 180.0 / std::numbers::pi; }
 class GltfReader {
  public:
   GltfReader(const std::string& path, const ModelReadOptions& options)
-      : path_(path), options_(options), budget_(options.textureBudgetBytes) {}
+      : path_(path), budget_(options.textureBudgetBytes) {
+    notes_.file = path;
+    notes_.strict = options.strict;
+  }
 
   ImportedModel read() {
     load();
@@ -224,7 +228,8 @@ class GltfReader {
     }
     onPath_.assign(model_.nodes.size(), 0);
     for (const int root : roots) visit(root, Transform::identity(), 0);
-    finishWarnings();
+    notes_.animations = model_.animations.size();
+    notes_.warn(out_.warnings);
     if (out_.objects.empty()) {
       throw ModelFileError("model file \"" + path_ + "\" has no triangles to render" +
                            (model_.meshes.empty() ? " (it holds no meshes)" : ""));
@@ -277,7 +282,7 @@ class GltfReader {
       }
     }
     for (const std::string& name : model_.extensionsUsed) {
-      if (!kUnderstood.count(name)) notUsed_.insert("the extension " + name);
+      if (!kUnderstood.count(name)) notes_.notUsed.insert("the extension " + name);
     }
   }
 
@@ -298,12 +303,12 @@ class GltfReader {
     const tinygltf::Node& node = model_.nodes[i];
     const Transform world = parent * localTransform(node);
     if (!world.isUsable()) {
-      ++hiddenNodes_;  // a zero scale hides a subtree (animations do that); nothing to trace
+      ++notes_.hiddenNodes;  // a zero scale hides a subtree (animations do that); nothing to trace
       return;
     }
     onPath_[i] = 1;
     if (node.mesh >= 0) placeMesh(node, world);
-    if (node.skin >= 0) ++skinned_;
+    if (node.skin >= 0) ++notes_.skinned;
     if (node.camera >= 0) addCamera(node, world);
     if (const tinygltf::Value* lights = extension(node.extensions, "KHR_lights_punctual")) {
       if (lights->IsObject() && lights->Has("light") && lights->Get("light").IsInt()) {
@@ -336,7 +341,7 @@ class GltfReader {
     const tinygltf::Mesh& mesh = model_.meshes[static_cast<size_t>(node.mesh)];
     for (size_t p = 0; p < mesh.primitives.size(); ++p) {
       const tinygltf::Primitive& primitive = mesh.primitives[p];
-      if (!primitive.targets.empty()) ++morphed_;
+      if (!primitive.targets.empty()) ++notes_.morphed;
       std::shared_ptr<const TriangleMesh> triangles = primitiveMesh(node.mesh, p, primitive);
       if (triangles == nullptr) continue;
       if (out_.objects.size() >= kMaxObjects) {
@@ -369,7 +374,7 @@ class GltfReader {
     const int mode = primitive.mode < 0 ? TINYGLTF_MODE_TRIANGLES : primitive.mode;
     if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP &&
         mode != TINYGLTF_MODE_TRIANGLE_FAN) {
-      ++skips_.notTriangles;
+      ++notes_.skips.notTriangles;
       return nullptr;
     }
     const auto position = primitive.attributes.find("POSITION");
@@ -422,7 +427,7 @@ class GltfReader {
     }
     auto add = [&](uint64_t a, uint64_t b, uint64_t c) {
       if (a >= n || b >= n || c >= n) {
-        ++skips_.outOfRange;
+        ++notes_.skips.outOfRange;
         return;
       }
       raw.triangles.push_back({static_cast<uint32_t>(a), static_cast<uint32_t>(b),
@@ -438,7 +443,7 @@ class GltfReader {
     } else {
       for (size_t i = 1; i + 1 < order.size(); ++i) add(order[0], order[i], order[i + 1]);
     }
-    return cleanMesh(std::move(raw), skips_);
+    return cleanMesh(std::move(raw), notes_.skips);
   }
 
   const tinygltf::Material* materialAt(int index) const {
@@ -487,7 +492,7 @@ class GltfReader {
       }
       if (const auto* e = extension(m->extensions, "KHR_materials_transmission")) {
         in.transmission = number(*e, "transmissionFactor", 0);
-        if (e->Has("transmissionTexture")) notUsed_.insert("transmission textures (" + name + ")");
+        if (e->Has("transmissionTexture")) notes_.notUsed.insert("transmission textures (" + name + ")");
       }
       if (const auto* e = extension(m->extensions, "KHR_materials_ior")) in.ior = number(*e, "ior", 1.5);
       if (extension(m->extensions, "KHR_materials_unlit")) in.unlit = true;
@@ -497,16 +502,16 @@ class GltfReader {
       for (const char* other : {"KHR_materials_clearcoat", "KHR_materials_sheen",
                                 "KHR_materials_specular", "KHR_materials_iridescence",
                                 "KHR_materials_anisotropy"}) {
-        if (extension(m->extensions, other)) notUsed_.insert(std::string(other) + " (" + name + ")");
+        if (extension(m->extensions, other)) notes_.notUsed.insert(std::string(other) + " (" + name + ")");
       }
       if (pbr.metallicRoughnessTexture.index >= 0) {
-        notUsed_.insert("metallic-roughness textures, their factors are (" + name + ")");
+        notes_.notUsed.insert("metallic-roughness textures, their factors are (" + name + ")");
       }
-      if (m->normalTexture.index >= 0) notUsed_.insert("normal maps (" + name + ")");
-      if (m->occlusionTexture.index >= 0) notUsed_.insert("occlusion maps (" + name + ")");
+      if (m->normalTexture.index >= 0) notes_.notUsed.insert("normal maps (" + name + ")");
+      if (m->occlusionTexture.index >= 0) notes_.notUsed.insert("occlusion maps (" + name + ")");
       if (in.alphaMode != PbrMaterialInputs::AlphaMode::opaque && in.baseColorTexture.texture >= 0 &&
           out_.textures[static_cast<size_t>(in.baseColorTexture.texture)].image->channels % 2 == 0) {
-        notUsed_.insert("a texture's alpha, the factor's is (" + name + ")");
+        notes_.notUsed.insert("a texture's alpha, the factor's is (" + name + ")");
       }
     }
     const Material mapped = mapPbrMaterial(in);
@@ -580,7 +585,7 @@ class GltfReader {
         out_.textures.push_back(std::move(texture));
       }
     } else {
-      problem("material " + material + " names texture " + std::to_string(index) +
+      notes_.problem(out_.warnings, "material " + material + " names texture " + std::to_string(index) +
               ", which does not exist");
     }
     textures_[index] = result;
@@ -597,7 +602,7 @@ class GltfReader {
     if (const auto found = images_.find(index); found != images_.end()) return found->second;
     std::shared_ptr<const TextureImage> result;
     if (index < 0 || static_cast<size_t>(index) >= model_.images.size()) {
-      problem("a texture of material " + material + " names image " + std::to_string(index) +
+      notes_.problem(out_.warnings, "a texture of material " + material + " names image " + std::to_string(index) +
               ", which does not exist");
     } else {
       const tinygltf::Image& image = model_.images[static_cast<size_t>(index)];
@@ -607,22 +612,17 @@ class GltfReader {
                                          std::to_string(index) +
                                          (image.name.empty() ? "" : " '" + image.name + "'");
       if (image.image.empty()) {
-        problem("texture image " + name + " was not found");
+        notes_.problem(out_.warnings, "texture image " + name + " was not found");
       } else {
         try {
           result = decodeTextureImage(image.image.data(), image.image.size(), name, budget_);
         } catch (const TextureError& e) {
-          problem(e.what());
+          notes_.problem(out_.warnings, e.what());
         }
       }
     }
     images_[index] = result;
     return result;
-  }
-
-  void problem(const std::string& what) {
-    if (options_.strict) throw ModelFileError("model file \"" + path_ + "\": " + what);
-    out_.warnings.push_back("model file \"" + path_ + "\": " + what + "; rendered without it");
   }
 
   void addCamera(const tinygltf::Node& node, const Transform& world) {
@@ -676,33 +676,9 @@ class GltfReader {
     out_.lights.push_back(light);
   }
 
-  void finishWarnings() {
-    skips_.warn(out_.warnings, path_);
-    const std::string file = "model file \"" + path_ + "\": ";
-    if (skinned_ > 0) {
-      out_.warnings.push_back(file + "skinning is not applied (" + std::to_string(skinned_) +
-                              " skinned node" + (skinned_ == 1 ? "" : "s") + "): the rest pose is rendered");
-    }
-    if (morphed_ > 0) {
-      out_.warnings.push_back(file + "morph targets are not applied: the base shape is rendered");
-    }
-    if (!model_.animations.empty()) {
-      out_.warnings.push_back(file + "animations are not played: nodes are rendered as the file places them");
-    }
-    if (hiddenNodes_ > 0) {
-      out_.warnings.push_back(file + std::to_string(hiddenNodes_) +
-                              " node" + (hiddenNodes_ == 1 ? " is" : "s are") +
-                              " scaled to nothing (or not finite): skipped with what they hold");
-    }
-    if (!notUsed_.empty()) {
-      std::string list;
-      for (const std::string& what : notUsed_) list += (list.empty() ? "" : "; ") + what;
-      out_.warnings.push_back(file + "not used: " + list);
-    }
-  }
+
 
   const std::string path_;
-  const ModelReadOptions& options_;
   size_t budget_;
   tinygltf::Model model_;
   ImportedModel out_;
@@ -711,9 +687,7 @@ class GltfReader {
   std::map<int, Material> materials_;
   std::map<int, int> textures_;
   std::map<int, std::shared_ptr<const TextureImage>> images_;
-  std::set<std::string> notUsed_;
-  MeshSkips skips_;
-  size_t skinned_ = 0, morphed_ = 0, hiddenNodes_ = 0;
+  ModelNotes notes_;
 };
 
 }  // namespace

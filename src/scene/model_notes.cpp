@@ -1,0 +1,47 @@
+#include "scene/model_notes.h"
+
+#include "scene/model_file.h"
+
+namespace prt {
+namespace {
+
+std::string plural(size_t n, const char* one, const char* many) {
+  return std::to_string(n) + " " + (n == 1 ? one : many);
+}
+
+}  // namespace
+
+void ModelNotes::problem(std::vector<std::string>& warnings, const std::string& what) const {
+  if (strict) throw ModelFileError("model file \"" + file + "\": " + what);
+  warnings.push_back("model file \"" + file + "\": " + what + "; rendered without it");
+}
+
+void ModelNotes::warn(std::vector<std::string>& warnings) const {
+  skips.warn(warnings, file);
+  const std::string head = "model file \"" + file + "\": ";
+  if (skinned > 0) {
+    warnings.push_back(head + "skinning is not applied (" +
+                       plural(skinned, "skinned mesh or node", "skinned meshes or nodes") +
+                       "): the rest pose is rendered");
+  }
+  if (morphed > 0) warnings.push_back(head + "morph targets are not applied: the base shape is rendered");
+  if (animations > 0) {
+    warnings.push_back(head + "animations are not played (" + plural(animations, "animation", "animations") +
+                       "): nodes are rendered as the file places them");
+  }
+  if (unusedLights > 0) {
+    warnings.push_back(head + plural(unusedLights, "ambient or area light is", "ambient or area lights are") +
+                       " not used");
+  }
+  if (hiddenNodes > 0) {
+    warnings.push_back(head + plural(hiddenNodes, "node is", "nodes are") +
+                       " scaled to nothing (or not finite): skipped with what they hold");
+  }
+  if (!notUsed.empty()) {
+    std::string list;
+    for (const std::string& what : notUsed) list += (list.empty() ? "" : "; ") + what;
+    warnings.push_back(head + "not used: " + list);
+  }
+}
+
+}  // namespace prt
