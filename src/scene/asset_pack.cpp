@@ -202,8 +202,25 @@ ShippedAssets unpackAssets(const std::vector<uint8_t>& bytes) {
     for (const auto& t : m->triangles) {
       if (t[0] >= n || t[1] >= n || t[2] >= n) raw.fail("a vertex index out of range");
     }
+    // What the loaders never give: the tracer relies on it (trace/triangle_mesh.h).
     for (const Vec3& v : m->vertices) {
       if (!isFinite(v)) raw.fail("a vertex that is not finite");
+    }
+    for (const Vec3& v : m->normals) {
+      if (!isFinite(v)) raw.fail("a normal that is not finite");
+    }
+    for (const auto& uv : m->uvs) {
+      if (!std::isfinite(uv[0]) || !std::isfinite(uv[1])) raw.fail("texture coordinates that are not finite");
+    }
+    for (const auto& c : m->colors) {
+      if (!std::isfinite(c[0]) || !std::isfinite(c[1]) || !std::isfinite(c[2])) {
+        raw.fail("a vertex colour that is not finite");
+      }
+    }
+    for (const auto& t : m->triangles) {
+      const Vec3 &a = m->vertices[t[0]], &b = m->vertices[t[1]], &c = m->vertices[t[2]];
+      const double area = length(cross(b - a, c - a));
+      if (!(area > 0) || !std::isfinite(area)) raw.fail("a triangle of zero area");
     }
     meshes.push_back(std::move(m));
   }

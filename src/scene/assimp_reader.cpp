@@ -13,6 +13,7 @@
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
+#include <assimp/DefaultIOSystem.h>
 #include <assimp/ObjMaterial.h>
 #include <assimp/Importer.hpp>
 #include <cctype>
@@ -54,6 +55,31 @@ Transform transformOf(const aiMatrix4x4& a) {
 Vec3 vec(const aiVector3D& v) { return {v.x, v.y, v.z}; }
 Color color(const aiColor3D& c) { return {c.r, c.g, c.b}; }
 
+// The files assimp opens itself (the model, an OBJ's MTL, the parts of multi-file formats),
+// checked as PRT checks every file it reads: a regular file of at most 2 GiB. A FIFO would
+// block assimp for ever, a device might never end. What is turned away (or missing) is
+// remembered for the warnings.
+class BoundedFiles : public Assimp::DefaultIOSystem {
+ public:
+  bool Exists(const char* file) const override { return usable(file); }
+  Assimp::IOStream* Open(const char* file, const char* mode = "rb") override {
+    if (!usable(file)) {
+      turnedAway.insert(file);
+      return nullptr;
+    }
+    return DefaultIOSystem::Open(file, mode);
+  }
+  std::set<std::string> turnedAway;
+
+ private:
+  static bool usable(const char* file) {
+    std::error_code error;
+    if (fs::status(file, error).type() != fs::file_type::regular) return false;
+    const uintmax_t size = fs::file_size(file, error);
+    return !error && size <= (uintmax_t{2} << 30);
+  }
+};
+
 class AssimpReader {
  public:
   AssimpReader(const std::string& path, const ModelReadOptions& options)
@@ -68,6 +94,8 @@ class AssimpReader {
       throw ModelFileError("model file \"" + path_ + "\" is not a regular file");
     }
     Assimp::Importer importer;
+    auto* files = new BoundedFiles;  // the importer owns it
+    importer.SetIOHandler(files);
     // Points and lines come out as meshes of their own, which are skipped and counted.
     scene_ = importer.ReadFile(path_, aiProcess_Triangulate | aiProcess_SortByPType |
                                           aiProcess_JoinIdenticalVertices |
@@ -76,6 +104,14 @@ class AssimpReader {
       std::string why = importer.GetErrorString();
       if (why.empty()) why = "not a model file assimp can read";
       throw ModelFileError("model file \"" + path_ + "\" could not be read: " + why);
+    }
+    for (const std::string& file : files->turnedAway) {
+      if (fs::path(file) == fs::path(path_)) continue;
+      std::error_code missing;
+      const bool exists = fs::exists(file, missing);
+      out_.warnings.push_back("model file \"" + path_ + "\" names \"" + file + "\", which " +
+                              (exists ? "is not a regular file" : "is missing") +
+                              "; rendered without it");
     }
     std::string extension = fs::path(path_).extension().string();
     for (char& ch : extension) ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));

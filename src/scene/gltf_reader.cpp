@@ -41,8 +41,14 @@ constexpr double kLightScale = 1.0 / (683.0 * std::numbers::pi);
 
 // --- files, through tinygltf's callbacks -----------------------------------------------------
 
+// What one reading may read in all (the file, its buffers and images; a file naming one buffer
+// many times reads it many times).
+constexpr uintmax_t kMaxBytesRead = uintmax_t{4} << 30;
+// Deeper JSON than this is no glTF; nlohmann's parser recurses once a level.
+constexpr int kMaxJsonDepth = 512;
+
 bool readBoundedFile(std::vector<unsigned char>* out, std::string* err, const std::string& path,
-                     void*) {
+                     void* budget) {
   std::error_code error;
   const auto status = fs::status(path, error);
   if (status.type() != fs::file_type::regular) {
@@ -53,6 +59,14 @@ bool readBoundedFile(std::vector<unsigned char>* out, std::string* err, const st
   if (error || size > kMaxGltfFileBytes) {
     if (err) *err += "\"" + path + "\" is too large (over 2 GiB)\n";
     return false;
+  }
+  if (budget != nullptr) {
+    auto& left = *static_cast<uintmax_t*>(budget);
+    if (size > left) {
+      if (err) *err += "the file's buffers and images together exceed 4 GiB at \"" + path + "\"\n";
+      return false;
+    }
+    left -= size;
   }
   std::ifstream in(path, std::ios::binary);
   out->resize(static_cast<size_t>(size));
@@ -72,12 +86,84 @@ bool writeNothing(std::string*, const std::string&, const std::vector<unsigned c
   return false;
 }
 
-// Images are kept encoded here and decoded by decodeTextureImage, within the budget.
-bool keepEncoded(tinygltf::Image* image, const int, std::string*, std::string*, int, int,
-                 const unsigned char* bytes, int size, void*) {
-  image->image.assign(bytes, bytes + size);
+// The encoded bytes of a file's images, kept here (not in tinygltf's images) and decoded by
+// decodeTextureImage within the budget once a texture uses them. Images of the same bytes (a
+// file naming one image file many times) share one copy.
+struct EncodedImages {
+  static constexpr uintmax_t kMaxBytes = uintmax_t{1} << 30;  // of different images, in all
+  std::map<int, std::shared_ptr<const std::vector<unsigned char>>> byImage;  // null: over budget
+  std::multimap<uint64_t, std::shared_ptr<const std::vector<unsigned char>>> byHash;
+  uintmax_t kept = 0;
+};
+
+bool keepEncoded(tinygltf::Image* image, const int index, std::string*, std::string*, int, int,
+                 const unsigned char* bytes, int size, void* user) {
+  auto& store = *static_cast<EncodedImages*>(user);
+  uint64_t hash = 14695981039346656037ull;
+  for (int i = 0; i < size; ++i) hash = (hash ^ bytes[i]) * 1099511628211ull;
   image->as_is = true;
+  const auto [first, last] = store.byHash.equal_range(hash);
+  for (auto it = first; it != last; ++it) {
+    if (it->second->size() == static_cast<size_t>(size) &&
+        std::memcmp(it->second->data(), bytes, static_cast<size_t>(size)) == 0) {
+      store.byImage[index] = it->second;
+      return true;
+    }
+  }
+  if (static_cast<uintmax_t>(size) > EncodedImages::kMaxBytes - store.kept) {
+    store.byImage[index] = nullptr;
+    return true;
+  }
+  auto copy = std::make_shared<const std::vector<unsigned char>>(bytes, bytes + size);
+  store.kept += static_cast<uintmax_t>(size);
+  store.byHash.emplace(hash, copy);
+  store.byImage[index] = std::move(copy);
   return true;
+}
+
+// Why the bytes of a .glb are not one (its header or chunks lie about their lengths), or
+// empty: tinygltf trusts some of them.
+std::string glbProblem(const std::vector<unsigned char>& b) {
+  auto u32 = [&](size_t at) {
+    uint32_t v;
+    std::memcpy(&v, b.data() + at, 4);
+    return v;
+  };
+  if (b.size() < 20) return "it is shorter than a binary glTF's header";
+  if (u32(4) != 2) return "its binary glTF version is " + std::to_string(u32(4)) + ", not 2";
+  if (u32(8) != b.size()) {
+    return "its header says " + std::to_string(u32(8)) + " bytes, the file has " + std::to_string(b.size());
+  }
+  size_t at = 12;
+  for (int chunk = 0; at < b.size(); ++chunk) {
+    if (b.size() - at < 8) return "a chunk header is cut off";
+    const uint64_t length = u32(at), type = u32(at + 4);
+    if (length > b.size() - at - 8) return "a chunk reaches past the end of the file";
+    if (chunk == 0 && type != 0x4E4F534Au) return "its first chunk is not JSON";
+    if (length % 4 != 0) return "a chunk's length is not a multiple of 4";
+    at += 8 + length;
+  }
+  return {};
+}
+
+// Whether JSON text nests arrays and objects deeper than `limit` (strings skipped).
+bool nestsDeeperThan(const unsigned char* text, size_t size, int limit) {
+  int depth = 0;
+  bool inString = false;
+  for (size_t i = 0; i < size; ++i) {
+    const unsigned char c = text[i];
+    if (inString) {
+      if (c == '\\') ++i;
+      else if (c == '"') inString = false;
+    } else if (c == '"') {
+      inString = true;
+    } else if (c == '[' || c == '{') {
+      if (++depth > limit) return true;
+    } else if (c == ']' || c == '}') {
+      --depth;
+    }
+  }
+  return false;
 }
 
 // --- accessors ---------------------------------------------------------------------------------
@@ -128,6 +214,7 @@ class Accessor {
 
   size_t count() const { return count_; }
   int components() const { return components_; }
+  bool hasData() const { return data_ != nullptr; }
   bool isFloat() const { return type_ == TINYGLTF_COMPONENT_TYPE_FLOAT; }
 
   // Component c of element i, as a number (normalised integers in [0, 1] or [-1, 1]).
@@ -227,6 +314,7 @@ class GltfReader {
       }
     }
     onPath_.assign(model_.nodes.size(), 0);
+    visited_.assign(model_.nodes.size(), 0);
     for (const int root : roots) visit(root, Transform::identity(), 0);
     notes_.animations = model_.animations.size();
     notes_.warn(out_.warnings);
@@ -240,21 +328,34 @@ class GltfReader {
  private:
   void load() {
     tinygltf::TinyGLTF loader;
-    loader.SetImageLoader(&keepEncoded, nullptr);
+    loader.SetImageLoader(&keepEncoded, &encoded_);
     tinygltf::FsCallbacks files{};
     files.FileExists = &fileExists;
     files.ExpandFilePath = &expandNothing;
     files.ReadWholeFile = &readBoundedFile;
     files.WriteWholeFile = &writeNothing;
-    files.user_data = nullptr;
+    files.user_data = &bytesLeft_;
     loader.SetFsCallbacks(files);
     std::string error, warning;
     std::vector<unsigned char> head;
     std::string headError;
-    if (!readBoundedFile(&head, &headError, path_, nullptr)) {
+    if (!readBoundedFile(&head, &headError, path_, &bytesLeft_)) {
       throw ModelFileError("model file " + headError.substr(0, headError.size() - 1));
     }
     const bool binary = head.size() >= 4 && std::memcmp(head.data(), "glTF", 4) == 0;
+    if (binary) {
+      if (const std::string why = glbProblem(head); !why.empty()) {
+        throw ModelFileError("model file \"" + path_ + "\" is not a binary glTF file: " + why);
+      }
+    }
+    // The JSON: the whole text file, or the .glb's first chunk.
+    const size_t jsonAt = binary ? 20 : 0;
+    uint32_t jsonSize = static_cast<uint32_t>(head.size());
+    if (binary) std::memcpy(&jsonSize, head.data() + 12, 4);
+    if (nestsDeeperThan(head.data() + jsonAt, jsonSize, kMaxJsonDepth)) {
+      throw ModelFileError("model file \"" + path_ + "\" nests its JSON deeper than " +
+                           std::to_string(kMaxJsonDepth) + " levels: no glTF does");
+    }
     const std::string base = fs::path(path_).parent_path().string();
     if (head.size() > std::numeric_limits<unsigned int>::max()) {
       throw ModelFileError("model file \"" + path_ + "\" is too large");
@@ -296,6 +397,13 @@ class GltfReader {
       throw ModelFileError("model file \"" + path_ + "\": node " + std::to_string(index) +
                            " is its own ancestor (a cycle in the node tree)");
     }
+    // glTF's nodes form trees: a node met twice has two parents (or is a root and a child),
+    // and a file sharing nodes so could make the walk take exponential time.
+    if (visited_[i]) {
+      throw ModelFileError("model file \"" + path_ + "\": node " + std::to_string(index) +
+                           " has more than one parent (glTF's nodes form trees)");
+    }
+    visited_[i] = 1;
     if (depth > kMaxDepth) {
       throw ModelFileError("model file \"" + path_ + "\": the node tree is deeper than " +
                            std::to_string(kMaxDepth));
@@ -381,6 +489,9 @@ class GltfReader {
     if (position == primitive.attributes.end()) throw ModelFileError(what + " has no POSITION");
     const Accessor positions(model_, position->second, what + " POSITION");
     if (positions.components() != 3) throw ModelFileError(what + ": POSITION is not 3-vectors");
+    // Without a buffer view an accessor is all zeros: every triangle would be a point, and its
+    // count, which no buffer bounds, could ask for any amount of memory.
+    if (!positions.hasData()) throw ModelFileError(what + ": POSITION has no data (all zeros)");
     RawMesh raw;
     const size_t n = positions.count();
     raw.positions.resize(n);
@@ -392,6 +503,7 @@ class GltfReader {
       if (found == primitive.attributes.end()) return std::nullopt;
       Accessor a(model_, found->second, what + " " + name);
       if (a.count() != n) throw ModelFileError(what + ": " + name + " has a count unlike POSITION's");
+      if (!a.hasData()) return std::nullopt;  // all zeros: as good as none
       return a;
     };
     if (const auto normals = attribute("NORMAL"); normals && normals->components() == 3) {
@@ -419,6 +531,7 @@ class GltfReader {
     if (primitive.indices >= 0) {
       const Accessor indices(model_, primitive.indices, what + " indices");
       if (!indices.isIndexType()) throw ModelFileError(what + ": indices are not unsigned integers");
+      if (!indices.hasData()) throw ModelFileError(what + ": its indices have no data (all zeros)");
       order.resize(indices.count());
       for (size_t i = 0; i < order.size(); ++i) order[i] = indices.index(i);
     } else {
@@ -611,11 +724,14 @@ class GltfReader {
                                    : fs::path(path_).filename().string() + " image " +
                                          std::to_string(index) +
                                          (image.name.empty() ? "" : " '" + image.name + "'");
-      if (image.image.empty()) {
+      const auto bytes = encoded_.byImage.find(index);
+      if (bytes == encoded_.byImage.end()) {
         notes_.problem(out_.warnings, "texture image " + name + " was not found");
+      } else if (bytes->second == nullptr) {
+        notes_.problem(out_.warnings, "texture image " + name + " is beyond the 1 GiB its file's images may take encoded");
       } else {
         try {
-          result = decodeTextureImage(image.image.data(), image.image.size(), name, budget_);
+          result = decodeTextureImage(bytes->second->data(), bytes->second->size(), name, budget_);
         } catch (const TextureError& e) {
           notes_.problem(out_.warnings, e.what());
         }
@@ -640,16 +756,24 @@ class GltfReader {
     view.lookAt = view.eye + normalize(forward);
     if (c.type == "orthographic") {
       const double ymag = std::abs(c.orthographic.ymag), xmag = std::abs(c.orthographic.xmag);
-      if (!(ymag > 0) || !std::isfinite(ymag)) return;
       view.orthoHeight = 2 * ymag * length(view.up);
-      if (xmag > 0 && std::isfinite(xmag)) camera.aspectRatio = xmag / ymag;
-    } else {
+      const double aspect = xmag / ymag;
+      if (!(view.orthoHeight > 0 && view.orthoHeight <= 1e9)) return unusableCamera(camera.name);
+      if (aspect > 1e-3 && aspect < 1e3) camera.aspectRatio = aspect;
+    } else if (c.type == "perspective") {
       const double fov = degrees(c.perspective.yfov);
-      view.fovDegrees = fov > 0 && fov < 180 ? fov : 45;
+      if (!(fov > 0 && fov <= 179)) return unusableCamera(camera.name);
+      view.fovDegrees = fov;
       const double aspect = c.perspective.aspectRatio;
-      if (aspect > 0 && std::isfinite(aspect)) camera.aspectRatio = aspect;
+      if (aspect > 1e-3 && aspect < 1e3) camera.aspectRatio = aspect;
+    } else {
+      return unusableCamera(camera.name);
     }
     out_.cameras.push_back(std::move(camera));
+  }
+
+  void unusableCamera(const std::string& name) {
+    notes_.notUsed.insert("camera '" + name + "', whose projection no camera can have");
   }
 
   void addLight(int index, const Transform& world) {
@@ -682,7 +806,9 @@ class GltfReader {
   size_t budget_;
   tinygltf::Model model_;
   ImportedModel out_;
-  std::vector<char> onPath_;
+  EncodedImages encoded_;
+  std::vector<char> onPath_, visited_;
+  uintmax_t bytesLeft_ = kMaxBytesRead;
   std::map<std::pair<int, size_t>, std::shared_ptr<const TriangleMesh>> meshes_;
   std::map<int, Material> materials_;
   std::map<int, int> textures_;

@@ -63,7 +63,48 @@ Camera placed(Camera camera, const Transform& t, double scale) {
 
 const Transform kFromRightHanded = Transform::scaling({1, 1, -1});
 
-bool finiteColor(const Color& c) { return isFinite(c) && maxComponent(c) <= kMaxColorComponent; }
+bool inRange(const Vec3& v) {
+  return isFinite(v) && std::abs(v.x) <= kMaxCoordinate && std::abs(v.y) <= kMaxCoordinate &&
+         std::abs(v.z) <= kMaxCoordinate;
+}
+
+// Whether a placed light is one a light block can say: what the master takes in, its workers
+// must read back from the text it writes.
+bool lawful(const Light& light) {
+  const Color& c = light.color;
+  if (!(isFinite(c) && c.x >= 0 && c.y >= 0 && c.z >= 0 && maxComponent(c) <= kMaxColorComponent)) {
+    return false;
+  }
+  return std::visit(
+      [](const auto& shape) {
+        using T = std::decay_t<decltype(shape)>;
+        if constexpr (std::is_same_v<T, PointLight>) return inRange(shape.position);
+        if constexpr (std::is_same_v<T, SpotLight>) {
+          return inRange(shape.position) && inRange(shape.direction) && length(shape.direction) > 0;
+        }
+        if constexpr (std::is_same_v<T, DirectionalLight>) {
+          return inRange(shape.direction) && length(shape.direction) > 0;
+        }
+        if constexpr (std::is_same_v<T, SphereLight>) {
+          return inRange(shape.center) && shape.radius > 0 && shape.radius <= kMaxCoordinate;
+        }
+        if constexpr (std::is_same_v<T, RectLight>) {
+          return inRange(shape.corner) && inRange(shape.edge1) && inRange(shape.edge2) &&
+                 length(cross(shape.edge1, shape.edge2)) > 0;
+        }
+      },
+      light.shape);
+}
+
+// The same for a camera, by the camera block's rules.
+bool lawful(const Camera& c) {
+  if (!inRange(c.eye) || !inRange(c.lookAt) || !inRange(c.up)) return false;
+  const Vec3 view = c.lookAt - c.eye;
+  if (!(length(view) > 0) || !(length(c.up) > 0)) return false;
+  if (!(length(cross(normalize(view), normalize(c.up))) >= 1e-6)) return false;
+  if (!(c.fovDegrees > 0 && c.fovDegrees < 180)) return false;
+  return c.orthoHeight == 0 || (c.orthoHeight > 0 && c.orthoHeight <= kMaxCoordinate);
+}
 
 }  // namespace
 
@@ -143,16 +184,34 @@ void readImportBlock(ImportBlocks& b, const Token& keyword) {
     }
     addObjects(scene, model->objects, &placement, textureOffset);
     scene.textures.insert(scene.textures.end(), model->textures.begin(), model->textures.end());
+    // Lights and cameras a light or camera block could not say (beyond the coordinates a
+    // scene allows, once placed) are left out, with a warning.
+    size_t leftOut = 0;
     if (source.lights) {
       for (const Light& light : model->lights) {
         const Light l = placed(light, placement, scale, source.lightScale);
-        if (finiteColor(l.color)) scene.lights.push_back(l);
+        if (lawful(l)) {
+          scene.lights.push_back(l);
+        } else {
+          ++leftOut;
+        }
       }
     }
     for (const ModelCamera& camera : model->cameras) {
       ModelCamera offered = camera;
       offered.camera = placed(camera.camera, placement, scale);
-      b.cameras.push_back({std::move(offered), source.file});
+      if (lawful(offered.camera)) {
+        b.cameras.push_back({std::move(offered), source.file});
+      } else {
+        ++leftOut;
+      }
+    }
+    if (leftOut > 0) {
+      scene.warnings.push_back(b.in.source().fileName() + ":" + std::to_string(keyword.line) +
+                               ": model file \"" + source.file + "\": " + std::to_string(leftOut) +
+                               (leftOut == 1 ? " light or camera" : " lights or cameras") +
+                               " left out: placed beyond the coordinates, intensities or angles "
+                               "a scene allows");
     }
   }
   // Every vertex once placed must stay within the coordinates a scene allows.
