@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets (CMake preset `fuzz`, in build-fuzz/) and runs each for SECONDS
-# (default 60): the scene parser, seeded with the example scenes and the malformed corpus, and
-# the message decoder, seeded with one message of each kind. Fails (non-zero exit) on any crash,
+# (default 60): the scene parser, seeded with the example scenes and the malformed corpus, the
+# message decoder, seeded with one message of each kind, the glTF reader, seeded with the .glb
+# and .gltf files of tests/models and scenes/models, and the asset pack's decoder, seeded with
+# the packs of scenes/chess.scene and scenes/street.scene. Fails (non-zero exit) on any crash,
 # sanitizer report, leak or input slower than 10 s; the input that failed is left in
 # build-fuzz/fuzz/ as crash-*, leak-* or timeout-*, to replay with
 # `build-fuzz/fuzz/prt_fuzz_scene_parser FILE`. The corpora grow in build-fuzz/corpus/.
@@ -16,17 +18,21 @@ cmake --preset fuzz >/dev/null
 cmake --build --preset fuzz -- -j"$(nproc)" >/dev/null
 
 corpus=build-fuzz/corpus
-mkdir -p "$corpus/scene" "$corpus/message"
+mkdir -p "$corpus/scene" "$corpus/message" "$corpus/model" "$corpus/pack"
 cp scenes/*.scene tests/malformed/*.scene "$corpus/scene/"
 build-fuzz/fuzz/prt_fuzz_message_seeds "$corpus/message" scenes/fig08-basic-features.scene
+cp tests/models/*.glb tests/models/*.gltf scenes/models/*.glb scenes/models/*.gltf \
+   scenes/models/street/*.glb "$corpus/model/"
+build-fuzz/fuzz/prt_fuzz_pack_seeds "$corpus/pack" scenes/chess.scene scenes/street.scene
 
 # -rss_limit_mb and -malloc_limit_mb: an input must not make the code take gigabytes;
-# -max_len: scenes of up to 64 kB (the parser's cost is linear; longer inputs only slow it).
+# -max_len: inputs of up to 64 kB (the parser's cost is linear; longer inputs only slow it),
+# or as the third argument says (the model files and packs of the seeds are larger).
 run() {
-  local target=$1 dir=$2
+  local target=$1 dir=$2 max_len=${3:-65536}
   echo "fuzz: $target for ${seconds} s"
   (cd build-fuzz/fuzz && ASAN_OPTIONS=detect_leaks=1 ./"$target" -max_total_time="$seconds" \
-     -timeout=10 -rss_limit_mb=2048 -malloc_limit_mb=1024 -max_len=65536 -print_final_stats=1 \
+     -timeout=10 -rss_limit_mb=2048 -malloc_limit_mb=1024 -max_len="$max_len" -print_final_stats=1 \
      "../../$dir" 2>"$target.log") || {
     echo "fuzz: $target FAILED; see build-fuzz/fuzz/$target.log:" >&2
     grep -E "ERROR|SUMMARY|Test unit written" "build-fuzz/fuzz/$target.log" >&2 || tail -20 "build-fuzz/fuzz/$target.log" >&2
@@ -37,4 +43,6 @@ run() {
 status=0
 run prt_fuzz_scene_parser "$corpus/scene" || status=1
 run prt_fuzz_message_decoder "$corpus/message" || status=1
+run prt_fuzz_model_reader "$corpus/model" 131072 || status=1
+run prt_fuzz_asset_pack "$corpus/pack" 1048576 || status=1
 exit $status

@@ -35,7 +35,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr size_t kMaxObjects = size_t{1} << 24;
+constexpr size_t kMaxObjects = size_t{1} << 20;  // placed meshes, as for glTF
 constexpr int kMaxDepth = 1024;
 // assimp's light colours carry the exporter's intensity in the file's own units; Blender's
 // FBX and COLLADA exporters write the light's colour times its power in watts divided by a

@@ -33,7 +33,9 @@ namespace fs = std::filesystem;
 
 constexpr uintmax_t kMaxGltfFileBytes = uintmax_t{2} << 30;
 constexpr size_t kMaxElements = size_t{1} << 31;  // vertices or indices of one accessor
-constexpr size_t kMaxObjects = size_t{1} << 24;   // placements of meshes in one file
+// Placements of meshes in one file: each costs its scene and every worker a few hundred bytes,
+// so a small file placing meshes many times over could ask for any amount of memory.
+constexpr size_t kMaxObjects = size_t{1} << 20;
 constexpr int kMaxDepth = 1024;                   // of the node tree
 // Photometric glTF units to PRT's: Blender writes 683 lm/W (its default, "Standard"
 // lighting mode) and renders a Lambertian surface with 1/pi of the irradiance.
@@ -93,12 +95,20 @@ struct EncodedImages {
   static constexpr uintmax_t kMaxBytes = uintmax_t{1} << 30;  // of different images, in all
   std::map<int, std::shared_ptr<const std::vector<unsigned char>>> byImage;  // null: over budget
   std::multimap<uint64_t, std::shared_ptr<const std::vector<unsigned char>>> byHash;
+  std::map<int, int> inView;  // images stored in buffer views: their view
   uintmax_t kept = 0;
 };
 
 bool keepEncoded(tinygltf::Image* image, const int index, std::string*, std::string*, int, int,
                  const unsigned char* bytes, int size, void* user) {
   auto& store = *static_cast<EncodedImages*>(user);
+  // tinygltf hands an image in a buffer view over without checking the view's range against
+  // its buffer: its bytes are taken from the buffer later, checked (GltfReader::viewBytes).
+  if (image->bufferView >= 0) {
+    image->as_is = true;
+    store.inView[index] = image->bufferView;
+    return true;
+  }
   uint64_t hash = 14695981039346656037ull;
   for (int i = 0; i < size; ++i) hash = (hash ^ bytes[i]) * 1099511628211ull;
   image->as_is = true;
@@ -572,7 +582,8 @@ class GltfReader {
     const tinygltf::TextureInfo& info = base.index >= 0 ? base : m->emissiveTexture;
     int set = info.texCoord;
     if (const tinygltf::Value* t = extension(info.extensions, "KHR_texture_transform")) {
-      set = static_cast<int>(number(*t, "texCoord", set));
+      const double given = number(*t, "texCoord", set);
+      set = given >= 0 && given <= 7 ? static_cast<int>(given) : 0;
     }
     return std::clamp(set, 0, 7);
   }
@@ -647,7 +658,8 @@ class GltfReader {
     }
     if (e.Has("diffuseTexture") && e.Get("diffuseTexture").IsObject()) {
       tinygltf::TextureInfo info;
-      info.index = static_cast<int>(number(e.Get("diffuseTexture"), "index", -1));
+      const double index = number(e.Get("diffuseTexture"), "index", -1);
+      info.index = index >= 0 && index < 1e9 ? static_cast<int>(index) : -1;
       in.baseColorTexture = textureRef(info, name);
     }
   }
@@ -724,6 +736,20 @@ class GltfReader {
                                    : fs::path(path_).filename().string() + " image " +
                                          std::to_string(index) +
                                          (image.name.empty() ? "" : " '" + image.name + "'");
+      if (const auto view = encoded_.inView.find(index); view != encoded_.inView.end()) {
+        const auto [data, size] = viewBytes(view->second);
+        if (data == nullptr) {
+          notes_.problem(out_.warnings, "texture image " + name + "'s buffer view reaches past its buffer");
+        } else {
+          try {
+            result = decodeTextureImage(data, size, name, budget_);
+          } catch (const TextureError& e) {
+            notes_.problem(out_.warnings, e.what());
+          }
+        }
+        images_[index] = result;
+        return result;
+      }
       const auto bytes = encoded_.byImage.find(index);
       if (bytes == encoded_.byImage.end()) {
         notes_.problem(out_.warnings, "texture image " + name + " was not found");
@@ -770,6 +796,19 @@ class GltfReader {
       return unusableCamera(camera.name);
     }
     out_.cameras.push_back(std::move(camera));
+  }
+
+  // The bytes of buffer view `index`, or null when it or its buffer does not exist or the
+  // view reaches past the buffer.
+  std::pair<const uint8_t*, size_t> viewBytes(int index) const {
+    if (index < 0 || static_cast<size_t>(index) >= model_.bufferViews.size()) return {nullptr, 0};
+    const tinygltf::BufferView& view = model_.bufferViews[static_cast<size_t>(index)];
+    if (view.buffer < 0 || static_cast<size_t>(view.buffer) >= model_.buffers.size()) return {nullptr, 0};
+    const std::vector<unsigned char>& buffer = model_.buffers[static_cast<size_t>(view.buffer)].data;
+    if (view.byteOffset > buffer.size() || view.byteLength > buffer.size() - view.byteOffset) {
+      return {nullptr, 0};
+    }
+    return {buffer.data() + view.byteOffset, view.byteLength};
   }
 
   void unusableCamera(const std::string& name) {

@@ -152,7 +152,7 @@ void writeObject(Writer& out, const Object& object) {
           out.vector("point", shape.point);
           out.vector("normal", shape.normal);
         } else if constexpr (std::is_same_v<T, InstanceShape>) {
-          PRT_CHECK(!"an instance is written by the import block that placed it");
+          PRT_CHECK(false);  // an instance is written by the import block that placed it
         } else {
           static_assert(std::is_same_v<T, MeshShape>);
           const MeshSource& source = shape.source;
