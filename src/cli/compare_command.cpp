@@ -156,7 +156,7 @@ Action addCompareCommand(CLI::App& app) {
   auto o = std::make_shared<CompareOptions>();
   auto* cmd = app.add_subcommand(
       "compare",
-      "Render a .scene file with PRT and with POV-Ray 3.7 and report how much the images "
+      "Render a .scene or model file with PRT and with POV-Ray 3.7 and report how much the images "
       "differ (PSNR, share of differing pixels). Exit code 0 when the comparison ran, 1 when "
       "POV-Ray is missing or fails, 2 on bad input");
   addSceneSource(*cmd, o->scene);

@@ -63,7 +63,7 @@ Action addExportCommand(CLI::App& app) {
   auto o = std::make_shared<ExportOptions>();
   auto* cmd = app.add_subcommand(
       "export",
-      "Translate a .scene file for another renderer: POV-Ray 3.7 (the image POV-Ray renders "
+      "Translate a .scene or model file for another renderer: POV-Ray 3.7 (the image POV-Ray renders "
       "from it matches PRT's except where docs/povray-mapping.md says otherwise)");
   addSceneSource(*cmd, o->scene);
   cmd->add_option("--format", o->format, "Output format")

@@ -161,7 +161,8 @@ Action addRenderCommand(CLI::App& app, const std::string& commandLine) {
   o->commandLine = commandLine;
   auto* cmd = app.add_subcommand(
       "render",
-      "Render a .scene file to an image, serially or in parallel (--workers N, or under "
+      "Render a .scene file or a model file (glTF, OBJ, FBX, ...) to an image, serially or in "
+      "parallel (--workers N, or under "
       "mpirun with rank 0 as the master)");
   addSceneSource(*cmd, o->scene);
   cmd->add_option("-o,--output", o->output,
