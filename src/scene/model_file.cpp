@@ -37,15 +37,13 @@ bool looksLikeModelFile(const std::string& path) {
   if (std::filesystem::status(path, error).type() != std::filesystem::file_type::regular) {
     return false;
   }
+  // Formats known by their first bytes: binary glTF, PLY, binary FBX ("Kaydara FBX Binary").
+  // Text formats without a model extension are taken for scene text.
   char head[4] = {};
   std::ifstream in(path, std::ios::binary);
-  if (in.read(head, 4) && std::memcmp(head, "glTF", 4) == 0) return true;  // binary glTF
-  // Binary formats assimp knows by their first bytes; text ones are left to the extension.
-  static const char* const kMagic[] = {"ply\n", "ply\r", "Kayd", "solid"};
-  for (const char* magic : kMagic) {
-    if (std::strncmp(head, magic, std::min<size_t>(4, std::strlen(magic))) == 0 && magic[0] != 's') {
-      return true;
-    }
+  if (!in.read(head, 4)) return false;
+  for (const char* magic : {"glTF", "ply\n", "ply\r", "Kayd"}) {
+    if (std::memcmp(head, magic, 4) == 0) return true;
   }
   return false;
 }
