@@ -27,7 +27,7 @@ AdaptiveFactoringStrategy::AdaptiveFactoringStrategy(uint64_t minChunk) : minChu
 }
 
 TaskSet AdaptiveFactoringStrategy::initialPool(const StartInfo& info) {
-  return interleavedOrder(info.taskCount);
+  return interleavedOrder(info.taskCount, info.frameTasks);
 }
 
 uint64_t AdaptiveFactoringStrategy::handOutSize(int worker) {

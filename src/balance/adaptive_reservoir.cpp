@@ -43,7 +43,7 @@ AdaptiveReservoirStrategy::AdaptiveReservoirStrategy(double firstPercent, double
 }
 
 TaskSet AdaptiveReservoirStrategy::initialPool(const StartInfo& info) {
-  return interleavedOrder(info.taskCount);
+  return interleavedOrder(info.taskCount, info.frameTasks);
 }
 
 void AdaptiveReservoirStrategy::prepare(const StartInfo& info) {

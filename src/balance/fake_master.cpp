@@ -36,7 +36,9 @@ class FakeMaster {
     const std::vector<double> told = config_.hideSpeedIndex
                                          ? std::vector<double>(workers_.size(), 1.0)
                                          : config_.speedIndexSeconds;
-    apply(strategy_.start(StartInfo{config_.taskCount, told}));
+    StartInfo info{config_.taskCount, told};
+    info.frameTasks = config_.frameTasks;
+    apply(strategy_.start(info));
     const uint64_t maxRounds = config_.maxRounds ? config_.maxRounds : 2 * config_.taskCount + 100;
     while (result_.rounds < maxRounds && result_.errors.empty()) {
       ++result_.rounds;

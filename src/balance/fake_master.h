@@ -36,6 +36,7 @@ struct FakeRunConfig {
   uint64_t slowedFromRound = 0;           // round from this round on
   uint64_t slowedRate = 1;
   std::vector<FakeArrival> arrivals = {};  // workers c, c+1, ... join, in this order
+  uint64_t frameTasks = 0;                 // StartInfo::frameTasks: a frame sequence's
 };
 
 struct FakeRunResult {

@@ -23,7 +23,18 @@ uint64_t interleavedStrata(uint64_t taskCount) {
   return std::min(s, taskCount);
 }
 
-TaskSet interleavedOrder(uint64_t taskCount) {
+TaskSet interleavedOrder(uint64_t taskCount, uint64_t frameTasks) {
+  if (frameTasks > 0 && frameTasks < taskCount) {
+    TaskSet order;
+    for (uint64_t start = 0; start < taskCount; start += frameTasks) {
+      const TaskSet frame = interleavedOrder(std::min(frameTasks, taskCount - start));
+      for (TaskRun run : frame.runs()) {
+        run.first += start;
+        order.append(run);
+      }
+    }
+    return order;
+  }
   const uint64_t strata = interleavedStrata(taskCount);
   if (strata <= 1) return TaskSet::range(0, taskCount);
   // The golden-ratio step, coprime with the prime number of strata (unless S = taskCount,

@@ -27,7 +27,9 @@ inline constexpr uint64_t kStratumTasks = 32;
 // (at least 2, at most taskCount; 1 for one task).
 uint64_t interleavedStrata(uint64_t taskCount);
 
-// Every task 0 .. taskCount-1 exactly once, in interleaved order.
-TaskSet interleavedOrder(uint64_t taskCount);
+// Every task 0 .. taskCount-1 exactly once, in interleaved order. With `frameTasks` (a frame
+// sequence's pixels per frame), each frame's tasks are interleaved among themselves and the
+// frames follow one another, so that frames complete one after another, not all at the end.
+TaskSet interleavedOrder(uint64_t taskCount, uint64_t frameTasks = 0);
 
 }  // namespace prt

@@ -92,6 +92,7 @@ TEST(JoinTest, StrategiesThatHandOutAsTheyGoLetNewcomersHelp) {
   // gives the newcomers 8/9 of the 3980 tasks left.
   for (const StrategyRow& row : strategyRows()) {
     if (row.kind == StrategyKind::Static) continue;
+    if (row.name == "frames") continue;  // a still is one frame: the first worker's whole
     SCOPED_TRACE(row.name);
     const testing::FakeRunResult r = slowStartThenTwoFastJoin(row.name);
     ASSERT_TRUE(r.errors.empty()) << r.errors.front();

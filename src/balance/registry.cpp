@@ -13,6 +13,7 @@
 #include "balance/awf.h"
 #include "balance/blocks.h"
 #include "balance/factoring.h"
+#include "balance/frame_strategy.h"
 #include "balance/guided.h"
 #include "balance/hybrid.h"
 #include "balance/reservoir.h"
@@ -83,6 +84,9 @@ const std::vector<StrategyRow>& rows() {
        }},
       {"blocks", K::Static, "one contiguous block per worker", false, {},
        [](const O&) { return make<BlocksStrategy>(); }},
+      {"frames", K::Dynamic,
+       "whole frames of a sequence to whole workers, as render farms do (a still: to one)",
+       false, {}, [](const O&) { return make<FrameStrategy>(); }},
       {"self", K::Dynamic, "self-scheduling with a fixed chunk", false, {kChunk},
        [](const O& o) { return make<SelfSchedulingStrategy>(o.chunk); }},
       {"guided", K::Dynamic, "guided self-scheduling, ceil(R / c)", false, {},

@@ -12,7 +12,7 @@ TEST(StrategyRegistryTest, EveryNameMakesThatStrategy) {
   const std::vector<std::string> names = strategyNames();
   EXPECT_EQ(names, (std::vector<std::string>{"scatter", "scatter-weighted", "hybrid",
                                              "hybrid-weighted", "reservoir", "reservoir-scatter",
-                                             "adaptive", "blocks", "self", "guided", "factoring",
+                                             "adaptive", "blocks", "frames", "self", "guided", "factoring",
                                              "awf-b", "awf-c", "af", "stealing"}));
   for (const std::string& name : names) EXPECT_EQ(makeStrategy(name, {})->name(), name);
 }

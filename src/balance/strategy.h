@@ -64,6 +64,10 @@ struct StrategyOptions {
 struct StartInfo {
   uint64_t taskCount = 0;                 // tasks are 0 .. taskCount-1
   std::vector<double> speedIndexSeconds;  // one per worker; lower is faster; size is c >= 1
+  // A frame sequence's tasks per frame (frame i's are i * frameTasks ..., in order), or 0 for
+  // a still. Strategies with an order of their own keep frames apart in it, so that frames
+  // complete one after another (interleaved_order.h); the paper's static strategies ignore it.
+  uint64_t frameTasks = 0;
 };
 
 class Strategy {

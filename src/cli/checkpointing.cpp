@@ -8,6 +8,7 @@
 #include "core/input_error.h"
 #include "core/stop_signals.h"
 #include "image/image_io.h"
+#include "drive/frame_renderer.h"
 #include "trace/renderer.h"
 
 namespace prt::cli {
@@ -18,7 +19,7 @@ std::optional<Checkpoint> resumeCheckpoint(const RenderOptions& o, const Scene& 
     if (o.resume) throw InputError("--resume needs --checkpoint FILE: the checkpoint to resume");
     return std::nullopt;
   }
-  const CheckpointKey key = checkpointKey(scene, settings);
+  const CheckpointKey key = checkpointKey(scene, settings, framesOf(o));
   if (!o.resume) {
     std::error_code ec;
     if (std::filesystem::exists(o.checkpointPath, ec)) {
@@ -47,19 +48,38 @@ int renderSerialWithCheckpoint(const RenderOptions& o, const Scene& scene,
   if (!o.costMapPath.empty()) {
     throw InputError("--cost-map times a whole render; it cannot be combined with --checkpoint");
   }
-  const CheckpointKey key = checkpointKey(scene, settings);
+  const FrameSequence frames = framesOf(o);
+  const CheckpointKey key = checkpointKey(scene, settings, frames);
   std::optional<Checkpoint> resumed = resumeCheckpoint(o, scene, settings);
   const std::function<int()> interrupted = stopSignalsFor(o);
-  const World world(scene);
-  const Renderer renderer(world, settings);
-  const uint64_t pixels = renderer.pixelCount();
-  Image image = resumed ? resumed->image : Image(scene.image.width, scene.image.height);
+  FrameRenderer renderer(scene, settings, frames);
+  // A sequence's pixels are its frames one above the other; each frame is written once its
+  // last pixel is in.
+  const uint64_t perFrame = renderer.pixelsPerFrame();
+  const uint64_t pixels = renderer.taskCount();
+  const bool sequence = frames.count() > 1;
+  const int rows = scene.image.height * static_cast<int>(frames.count());
+  Image image = resumed ? resumed->image : Image(scene.image.width, rows);
   TaskSet done = resumed ? resumed->done : TaskSet{};
   const std::vector<int16_t> noOwners;
   writeCheckpoint(o.checkpointPath, key, done, image, noOwners);  // the path works: go
 
   std::vector<bool> isDone(pixels, false);
-  done.forEach([&](uint64_t p) { isDone[p] = true; });
+  std::vector<uint64_t> frameCounts(frames.count(), 0);
+  done.forEach([&](uint64_t p) {
+    isDone[p] = true;
+    ++frameCounts[p / perFrame];
+  });
+  const auto writeFrame = [&](uint64_t ordinal) {
+    Image frame(scene.image.width, scene.image.height);
+    for (uint64_t p = 0; p < perFrame; ++p) frame.set(p, image.at(ordinal * perFrame + p));
+    writeImage(frame, framePath(scene.image.output, frames.number(ordinal)));
+  };
+  if (sequence) {  // what the earlier run completed, written again in case it was cut short
+    for (uint64_t i = 0; i < frames.count(); ++i) {
+      if (frameCounts[i] == perFrame) writeFrame(i);
+    }
+  }
   const uint64_t resumedCount = done.size();
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
@@ -86,9 +106,12 @@ int renderSerialWithCheckpoint(const RenderOptions& o, const Scene& scene,
       ++next;
     }
     if (todo.empty()) continue;
-    rays += renderTasks(renderer, todo, o.threads, colors);
+    rays += renderer.render(todo, o.threads, colors);
     size_t i = 0;
-    todo.forEach([&](uint64_t p) { image.set(p, colors[i++]); });
+    todo.forEach([&](uint64_t p) {
+      image.set(p, colors[i++]);
+      if (++frameCounts[p / perFrame] == perFrame && sequence) writeFrame(p / perFrame);
+    });
     done.append(todo);
     bar.update(done.size(), pixels);
     const auto now = Clock::now();
@@ -99,7 +122,7 @@ int renderSerialWithCheckpoint(const RenderOptions& o, const Scene& scene,
     }
   }
   const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
-  writeImage(image, scene.image.output);
+  if (!sequence) writeImage(image, scene.image.output);
   removeCheckpoint(o.checkpointPath);
   if (!o.quiet) {
     std::printf("%s: %dx%d, %d spp, DRT %d, %.3f s, %llu rays; %llu pixels from the checkpoint\n",

@@ -11,6 +11,7 @@
 
 #include "cli/checkpointing.h"
 #include "core/input_error.h"
+#include "drive/frame_renderer.h"
 #include "drive/local_driver.h"
 #include "drive/speed_probe.h"
 #include "image/atomic_file.h"
@@ -68,10 +69,16 @@ std::optional<double> serialSeconds(const RenderOptions& o, const Scene& scene,
   if (o.serialSeconds) return o.serialSeconds;
   if (!o.measureSerial) return std::nullopt;
   if (!o.quiet) std::fprintf(stderr, "measuring the serial time (one thread)...\n");
-  const World world(scene);
-  RenderStats stats;
-  renderImage(Renderer(world, settings), 1, &stats);
-  return stats.seconds;
+  // Every frame of a sequence, each with its preparation, as a serial render pays for them.
+  FrameRenderer frames(scene, settings, framesOf(o));
+  double seconds = 0;
+  for (uint64_t i = 0; i < frames.frames().count(); ++i) {
+    const double before = frames.buildSeconds();
+    RenderStats stats;
+    renderImage(frames.frame(i), 1, &stats);
+    seconds += stats.seconds + (frames.buildSeconds() - before);
+  }
+  return seconds;
 }
 
 }  // namespace
@@ -201,17 +208,36 @@ ParallelOptions toParallelOptions(const RenderOptions& o, int workers) {
 }
 
 int finishParallelRun(const RenderOptions& o, const Scene& scene, const ParallelRun& run) {
-  writeImage(run.image, scene.image.output);
+  const FrameSequence frames = framesOf(o);
+  const bool sequence = frames.count() > 1;
+  if (!sequence) writeImage(run.image, scene.image.output);  // a sequence's frames are written
   writeRenderReportAndPage(o, scene, run);  // --report and --html
   if (!o.tracePath.empty()) {
     writeFileAtomically(o.tracePath,
                         chromeTraceJson(run.events, static_cast<int>(run.report.workers.size()),
                                         run.report.elapsedSeconds));
   }
-  if (!o.ownershipPath.empty()) writeImage(ownershipImage(run.image, run.owner), o.ownershipPath);
+  if (!o.ownershipPath.empty() && !sequence) {
+    writeImage(ownershipImage(run.image, run.owner), o.ownershipPath);
+  } else if (!o.ownershipPath.empty()) {  // one map per frame
+    const Image all = ownershipImage(run.image, run.owner);
+    const uint64_t perFrame = static_cast<uint64_t>(scene.image.width) * scene.image.height;
+    for (uint64_t i = 0; i < frames.count(); ++i) {
+      Image frame(scene.image.width, scene.image.height);
+      for (uint64_t p = 0; p < perFrame; ++p) frame.set(p, all.at(i * perFrame + p));
+      writeImage(frame, framePath(o.ownershipPath, frames.number(i)));
+    }
+  }
   // The image holds every pixel now: the checkpoint has nothing more to give.
   if (!o.checkpointPath.empty()) removeCheckpoint(o.checkpointPath);
-  if (!o.quiet) {
+  if (!o.quiet && sequence) {
+    std::printf("%s: %llu frames (%lld-%lld:%lld) of %dx%d, %d spp, DRT %d\n%s",
+                scene.image.output.c_str(), static_cast<unsigned long long>(frames.count()),
+                static_cast<long long>(frames.first), static_cast<long long>(frames.last),
+                static_cast<long long>(frames.step), scene.image.width, scene.image.height,
+                run.report.info.samplesPerPixel, run.report.info.drtRate,
+                run.report.toTable().c_str());
+  } else if (!o.quiet) {
     std::printf("%s: %dx%d, %d spp, DRT %d\n%s", scene.image.output.c_str(), scene.image.width,
                 scene.image.height, run.report.info.samplesPerPixel, run.report.info.drtRate,
                 run.report.toTable().c_str());
@@ -225,8 +251,20 @@ RunRequest makeRunRequest(const RenderOptions& o, const Scene& scene, const Rend
   request.scene = scene;
   request.settings = s;
   request.options = toParallelOptions(o, workers);
-  validateParallelOptions(request.options,
-                          static_cast<uint64_t>(scene.image.width) * scene.image.height);
+  request.frames = framesOf(o);
+  validateParallelOptions(request.options, static_cast<uint64_t>(scene.image.width) *
+                                               scene.image.height * request.frames.count());
+  if (request.frames.count() > 1) {
+    const FrameSequence frames = request.frames;
+    const std::string pattern = scene.image.output;
+    const bool quiet = o.quiet;
+    request.frameDone = [frames, pattern, quiet](uint64_t ordinal, const Image& frame) {
+      const std::string path = framePath(pattern, frames.number(ordinal));
+      writeImage(frame, path);
+      if (!quiet) std::fprintf(stderr, "prt: frame %lld written: %s\n",
+                               static_cast<long long>(frames.number(ordinal)), path.c_str());
+    };
+  }
   request.resumeFrom = resumeCheckpoint(o, scene, s);
   request.interrupted = stopSignalsFor(o);
   return request;

@@ -16,12 +16,40 @@
 #include "core/input_error.h"
 #include "image/atomic_file.h"
 #include "image/image_io.h"
+#include "drive/frame_renderer.h"
+#include "scene/animation.h"
+#include "scene/number_text.h"
 #include "scene/scene_file.h"
 #include "sim/cost_map_file.h"
 #include "trace/render_settings.h"
 #include "trace/renderer.h"
 
 namespace prt::cli {
+
+FrameSequence framesOf(const RenderOptions& o) {
+  if (!o.frames.empty() && !o.frame.empty()) {
+    throw InputError("give --frames A-B for a sequence or --frame N for one frame, not both");
+  }
+  if (!(o.fps > 0 && o.fps <= 1e6)) {
+    throw InputError("--fps must be a number of frames per second in (0, 1e6] (got " +
+                     formatDouble(o.fps) + ")");
+  }
+  if (o.frames.empty() && o.frame.empty()) return FrameSequence{};
+  const std::string& text = o.frames.empty() ? o.frame : o.frames;
+  const char* flag = o.frames.empty() ? "--frame" : "--frames";
+  if (!o.frame.empty() && o.frame.find_first_of(":") != std::string::npos) {
+    throw InputError("--frame takes one frame number; use --frames A-B[:STEP] for a sequence");
+  }
+  std::string error;
+  std::optional<FrameSequence> s = parseFrames(text, error);
+  if (!s) throw InputError(std::string(flag) + " '" + text + "': " + error);
+  if (!o.frame.empty() && s->count() != 1) {
+    throw InputError("--frame takes one frame number; use --frames A-B[:STEP] for a sequence");
+  }
+  s->fps = o.fps;
+  return *s;
+}
+
 namespace {
 
 // Applies the command line over the scene's own settings; --spp and --drt win over --case.
@@ -37,6 +65,43 @@ RenderSettings resolveSettings(const RenderOptions& o, Scene& scene) {
   if (pixels > (1ull << 28)) {
     throw InputError("image too large: " + std::to_string(scene.image.width) + "x" +
                      std::to_string(scene.image.height) + " exceeds 2^28 pixels");
+  }
+  const FrameSequence frames = framesOf(o);
+  if (frames.count() > 1) {
+    // The master holds every frame of the job (3 floats and an owner per pixel).
+    if (pixels * frames.count() > (1ull << 30)) {
+      throw InputError(std::to_string(frames.count()) + " frames of " +
+                       std::to_string(scene.image.width) + "x" +
+                       std::to_string(scene.image.height) +
+                       " exceed the 2^30 pixels one job may hold; split the range into jobs");
+    }
+    if (static_cast<uint64_t>(scene.image.height) * frames.count() > (1ull << 30)) {
+      throw InputError("too many rows for one job: split the range into jobs");
+    }
+    if (!hasFramePattern(scene.image.output)) {
+      throw InputError("a sequence of " + std::to_string(frames.count()) +
+                       " frames needs an output pattern with one run of '#' for the frame "
+                       "number, e.g. -o frame_####.png (got '" + scene.image.output + "')");
+    }
+    for (const std::string& path : {o.ownershipPath}) {
+      if (!path.empty() && !hasFramePattern(path)) {
+        throw InputError("--ownership '" + path + "': a sequence writes one map per frame; "
+                         "give a pattern with '#', e.g. owners_####.png");
+      }
+    }
+  } else if (frames.animated) {
+    scene.image.output = framePath(scene.image.output, frames.first);  // --frame N
+  }
+  if (scene.animation) {
+    // Every frame must render: a motion can carry the camera through what it looks at.
+    for (uint64_t i = 0; i < frames.count(); ++i) {
+      const std::string problem = frameProblem(sceneAt(scene, frames.seconds(i)));
+      if (!problem.empty()) {
+        throw InputError("frame " + std::to_string(frames.number(i)) + " (at " +
+                         formatDouble(frames.seconds(i)) + " s): " + problem +
+                         "; change the keys or leave the frame out");
+      }
+    }
   }
   for (const std::string& path : {scene.image.output, o.ownershipPath}) {
     if (path.empty() || isSupportedImagePath(path)) continue;
@@ -75,8 +140,47 @@ void checkOutputs(const RenderOptions& o, const Scene& scene) {
   }
 }
 
+// The frames of a sequence one after another, each on every thread and written once done.
+int renderSerialSequence(const RenderOptions& o, const Scene& scene,
+                         const RenderSettings& settings, const FrameSequence& frames) {
+  FrameRenderer renderer(scene, settings, frames);
+  RenderStats total;
+  for (uint64_t i = 0; i < frames.count(); ++i) {
+    RenderStats stats;
+    Image image = [&] {
+      ProgressBar bar("px", !o.quiet);
+      return renderImage(renderer.frame(i), o.threads, &stats,
+                         [&](uint64_t done, uint64_t all) { bar.update(done, all); });
+    }();
+    const std::string path = framePath(scene.image.output, frames.number(i));
+    writeImage(image, path);
+    total.rays += stats.rays;
+    total.seconds += stats.seconds;
+    if (!o.quiet) {
+      std::printf("frame %lld (%llu of %llu): %s, %.3f s\n",
+                  static_cast<long long>(frames.number(i)),
+                  static_cast<unsigned long long>(i + 1),
+                  static_cast<unsigned long long>(frames.count()), path.c_str(), stats.seconds);
+    }
+  }
+  if (!o.quiet) {
+    std::printf("%llu frames of %dx%d, %d spp, DRT %d: %.3f s rendering, %.3f s preparing "
+                "frames, %llu rays\n",
+                static_cast<unsigned long long>(frames.count()), scene.image.width,
+                scene.image.height, settings.samplesPerPixel, settings.drtRate, total.seconds,
+                renderer.buildSeconds(), static_cast<unsigned long long>(total.rays));
+  }
+  return 0;
+}
+
 int renderSerial(const RenderOptions& o, const Scene& scene, const RenderSettings& settings) {
-  const World world(scene);
+  const FrameSequence frames = framesOf(o);
+  if (frames.count() > 1) return renderSerialSequence(o, scene, settings, frames);
+  if (!o.quiet && frames.animated == false && scene.animation) {
+    std::fprintf(stderr, "prt: the scene is animated; rendering it at time 0 (--frames A-B "
+                         "renders a sequence, --frame N one frame)\n");
+  }
+  const World world(sceneAt(scene, frames.seconds(0)));
   if (const World::MeshStats& m = world.meshStats(); m.meshes > 0 && !o.quiet) {
     std::printf("meshes: %zu, %zu triangles; trees built in %.3f s, %.1f MB (%.0f bytes per "
                 "triangle)\n",
@@ -113,6 +217,10 @@ int runRender(const RenderOptions& o) {
   if ((mpi || o.workers || o.strategyFlags.strategy) && !o.costMapPath.empty()) {
     throw InputError("--cost-map records a serial render; drop --workers and --strategy (and "
                      "run without mpirun)");
+  }
+  if (!o.costMapPath.empty() && framesOf(o).count() > 1) {
+    throw InputError("--cost-map records one frame: use --frame N (prt simulate reuses that "
+                     "map for every frame of a sequence)");
   }
   if (mpi && o.workers) {
     throw InputError("--workers cannot be used under mpirun: the worker count is the number of "
@@ -188,6 +296,16 @@ Action addRenderCommand(CLI::App& app, const std::string& commandLine) {
       ->check(CLI::Range(0, 1024))
       ->capture_default_str();
   cmd->add_flag("-q,--quiet", o->quiet, "No progress bar, summary or report table");
+  const std::string animation = "Animation";
+  cmd->add_option("--frames", o->frames,
+                  "Render frames A to B (every STEP-th) of an animated scene as one job, each "
+                  "written to the -o pattern with its number for the '#'s (frame_####.png)")
+      ->group(animation);
+  cmd->add_option("--frame", o->frame, "Render frame N of an animated scene alone")
+      ->group(animation);
+  cmd->add_option("--fps", o->fps, "Frames per second: frame N is the scene at N / FPS seconds")
+      ->capture_default_str()
+      ->group(animation);
   cmd->add_option("--cost-map", o->costMapPath,
                   "Serial render: also write each pixel's render time to FILE, the cost map "
                   "prt simulate replays (use --threads 1 for times free of contention)")

@@ -7,8 +7,13 @@
 
 #include "cli/commands.h"
 #include "cli/strategy_flags.h"
+#include "core/frame_sequence.h"
 
 namespace prt::cli {
+
+struct RenderOptions;
+// The frames --frames or --frame ask for (a still: one frame at time 0). Throws InputError.
+FrameSequence framesOf(const RenderOptions& o);
 
 struct RenderOptions {
   SceneSource scene;  // the scene or model file and how to read it
@@ -21,6 +26,9 @@ struct RenderOptions {
   int threads = 0;            // serial: render threads (0: all cores); parallel: per worker
   bool quiet = false;
   std::string costMapPath;    // serial: also write each pixel's render seconds (for simulate)
+  std::string frames;         // --frames A-B[:STEP]: an animation's frames as one job
+  std::string frame;          // --frame N: one frame of it
+  double fps = 24;            // --fps: frame N is at N / fps seconds
 
   // Parallel rendering.
   std::optional<int> workers;              // local driver: worker threads

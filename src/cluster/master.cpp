@@ -138,7 +138,13 @@ void Master::startStrategy(Outbox& out) {
     if (!isLive(w)) speeds[static_cast<size_t>(w)] = slowest;
   }
   strategyWorkers_ = workerCount();
-  apply(strategy_->start(StartInfo{map_.taskCount(), speeds}), out);
+  StartInfo info{map_.taskCount(), speeds};
+  // A sequence's frames, as the strategy's tasks hold them (a resumed run's frames are
+  // shorter by what was done; their boundaries are then approximate, which only affects the
+  // order frames complete in).
+  const uint64_t frames = scene_.frames.count();
+  if (frames > 1) info.frameTasks = std::max<uint64_t>(1, map_.taskCount() / frames);
+  apply(strategy_->start(info), out);
   for (int w = 0; w < workerCount(); ++w) {
     if (!isLive(w)) apply(strategy_->onWorkerLost(w, TaskSet{}), out);
   }

@@ -1,5 +1,6 @@
 #include "cluster/messages.h"
 
+#include <cmath>
 #include <iterator>
 #include <stdexcept>
 
@@ -55,6 +56,11 @@ Bytes encode(const Message& message) {
           w.pod(static_cast<int32_t>(m.drtRate));
           w.pod(static_cast<uint64_t>(m.assets.size()));
           w.raw(m.assets.data(), m.assets.size());
+          w.pod(m.frames.first);
+          w.pod(m.frames.last);
+          w.pod(m.frames.step);
+          w.pod(m.frames.fps);
+          w.pod(static_cast<uint8_t>(m.frames.animated));
         } else if constexpr (std::is_same_v<M, SpeedIndexMsg>) {
           w.pod(m.seconds);
         } else if constexpr (std::is_same_v<M, TasksMsg>) {
@@ -95,6 +101,19 @@ Message decode(const uint8_t* data, size_t size) {
       r.need(meshBytes);
       s.assets.resize(meshBytes);
       r.raw(s.assets.data(), meshBytes);
+      s.frames.first = r.pod<int64_t>();
+      s.frames.last = r.pod<int64_t>();
+      s.frames.step = r.pod<int64_t>();
+      s.frames.fps = r.pod<double>();
+      s.frames.animated = r.pod<uint8_t>() != 0;
+      // A sequence no command line could ask for is a damaged message.
+      if (!(s.frames.step >= 1 && s.frames.first <= s.frames.last &&
+            s.frames.first >= -FrameSequence::kMaxFrameNumber &&
+            s.frames.last <= FrameSequence::kMaxFrameNumber &&
+            s.frames.count() <= static_cast<uint64_t>(FrameSequence::kMaxFrames) &&
+            std::isfinite(s.frames.fps) && s.frames.fps > 0)) {
+        throw std::runtime_error("malformed message: a scene with an impossible frame sequence");
+      }
       m = std::move(s);
       break;
     }

@@ -20,6 +20,7 @@
 #include <variant>
 #include <vector>
 
+#include "core/frame_sequence.h"
 #include "core/task_set.h"
 
 namespace prt {
@@ -31,6 +32,7 @@ struct SceneMsg {
   int samplesPerPixel = 1;
   int drtRate = 1;
   std::vector<uint8_t> assets = {};  // its meshes, imported models and textures (scene/asset_pack.h)
+  FrameSequence frames = {};  // the frames to render: task i*P + p is pixel p of the i-th frame
   bool operator==(const SceneMsg&) const = default;
 };
 struct SpeedIndexMsg {

@@ -11,6 +11,7 @@
 #include "core/byte_codec.h"
 #include "core/input_error.h"
 #include "image/atomic_file.h"
+#include "scene/number_text.h"
 #include "scene/scene_file.h"
 
 namespace prt {
@@ -34,7 +35,8 @@ std::string hex(uint64_t v) {
 
 }  // namespace
 
-CheckpointKey checkpointKey(const Scene& scene, const RenderSettings& settings) {
+CheckpointKey checkpointKey(const Scene& scene, const RenderSettings& settings,
+                            const FrameSequence& frames) {
   Scene keyed = scene;
   keyed.image.output.clear();  // the same render may be written anywhere
   const std::string text = writeScene(keyed);
@@ -48,14 +50,25 @@ CheckpointKey checkpointKey(const Scene& scene, const RenderSettings& settings) 
                              settings.drtRate};
   const uint64_t sceneHash = hash;
   hash = fnv1a(reinterpret_cast<const uint8_t*>(numbers), sizeof numbers, hash);
+  const bool sequence = frames.count() > 1 || frames.animated;
+  if (sequence) {  // a still's key is what it always was
+    const std::string timing = std::to_string(frames.first) + "-" + std::to_string(frames.last) +
+                               ":" + std::to_string(frames.step) + "@" + formatDouble(frames.fps);
+    hash = fnv1a(reinterpret_cast<const uint8_t*>(timing.data()), timing.size(), hash);
+  }
   CheckpointKey key;
   key.hash = hash;
   key.width = scene.image.width;
-  key.height = scene.image.height;
+  key.height = scene.image.height * static_cast<int>(frames.count());
   key.description = std::to_string(scene.image.width) + "x" +
                     std::to_string(scene.image.height) + ", " +
                     std::to_string(settings.samplesPerPixel) + " spp, DRT " +
                     std::to_string(settings.drtRate) + ", scene " + hex(sceneHash);
+  if (sequence) {
+    key.description += ", frames " + std::to_string(frames.first) + "-" +
+                       std::to_string(frames.last) + ":" + std::to_string(frames.step) + " at " +
+                       formatDouble(frames.fps) + " fps";
+  }
   return key;
 }
 

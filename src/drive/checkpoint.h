@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "core/frame_sequence.h"
 #include "core/task_set.h"
 #include "image/image.h"
 #include "trace/render_settings.h"
@@ -31,7 +32,10 @@ struct CheckpointKey {
   int width = 0, height = 0;
 };
 
-CheckpointKey checkpointKey(const Scene& scene, const RenderSettings& settings);
+// For a sequence, the key covers its frames and their timing, and the checkpoint's image is
+// the frames one above the other (height * frames rows).
+CheckpointKey checkpointKey(const Scene& scene, const RenderSettings& settings,
+                            const FrameSequence& frames = {});
 
 struct Checkpoint {
   TaskSet done;                // pixels finished, ascending

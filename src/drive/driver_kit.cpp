@@ -5,6 +5,7 @@
 
 #include "cluster/master.h"
 #include "core/cpu_time.h"
+#include "drive/frame_renderer.h"
 #include "drive/master_loop.h"
 #include "drive/parallel_run.h"
 #include "drive/worker_engine.h"
@@ -25,20 +26,48 @@ ParallelRun runMasterSide(Transport& net, const RunRequest& request, const std::
                           std::function<bool()> abandoned) {
   const Scene& scene = request.scene;
   const ParallelOptions& options = request.options;
-  const uint64_t pixels = static_cast<uint64_t>(scene.image.width) * scene.image.height;
+  const FrameSequence& frames = request.frames;
+  const uint64_t perFrame = static_cast<uint64_t>(scene.image.width) * scene.image.height;
+  const uint64_t pixels = perFrame * frames.count();  // the tasks: every frame's pixels
   const int n = options.workers;  // at the start; more may join
 
-  ImageAssembler assembler(scene.image.width, scene.image.height);
+  ImageAssembler assembler(scene.image.width,
+                           scene.image.height * static_cast<int>(frames.count()),
+                           scene.image.height);
+  std::vector<FrameInfo> frameInfo(frames.count() > 1 ? frames.count() : 0);
+  for (size_t i = 0; i < frameInfo.size(); ++i) frameInfo[i].number = frames.number(i);
+  double startTime = net.now();
+  const auto frameCompleted = [&](uint64_t ordinal) {
+    if (!frameInfo.empty()) frameInfo[ordinal].doneSeconds = net.now() - startTime;
+    if (request.frameDone) request.frameDone(ordinal, assembler.frame(ordinal));
+  };
   MasterOptions masterOptions;
   masterOptions.endgame = options.endgame;
   if (request.resumeFrom) {
     assembler.restore(*request.resumeFrom);
     masterOptions.resumedDone = request.resumeFrom->done;
+    // Frames the earlier run completed are written again: it may have been killed while
+    // writing one.
+    if (frames.count() > 1) {
+      for (uint64_t i = 0; i < frames.count(); ++i) {
+        if (assembler.frameComplete(i)) frameCompleted(i);
+      }
+    }
   }
   Master master(makeStrategy(options.strategy, options.strategyOptions), n, pixels,
-                makeSceneMessage(scene, request.settings),
+                makeSceneMessage(scene, request.settings, frames),
                 [&](int w, const TaskSet& t, const std::vector<float>& rgb) {
-                  assembler.add(w, t, rgb);
+                  if (!frameInfo.empty()) {
+                    const double now = net.now() - startTime;
+                    FrameRenderer::forEachFrame(t, perFrame, [&](uint64_t i, const TaskSet& px) {
+                      FrameInfo& f = frameInfo[i];
+                      if (!f.firstSeconds) f.firstSeconds = now;
+                      f.pixels += px.size();
+                    });
+                  }
+                  assembler.add(w, t, rgb, frames.count() > 1
+                                               ? std::function<void(uint64_t)>(frameCompleted)
+                                               : std::function<void(uint64_t)>());
                 },
                 std::move(masterOptions));
 
@@ -48,7 +77,7 @@ ParallelRun runMasterSide(Transport& net, const RunRequest& request, const std::
   loop.checkpointEverySeconds = options.checkpointEverySeconds;
   loop.interrupted = request.interrupted;
   loop.abandoned = std::move(abandoned);
-  const CheckpointKey key = checkpointKey(scene, request.settings);
+  const CheckpointKey key = checkpointKey(scene, request.settings, frames);
   bool warned = false;
   auto saveCheckpoint = [&](const std::string& why) {
     try {
@@ -70,6 +99,7 @@ ParallelRun runMasterSide(Transport& net, const RunRequest& request, const std::
     loop.checkpoint = saveCheckpoint;
   }
 
+  startTime = net.now();
   MasterLoopResult result = runMasterLoop(net, master, loop);
   if (!result.failure.empty()) {
     std::string message = result.failure;
@@ -137,6 +167,10 @@ ParallelRun runMasterSide(Transport& net, const RunRequest& request, const std::
   info.faults.resumedPixels = master.resumedCount();
   info.faults.workerTimeoutSeconds = loop.leaseSeconds;
   info.faults.heartbeatSeconds = loop.heartbeatSeconds;
+  if (!frameInfo.empty()) {
+    info.frames = std::move(frameInfo);
+    info.fps = frames.fps;
+  }
   run.report = makeReport(info, run.events, result.elapsedSeconds);
   run.image = std::move(assembler.image());
   run.owner = std::move(assembler.owner());

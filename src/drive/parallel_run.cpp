@@ -76,17 +76,33 @@ void validateParallelOptions(const ParallelOptions& o, uint64_t pixelCount) {
   makeStrategy(o.strategy, o.strategyOptions);  // throws for unknown names and bad options
 }
 
-ImageAssembler::ImageAssembler(int width, int height)
-    : image_(width, height), owner_(static_cast<size_t>(width) * height, -1) {}
+ImageAssembler::ImageAssembler(int width, int height, int frameHeight)
+    : image_(width, height),
+      owner_(static_cast<size_t>(width) * height, -1),
+      pixelsPerFrame_(static_cast<uint64_t>(width) * (frameHeight > 0 ? frameHeight : height)),
+      frameCounts_(image_.pixelCount() / pixelsPerFrame_, 0) {
+  PRT_CHECK(image_.pixelCount() % pixelsPerFrame_ == 0);
+}
 
-void ImageAssembler::add(int worker, const TaskSet& tasks, const std::vector<float>& rgb) {
+void ImageAssembler::add(int worker, const TaskSet& tasks, const std::vector<float>& rgb,
+                         const std::function<void(uint64_t)>& completed) {
   PRT_CHECK(rgb.size() == 3 * tasks.size());
   size_t i = 0;
   tasks.forEach([&](uint64_t pixel) {
     image_.set(pixel, Color(rgb[i], rgb[i + 1], rgb[i + 2]));
     owner_[pixel] = static_cast<int16_t>(worker);
     i += 3;
+    const uint64_t frame = pixel / pixelsPerFrame_;
+    if (++frameCounts_[frame] == pixelsPerFrame_ && completed) completed(frame);
   });
+}
+
+Image ImageAssembler::frame(uint64_t ordinal) const {
+  const int height = static_cast<int>(pixelsPerFrame_ / static_cast<uint64_t>(image_.width()));
+  Image out(image_.width(), height);
+  const uint64_t offset = ordinal * pixelsPerFrame_;
+  for (uint64_t p = 0; p < pixelsPerFrame_; ++p) out.set(p, image_.at(offset + p));
+  return out;
 }
 
 void ImageAssembler::restore(const Checkpoint& checkpoint) {
@@ -95,11 +111,14 @@ void ImageAssembler::restore(const Checkpoint& checkpoint) {
   image_ = checkpoint.image;
   owner_ = checkpoint.owner;
   owner_.resize(image_.pixelCount(), -1);
+  std::fill(frameCounts_.begin(), frameCounts_.end(), 0);
+  checkpoint.done.forEach([&](uint64_t pixel) { ++frameCounts_[pixel / pixelsPerFrame_]; });
 }
 
-SceneMsg makeSceneMessage(const Scene& scene, const RenderSettings& settings) {
+SceneMsg makeSceneMessage(const Scene& scene, const RenderSettings& settings,
+                          const FrameSequence& frames) {
   return SceneMsg{writeScene(scene), settings.samplesPerPixel, settings.drtRate,
-                  packAssets(scene)};
+                  packAssets(scene), frames};
 }
 
 Image ownershipImage(const Image& image, const std::vector<int16_t>& owner) {

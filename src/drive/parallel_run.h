@@ -39,6 +39,12 @@ struct RunRequest {
   std::optional<double> serialSeconds;  // for speed-up and ASU
   std::optional<Checkpoint> resumeFrom;  // pixels an earlier run finished (--resume)
   std::function<int()> interrupted;      // a pending stop signal (0: none); may be null
+  // The frames to render (a still: one). The image of a sequence is its frames one above the
+  // other (width x height * frames), task i * width * height + p being pixel p of frame i.
+  FrameSequence frames;
+  // Called on the master's thread with each frame of a sequence as soon as all its pixels are
+  // in, in the order they complete (and at the start, for frames a checkpoint completes).
+  std::function<void(uint64_t ordinal, const Image& frame)> frameDone;
 };
 
 // The run could not finish (every worker lost, interrupted). The message says what survived
@@ -65,11 +71,18 @@ ParallelRun runMasterSide(Transport& net, const RunRequest& request, const std::
 WorkerExit runWorkerSide(Transport& net, int id, const ParallelOptions& options,
                          const WorkerFaultActions& faults);
 
-// Assembles result batches into the image and the ownership map.
+// Assembles result batches into the image and the ownership map, and counts the pixels of
+// each frame of a sequence (frames of `frameHeight` rows stacked; a still is one frame).
 class ImageAssembler {
  public:
-  ImageAssembler(int width, int height);
-  void add(int worker, const TaskSet& tasks, const std::vector<float>& rgb);
+  ImageAssembler(int width, int height, int frameHeight = 0);
+  // Adds a batch of fresh pixels; calls `completed` with each frame it completes.
+  void add(int worker, const TaskSet& tasks, const std::vector<float>& rgb,
+           const std::function<void(uint64_t)>& completed = {});
+  bool frameComplete(uint64_t ordinal) const { return frameCounts_[ordinal] == pixelsPerFrame_; }
+  uint64_t frameCount() const { return frameCounts_.size(); }
+  // The ordinal-th frame's pixels as an image of its own.
+  Image frame(uint64_t ordinal) const;
   // Starts from a checkpoint's pixels.
   void restore(const Checkpoint& checkpoint);
   Image& image() { return image_; }
@@ -78,10 +91,13 @@ class ImageAssembler {
  private:
   Image image_;
   std::vector<int16_t> owner_;
+  uint64_t pixelsPerFrame_;
+  std::vector<uint64_t> frameCounts_;  // pixels in, per frame
 };
 
 // The scene as the master sends it.
-SceneMsg makeSceneMessage(const Scene& scene, const RenderSettings& settings);
+SceneMsg makeSceneMessage(const Scene& scene, const RenderSettings& settings,
+                          const FrameSequence& frames = {});
 
 // The ownership map: each pixel in its worker's colour, shaded by the image's brightness so
 // the picture stays recognisable. Written like any image (extension picks the format).

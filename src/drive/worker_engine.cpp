@@ -25,26 +25,27 @@ void solveHanoiOnce(int discs) {
 }  // namespace
 
 void WorkerEngine::load(const SceneMsg& scene) {
-  world_ = std::make_unique<World>(
-      parseScene(scene.sceneText, "<scene from master>", unpackAssets(scene.assets)));
-  renderer_ =
-      std::make_unique<Renderer>(*world_, RenderSettings{scene.samplesPerPixel, scene.drtRate});
+  frames_ = std::make_unique<FrameRenderer>(
+      parseScene(scene.sceneText, "<scene from master>", unpackAssets(scene.assets)),
+      RenderSettings{scene.samplesPerPixel, scene.drtRate}, scene.frames);
+  frames_->frame(0);
 }
 
 double WorkerEngine::measureSpeedIndex() {
   if (speedIndexKind_ == SpeedIndexKind::None) return 1.0;  // a placeholder, measured nothing
   if (speedIndexKind_ == SpeedIndexKind::Slowdown) return throttle_.slowdown();  // the truth
   if (speedIndexKind_ == SpeedIndexKind::RenderProbe) {
-    PRT_CHECK(renderer_ != nullptr);
+    PRT_CHECK(frames_ != nullptr);
+    const Renderer& renderer = frames_->frame(0);  // the probe's pixels are the first frame's
     // As many stretches as the Hanoi run of the default disc count.
     constexpr int kProbePieces = 1 << (kSpeedIndexDiscs - kStretchDiscs);
     std::vector<Color> colors;
-    return probeSeconds(*renderer_, kProbePieces, [&](const TaskSet& piece) {
+    return probeSeconds(renderer, kProbePieces, [&](const TaskSet& piece) {
       return throttle_
           .measureParallel(
               [&] {
                 double cpu = 0;
-                renderTasks(*renderer_, piece, threads_, colors, &cpu);
+                renderTasks(renderer, piece, threads_, colors, &cpu);
                 return cpu;
               },
               threads_)
@@ -82,7 +83,7 @@ double WorkerEngine::measureSpeedIndex() {
 
 std::vector<float> WorkerEngine::render(const TaskSet& batch, double& seconds, uint64_t& rays,
                                        const std::function<void()>& between) {
-  PRT_CHECK(renderer_ != nullptr);
+  PRT_CHECK(frames_ != nullptr);
   std::vector<Color> colors;
   if (threads_ == 1 && between) {
     // Pieces of a few pixels, `between` after each: a heartbeat is never more than a few
@@ -95,20 +96,20 @@ std::vector<float> WorkerEngine::render(const TaskSet& batch, double& seconds, u
           TaskSet left = batch;
           std::vector<Color> piece;
           while (!left.empty()) {
-            rays += renderTasks(*renderer_, left.takeFront(kPiece), 1, piece);
+            rays += frames_->render(left.takeFront(kPiece), 1, piece);
             colors.insert(colors.end(), piece.begin(), piece.end());
             if (!left.empty()) between();
           }
         },
         between);
   } else if (threads_ == 1) {
-    seconds = throttle_.run([&] { rays += renderTasks(*renderer_, batch, 1, colors); });
+    seconds = throttle_.run([&] { rays += frames_->render(batch, 1, colors); });
   } else {
     seconds = throttle_
                   .measureParallel(
                       [&] {
                         double cpu = 0;
-                        rays += renderTasks(*renderer_, batch, threads_, colors, &cpu);
+                        rays += frames_->render(batch, threads_, colors, &cpu);
                         return cpu;
                       },
                       threads_)

@@ -11,6 +11,7 @@
 
 #include "cluster/messages.h"
 #include "drive/speed_index_kind.h"
+#include "drive/frame_renderer.h"
 #include "drive/throttle.h"
 #include "trace/renderer.h"
 
@@ -30,7 +31,8 @@ class WorkerEngine {
   int threads() const { return threads_; }
   double slowdown() const { return throttle_.slowdown(); }  // the factor at the start
 
-  // Parses the scene text (the master already validated it) and prepares the renderer.
+  // Parses the scene text (the master already validated it) and prepares the renderer of its
+  // first frame.
   void load(const SceneMsg& scene);
   // The speed index (Towers of Hanoi time, or the ray-tracing probe's on the loaded scene),
   // slowed down like everything else this worker computes, for the worker as it renders: the
@@ -38,7 +40,8 @@ class WorkerEngine {
   // once and reports the time per puzzle (the wall time over the thread count), so a worker
   // of N cores has 1/N of one core's index.
   double measureSpeedIndex();
-  // Renders `batch` on the worker's threads; returns 3 floats per pixel. `seconds` receives the wall
+  // Renders `batch` (tasks of the frame sequence: FrameRenderer) on the worker's threads;
+  // returns 3 floats per task. `seconds` receives the wall
   // time including the slowdown wait, `rays` the rays traced.
   // With one thread, `between` (if set) is called between pieces of the batch on this thread,
   // so the caller can keep sending heartbeats while it renders without a second thread.
@@ -51,8 +54,7 @@ class WorkerEngine {
   SpeedIndexKind speedIndexKind_;
   int speedIndexDiscs_;
   int threads_;
-  std::unique_ptr<World> world_;
-  std::unique_ptr<Renderer> renderer_;
+  std::unique_ptr<FrameRenderer> frames_;
 };
 
 }  // namespace prt

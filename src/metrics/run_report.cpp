@@ -239,6 +239,24 @@ std::string RunReport::toJson() const {
   j["worker_timeout_s"] = f.workerTimeoutSeconds;
   j["heartbeat_s"] = f.heartbeatSeconds;
   j["missing_summaries"] = f.missingSummaries;
+  if (!info.frames.empty()) {
+    // A sequence: each frame's pixels rendered in this run, when its first and last came in
+    // (null: complete from a checkpoint), and the time between (its span in the job).
+    json frames = json::array();
+    for (const FrameInfo& fr : info.frames) {
+      frames.push_back({{"frame", fr.number},
+                        {"pixels", fr.pixels},
+                        {"started_s", orNull(fr.firstSeconds)},
+                        {"completed_s", orNull(fr.doneSeconds)},
+                        {"span_s", fr.firstSeconds && fr.doneSeconds
+                                       ? json(*fr.doneSeconds - *fr.firstSeconds)
+                                       : json(nullptr)}});
+    }
+    j["frames"] = frames;
+    j["frame_count"] = info.frames.size();
+    j["fps"] = info.fps;
+    j["seconds_per_frame"] = elapsedSeconds / static_cast<double>(info.frames.size());
+  }
   return j.dump(2) + "\n";
 }
 
@@ -275,6 +293,24 @@ std::string RunReport::toTable() const {
                 "scene: %llu bytes, with every worker %.3f s after it was sent\n",
                 static_cast<unsigned long long>(sceneBytes), sceneTransferSeconds);
   out += line;
+  if (!info.frames.empty()) {
+    // When frames came out: the first and the last completed, and the median frame's span.
+    std::vector<double> done, spans;
+    for (const FrameInfo& fr : info.frames) {
+      if (fr.doneSeconds) done.push_back(*fr.doneSeconds);
+      if (fr.firstSeconds && fr.doneSeconds) spans.push_back(*fr.doneSeconds - *fr.firstSeconds);
+    }
+    std::sort(done.begin(), done.end());
+    std::sort(spans.begin(), spans.end());
+    std::snprintf(line, sizeof line,
+                  "%zu frames, %.3f s per frame in the job; first complete at %s, last at %s; "
+                  "median frame open for %s\n",
+                  info.frames.size(), elapsedSeconds / static_cast<double>(info.frames.size()),
+                  done.empty() ? "n/a" : opt(done.front(), "%.2f s").c_str(),
+                  done.empty() ? "n/a" : opt(done.back(), "%.2f s").c_str(),
+                  spans.empty() ? "n/a" : opt(spans[spans.size() / 2], "%.2f s").c_str());
+    out += line;
+  }
   if (!speedup) out += "(speed-up and ASU need --serial-seconds T or --measure-serial)\n";
   if (masuBasis != "speed_index") {
     out += "(no speed index was run: MASU and ASU are from the measured throughput)\n";

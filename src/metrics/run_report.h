@@ -68,6 +68,14 @@ struct FaultInfo {
   std::vector<int> missingSummaries;  // live workers whose end-of-run summary never came
 };
 
+// One frame of a sequence, as the master saw it: when its first result came and when its
+// last did (seconds from the run's start), and its pixels (those rendered in this run).
+struct FrameInfo {
+  int64_t number = 0;
+  uint64_t pixels = 0;
+  std::optional<double> firstSeconds, doneSeconds;  // none: resumed complete, or not reached
+};
+
 struct RunInfo {
   std::string driver;    // "local", "mpi", "simulated"
   std::string strategy;
@@ -85,6 +93,9 @@ struct RunInfo {
   bool speedIndexRun = true;            // false: the workers' indices are placeholders
   uint64_t rays = 0;
   FaultInfo faults;
+  // The frames of a sequence (frames, fps: how frame numbers map to time); empty for a still.
+  std::vector<FrameInfo> frames;
+  double fps = 0;
 };
 
 struct RunReport {

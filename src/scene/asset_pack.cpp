@@ -7,12 +7,13 @@
 #include <string>
 
 #include "core/byte_codec.h"
+#include "scene/rig_pack.h"
 
 namespace prt {
 namespace {
 
 constexpr uint32_t kTag = 0x41545250;  // "PRTA"
-constexpr uint32_t kVersion = 1;
+constexpr uint32_t kVersion = 2;  // 2: the rig
 
 bool isShippedMeshBlock(const Object& object) {
   const auto* m = std::get_if<MeshShape>(&object.shape);
@@ -172,6 +173,7 @@ std::vector<uint8_t> packAssets(const Scene& scene) {
       putMaterial(w, o.material, offset);
     }
   }
+  putRig(w, scene.animation ? *scene.animation : SceneAnimation{});
   return std::move(w.out);
 }
 
@@ -276,6 +278,7 @@ ShippedAssets unpackAssets(const std::vector<uint8_t>& bytes) {
     }
     out.imports.push_back(std::move(import));
   }
+  out.rig = getRig(raw, out.imports.size());
   raw.finish();
   return out;
 }

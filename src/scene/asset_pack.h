@@ -10,13 +10,16 @@
 // the meshes (counts of vertices, triangles, normals, texture coordinates and colours, then
 // each array), the images (size, channels, name, texels), the mesh blocks (a mesh index each),
 // then per import its textures (image index, wrap modes, filter) and its objects (mesh index,
-// transform, material with texture references local to the import).
+// transform, material with texture references local to the import), then the rig part of the
+// scene's animation (rig_pack.h): what its imports' model files animate, which only the files
+// hold (the scene's own `key` entries travel in the text).
 // Pure functions; thread-safe.
 
 #include <cstdint>
 #include <memory>
 #include <vector>
 
+#include "scene/animation.h"
 #include "trace/scene.h"
 
 namespace prt {
@@ -29,6 +32,8 @@ struct ShippedImport {
 struct ShippedAssets {
   std::vector<std::shared_ptr<const TriangleMesh>> meshBlocks;  // one per `mesh` block, in order
   std::vector<ShippedImport> imports;                           // one per `import` block
+  // The rigs of the scene's animation (no fields), its indices the scene's (addRig).
+  SceneAnimation rig;
 };
 
 // Empty for a scene with nothing to ship.

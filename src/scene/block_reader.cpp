@@ -64,7 +64,7 @@ const Token* BlockReader::next() {
     in_.fail(token, message);
   }
   for (const Given& given : given_) {
-    if (given.name == *known) {
+    if (given.name == *known && *known != "key") {  // keyframes come one after another
       in_.fail(token, "duplicate parameter '" + token.text + "' in the '" + title_ +
                           "' block; it was already given at " + at(in_.at(given.nameIndex)));
     }

@@ -1,6 +1,7 @@
 #pragma once
 // BlockReader: the mechanics shared by every block, "{ name value name value ... }". It checks
-// that each name is one the block accepts and is not repeated, and remembers where each was
+// that each name is one the block accepts and is not repeated (but for `key`, the keyframes
+// of an animated block, which come one after another), and remembers where each was
 // given; reading the values is the caller's job, as only it knows their types:
 //
 //   BlockReader block(in, keyword, "sphere", {"center", "radius", "surface"});

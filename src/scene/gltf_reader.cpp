@@ -1,7 +1,9 @@
 // readGltfFile: glTF 2.0 (.gltf with its buffers and images, .glb, data: URIs) read with
 // tinygltf and translated: the default scene's node tree with its transforms, each mesh
 // primitive a TriangleMesh shared by every node that uses it, materials by mapPbrMaterial,
-// textures with their samplers and KHR_texture_transform, cameras and KHR_lights_punctual.
+// textures with their samplers and KHR_texture_transform, cameras and KHR_lights_punctual,
+// and, when the file's animations move any of those, the node tree they hang from as a ModelRig
+// (its channels read by gltf_animation.h).
 //
 // tinygltf parses the JSON and loads buffers and images; every index and byte range it
 // leaves unchecked is checked here before it is read, and every file it reads goes through
@@ -20,6 +22,8 @@
 #include <optional>
 #include <set>
 
+#include "scene/gltf_accessor.h"
+#include "scene/gltf_animation.h"
 #include "scene/material_mapping.h"
 #include "scene/model_file.h"
 #include "scene/model_mesh.h"
@@ -32,7 +36,6 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr uintmax_t kMaxGltfFileBytes = uintmax_t{2} << 30;
-constexpr size_t kMaxElements = size_t{1} << 31;  // vertices or indices of one accessor
 // Placements of meshes in one file: each costs its scene and every worker a few hundred bytes,
 // so a small file placing meshes many times over could ask for any amount of memory.
 constexpr size_t kMaxObjects = size_t{1} << 20;
@@ -176,109 +179,6 @@ bool nestsDeeperThan(const unsigned char* text, size_t size, int limit) {
   return false;
 }
 
-// --- accessors ---------------------------------------------------------------------------------
-
-// One accessor's elements, every byte of them checked to lie inside its buffer.
-class Accessor {
- public:
-  Accessor(const tinygltf::Model& model, int index, const std::string& what) {
-    if (index < 0 || static_cast<size_t>(index) >= model.accessors.size()) {
-      fail(what + " names accessor " + std::to_string(index) + ", which does not exist");
-    }
-    const tinygltf::Accessor& a = model.accessors[static_cast<size_t>(index)];
-    if (a.sparse.isSparse) fail(what + " uses a sparse accessor, which PRT does not read");
-    components_ = tinygltf::GetNumComponentsInType(static_cast<uint32_t>(a.type));
-    componentBytes_ = tinygltf::GetComponentSizeInBytes(static_cast<uint32_t>(a.componentType));
-    if (components_ <= 0 || components_ > 16 || componentBytes_ <= 0) {
-      fail(what + ": accessor " + std::to_string(index) + " has an unknown type");
-    }
-    type_ = a.componentType;
-    normalized_ = a.normalized;
-    count_ = a.count;
-    if (count_ > kMaxElements) fail(what + ": accessor " + std::to_string(index) + " is too long");
-    if (a.bufferView < 0) return;  // all zeros (glTF 2.0, 3.6.2.3)
-    if (static_cast<size_t>(a.bufferView) >= model.bufferViews.size()) {
-      fail(what + ": buffer view " + std::to_string(a.bufferView) + " does not exist");
-    }
-    const tinygltf::BufferView& view = model.bufferViews[static_cast<size_t>(a.bufferView)];
-    if (view.buffer < 0 || static_cast<size_t>(view.buffer) >= model.buffers.size()) {
-      fail(what + ": buffer " + std::to_string(view.buffer) + " does not exist");
-    }
-    const std::vector<unsigned char>& buffer = model.buffers[static_cast<size_t>(view.buffer)].data;
-    const size_t element = static_cast<size_t>(components_) * static_cast<size_t>(componentBytes_);
-    stride_ = view.byteStride != 0 ? view.byteStride : element;
-    if (stride_ < element && count_ > 1) fail(what + ": a stride shorter than an element");
-    if (view.byteOffset > buffer.size() || view.byteLength > buffer.size() - view.byteOffset) {
-      fail(what + ": buffer view " + std::to_string(a.bufferView) + " reaches past its buffer");
-    }
-    if (count_ > 0) {
-      // offset + (count - 1) * stride + element <= byteLength, without overflowing.
-      const size_t length = view.byteLength;
-      if (a.byteOffset > length || element > length - a.byteOffset ||
-          (count_ - 1) > (length - a.byteOffset - element) / std::max<size_t>(stride_, 1)) {
-        fail(what + ": accessor " + std::to_string(index) + " reaches past its buffer view");
-      }
-    }
-    data_ = buffer.data() + view.byteOffset + a.byteOffset;
-  }
-
-  size_t count() const { return count_; }
-  int components() const { return components_; }
-  bool hasData() const { return data_ != nullptr; }
-  bool isFloat() const { return type_ == TINYGLTF_COMPONENT_TYPE_FLOAT; }
-
-  // Component c of element i, as a number (normalised integers in [0, 1] or [-1, 1]).
-  double get(size_t i, int c) const {
-    if (data_ == nullptr) return 0;
-    const unsigned char* p = data_ + i * stride_ + static_cast<size_t>(c * componentBytes_);
-    switch (type_) {
-      case TINYGLTF_COMPONENT_TYPE_FLOAT: return load<float>(p);
-      case TINYGLTF_COMPONENT_TYPE_DOUBLE: return load<double>(p);
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return scaled(load<uint8_t>(p), 255.0);
-      case TINYGLTF_COMPONENT_TYPE_BYTE: return signedScaled(load<int8_t>(p), 127.0);
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return scaled(load<uint16_t>(p), 65535.0);
-      case TINYGLTF_COMPONENT_TYPE_SHORT: return signedScaled(load<int16_t>(p), 32767.0);
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: return scaled(load<uint32_t>(p), 4294967295.0);
-      case TINYGLTF_COMPONENT_TYPE_INT: return signedScaled(load<int32_t>(p), 2147483647.0);
-      default: return 0;
-    }
-  }
-  // Element i of an index accessor.
-  uint64_t index(size_t i) const {
-    if (data_ == nullptr) return 0;
-    const unsigned char* p = data_ + i * stride_;
-    switch (type_) {
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return load<uint8_t>(p);
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return load<uint16_t>(p);
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: return load<uint32_t>(p);
-      default: return ~uint64_t{0};
-    }
-  }
-  bool isIndexType() const {
-    return components_ == 1 && (type_ == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
-                                type_ == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ||
-                                type_ == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT);
-  }
-
- private:
-  template <typename T>
-  static T load(const unsigned char* p) {
-    T v;
-    std::memcpy(&v, p, sizeof v);
-    return v;
-  }
-  double scaled(double v, double range) const { return normalized_ ? v / range : v; }
-  double signedScaled(double v, double range) const {
-    return normalized_ ? std::max(v / range, -1.0) : v;
-  }
-  [[noreturn]] static void fail(const std::string& why) { throw ModelFileError(why); }
-
-  const unsigned char* data_ = nullptr;
-  size_t count_ = 0, stride_ = 0;
-  int components_ = 0, componentBytes_ = 0, type_ = 0;
-  bool normalized_ = false;
-};
-
 // --- the reader ------------------------------------------------------------------------------
 
 double number(const tinygltf::Value& v, const std::string& key, double fallback) {
@@ -325,8 +225,11 @@ class GltfReader {
     }
     onPath_.assign(model_.nodes.size(), 0);
     visited_.assign(model_.nodes.size(), 0);
-    for (const int root : roots) visit(root, Transform::identity(), 0);
-    notes_.animations = model_.animations.size();
+    GltfAnimations animations(model_, notes_);
+    rigging_ = animations.any();
+    for (const int root : roots) visit(root, Transform::identity(), 0, -1);
+    buildRig(animations);
+    animations.warn(out_.warnings);
     notes_.warn(out_.warnings);
     if (out_.objects.empty()) {
       throw ModelFileError("model file \"" + path_ + "\" has no triangles to render" +
@@ -397,7 +300,8 @@ class GltfReader {
     }
   }
 
-  void visit(int index, const Transform& parent, int depth) {
+  // `parentRig`: the parent's node in out_.rig while the file is rigged, else -1.
+  void visit(int index, const Transform& parent, int depth, int32_t parentRig) {
     if (index < 0 || static_cast<size_t>(index) >= model_.nodes.size()) {
       throw ModelFileError("model file \"" + path_ + "\": node " + std::to_string(index) +
                            " does not exist");
@@ -425,30 +329,130 @@ class GltfReader {
       return;
     }
     onPath_[i] = 1;
+    int32_t rigNode = -1;
+    const size_t objects = out_.objects.size(), lights = out_.lights.size(),
+                 cameras = out_.cameras.size();
+    if (rigging_) {
+      rigNode = static_cast<int32_t>(out_.rig.nodes.size());
+      RigNode r = rigNodeOf(node);
+      r.parent = parentRig;
+      out_.rig.nodes.push_back(r);
+      rigGltfNodes_.push_back(index);
+    }
     if (node.mesh >= 0) placeMesh(node, world);
     if (node.skin >= 0) ++notes_.skinned;
     if (node.camera >= 0) addCamera(node, world);
-    if (const tinygltf::Value* lights = extension(node.extensions, "KHR_lights_punctual")) {
-      if (lights->IsObject() && lights->Has("light") && lights->Get("light").IsInt()) {
-        addLight(lights->Get("light").GetNumberAsInt(), world);
+    if (const tinygltf::Value* light = extension(node.extensions, "KHR_lights_punctual")) {
+      if (light->IsObject() && light->Has("light") && light->Get("light").IsInt()) {
+        addLight(light->Get("light").GetNumberAsInt(), world);
       }
     }
-    for (const int child : node.children) visit(child, world, depth + 1);
+    if (rigging_) bindToNode(rigNode, objects, lights, cameras);
+    for (const int child : node.children) visit(child, world, depth + 1, rigNode);
     onPath_[i] = 0;
   }
 
-  Transform localTransform(const tinygltf::Node& node) const {
-    if (node.matrix.size() == 16) return Transform::fromColumnMajor(node.matrix.data());
-    Transform t;
+  // What this node placed (out_'s objects, lights and cameras from those counts on), bound to
+  // its rig node in the node's own coordinates, where glTF puts lights and cameras at the
+  // origin looking down -z, up +y.
+  void bindToNode(int32_t rigNode, size_t objects, size_t lights, size_t cameras) {
+    ModelRig& rig = out_.rig;
+    for (size_t o = objects; o < out_.objects.size(); ++o) {
+      rig.objectNodes.push_back(rigNode);
+      rig.objectLocal.push_back(Transform::identity());  // glTF places meshes by nodes alone
+    }
+    for (size_t l = lights; l < out_.lights.size(); ++l) {
+      Light local = out_.lights[l];
+      std::visit(
+          [](auto& shape) {
+            using T = std::decay_t<decltype(shape)>;
+            if constexpr (std::is_same_v<T, PointLight>) shape.position = {0, 0, 0};
+            if constexpr (std::is_same_v<T, SpotLight>) shape.position = {0, 0, 0}, shape.direction = {0, 0, -1};
+            if constexpr (std::is_same_v<T, DirectionalLight>) shape.direction = {0, 0, -1};
+          },
+          local.shape);
+      rig.lightNodes.push_back(rigNode);
+      rig.lightLocal.push_back(local);
+    }
+    for (size_t c = cameras; c < out_.cameras.size(); ++c) {
+      const Camera& rest = out_.cameras[c].camera;
+      Camera local;
+      local.eye = {0, 0, 0};
+      local.lookAt = {0, 0, -1};
+      local.up = {0, 1, 0};
+      local.fovDegrees = rest.fovDegrees;
+      // The node's scale at rest sizes an orthographic view (as read); an animated one does not.
+      local.orthoHeight = rest.orthoHeight;
+      rig.cameraNodes.push_back(rigNode);
+      rig.cameraLocal.push_back(local);
+    }
+  }
+
+  // The rig once the tree is walked: only the nodes with something placed at or below them,
+  // with the curves that move them; nothing when no curve moves any of those.
+  void buildRig(GltfAnimations& animations) {
+    ModelRig& rig = out_.rig;
+    if (!rigging_) return;
+    std::vector<char> keep(rig.nodes.size(), 0);
+    const auto mark = [&](int32_t n) {
+      while (n >= 0 && !keep[static_cast<size_t>(n)]) {
+        keep[static_cast<size_t>(n)] = 1;
+        n = rig.nodes[static_cast<size_t>(n)].parent;
+      }
+    };
+    for (const auto* bound : {&rig.objectNodes, &rig.lightNodes, &rig.cameraNodes}) {
+      for (const int32_t n : *bound) mark(n);
+    }
+    std::vector<int32_t> moved(rig.nodes.size(), -1);
+    std::vector<RigNode> nodes;
+    std::vector<int> gltfNodes;
+    for (size_t n = 0; n < rig.nodes.size(); ++n) {
+      if (!keep[n]) continue;
+      moved[n] = static_cast<int32_t>(nodes.size());
+      RigNode r = rig.nodes[n];
+      if (r.parent >= 0) r.parent = moved[static_cast<size_t>(r.parent)];  // parents come first
+      nodes.push_back(r);
+      gltfNodes.push_back(rigGltfNodes_[n]);
+    }
+    for (auto* bound : {&rig.objectNodes, &rig.lightNodes, &rig.cameraNodes}) {
+      for (int32_t& n : *bound) n = n >= 0 ? moved[static_cast<size_t>(n)] : -1;
+    }
+    rig.nodes = std::move(nodes);
+    const std::vector<std::array<int32_t, 3>> curves = animations.read(gltfNodes, rig.curves);
+    for (size_t n = 0; n < rig.nodes.size(); ++n) {
+      rig.nodes[n].translationCurve = curves[n][0];
+      rig.nodes[n].rotationCurve = curves[n][1];
+      rig.nodes[n].scaleCurve = curves[n][2];
+    }
+    if (rig.curves.empty()) {
+      rig = {};
+      return;
+    }
+    for (const Curve& c : rig.curves) rig.duration = std::max(rig.duration, c.times.back());
+  }
+
+  static RigNode rigNodeOf(const tinygltf::Node& node) {
+    RigNode r;
+    if (node.matrix.size() == 16) {
+      r.hasMatrix = true;
+      r.matrix = Transform::fromColumnMajor(node.matrix.data());
+      return r;
+    }
     if (node.translation.size() == 3) {
-      t = Transform::translation({node.translation[0], node.translation[1], node.translation[2]});
+      r.translation = {node.translation[0], node.translation[1], node.translation[2]};
     }
     if (node.rotation.size() == 4) {
-      t = t * Transform::rotation(node.rotation[0], node.rotation[1], node.rotation[2],
-                                  node.rotation[3]);
+      r.rotation = {node.rotation[0], node.rotation[1], node.rotation[2], node.rotation[3]};
     }
-    if (node.scale.size() == 3) t = t * Transform::scaling({node.scale[0], node.scale[1], node.scale[2]});
-    return t;
+    if (node.scale.size() == 3) r.scale = {node.scale[0], node.scale[1], node.scale[2]};
+    return r;
+  }
+
+  // The same function as a rig node's at any time (animation.h), so that a node at rest gives
+  // the same doubles read here and played.
+  static Transform localTransform(const tinygltf::Node& node) {
+    const RigNode r = rigNodeOf(node);
+    return r.hasMatrix ? r.matrix : nodeTransform(r.translation, r.rotation, r.scale);
   }
 
   void placeMesh(const tinygltf::Node& node, const Transform& world) {
@@ -497,7 +501,7 @@ class GltfReader {
     }
     const auto position = primitive.attributes.find("POSITION");
     if (position == primitive.attributes.end()) throw ModelFileError(what + " has no POSITION");
-    const Accessor positions(model_, position->second, what + " POSITION");
+    const GltfAccessor positions(model_, position->second, what + " POSITION");
     if (positions.components() != 3) throw ModelFileError(what + ": POSITION is not 3-vectors");
     // Without a buffer view an accessor is all zeros: every triangle would be a point, and its
     // count, which no buffer bounds, could ask for any amount of memory.
@@ -508,10 +512,10 @@ class GltfReader {
     for (size_t i = 0; i < n; ++i) {
       raw.positions[i] = {positions.get(i, 0), positions.get(i, 1), positions.get(i, 2)};
     }
-    auto attribute = [&](const std::string& name) -> std::optional<Accessor> {
+    auto attribute = [&](const std::string& name) -> std::optional<GltfAccessor> {
       const auto found = primitive.attributes.find(name);
       if (found == primitive.attributes.end()) return std::nullopt;
-      Accessor a(model_, found->second, what + " " + name);
+      GltfAccessor a(model_, found->second, what + " " + name);
       if (a.count() != n) throw ModelFileError(what + ": " + name + " has a count unlike POSITION's");
       if (!a.hasData()) return std::nullopt;  // all zeros: as good as none
       return a;
@@ -539,7 +543,7 @@ class GltfReader {
     }
     std::vector<uint64_t> order;
     if (primitive.indices >= 0) {
-      const Accessor indices(model_, primitive.indices, what + " indices");
+      const GltfAccessor indices(model_, primitive.indices, what + " indices");
       if (!indices.isIndexType()) throw ModelFileError(what + ": indices are not unsigned integers");
       if (!indices.hasData()) throw ModelFileError(what + ": its indices have no data (all zeros)");
       order.resize(indices.count());
@@ -847,6 +851,8 @@ class GltfReader {
   ImportedModel out_;
   EncodedImages encoded_;
   std::vector<char> onPath_, visited_;
+  bool rigging_ = false;           // whether the file has channels that may move its nodes
+  std::vector<int> rigGltfNodes_;  // per node of out_.rig while walking the tree: its glTF node
   uintmax_t bytesLeft_ = kMaxBytesRead;
   std::map<std::pair<int, size_t>, std::shared_ptr<const TriangleMesh>> meshes_;
   std::map<int, Material> materials_;

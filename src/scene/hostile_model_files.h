@@ -377,7 +377,7 @@ struct Gltf {
 
 // A binary glTF: the 12-byte header, the JSON chunk padded with spaces and the BIN chunk
 // padded with zeros (left out when `bin` is empty).
-std::string glb(std::string json, std::string bin) {
+[[maybe_unused]] std::string glb(std::string json, std::string bin) {
   while (json.size() % 4) json += ' ';
   while (bin.size() % 4) bin += '\0';
   std::string out = "glTF";
@@ -394,7 +394,7 @@ std::string glb(std::string json, std::string bin) {
   putU32(out, 8, static_cast<uint32_t>(out.size()));
   return out;
 }
-std::string glbJson() {
+[[maybe_unused]] std::string glbJson() {
   Gltf g;
   g.buffers = R"({"byteLength":44})";
   return g.json();
@@ -436,7 +436,7 @@ std::string zlibStored(const std::string& raw) {
 }
 // An RGB PNG with the size its header claims and `rows` rows of grey pixels in its IDAT
 // (rows * width must stay small).
-std::string png(uint32_t width, uint32_t height, uint32_t rows) {
+[[maybe_unused]] std::string png(uint32_t width, uint32_t height, uint32_t rows) {
   std::string ihdr = bigEndian(width) + bigEndian(height);
   ihdr += std::string("\x08\x02\x00\x00\x00", 5);  // 8 bits, RGB, deflate, no filter, no interlace
   std::string raw;
@@ -447,7 +447,7 @@ std::string png(uint32_t width, uint32_t height, uint32_t rows) {
 
 // A glTF file whose one material has a base colour texture: `textures`, `images` and
 // `samplers` are the arrays' contents, `info` the texture info's members.
-std::string texturedGltf(const std::string& textures, const std::string& images,
+[[maybe_unused]] std::string texturedGltf(const std::string& textures, const std::string& images,
                          const std::string& samplers = "", const std::string& info = R"("index":0)") {
   Gltf g;
   g.meshes = R"({"primitives":[{"attributes":{"POSITION":0},"indices":1,"material":0}]})";

@@ -1,6 +1,7 @@
 #include "scene/import_block.h"
 
 #include <cmath>
+#include <stdexcept>
 #include <numbers>
 
 #include "core/portable_math.h"
@@ -25,9 +26,9 @@ void addObjects(Scene& scene, const std::vector<Object>& objects, const Transfor
   }
 }
 
-// A light carried by the placement. Lights that fall with distance are made brighter by the
-// square of the placement's scale, so that a model scaled up looks as it did.
-Light placed(Light light, const Transform& t, double scale, double lightScale) {
+}  // namespace
+
+Light placeLight(Light light, const Transform& t, double scale, double lightScale) {
   light.color = light.color * lightScale;
   if (light.falloff == Falloff::inverseSquare) light.color = light.color * (scale * scale);
   std::visit(
@@ -53,7 +54,7 @@ Light placed(Light light, const Transform& t, double scale, double lightScale) {
   return light;
 }
 
-Camera placed(Camera camera, const Transform& t, double scale) {
+Camera placeCamera(Camera camera, const Transform& t, double scale) {
   camera.eye = t.point(camera.eye);
   camera.lookAt = t.point(camera.lookAt);
   camera.up = t.vector(camera.up);
@@ -61,7 +62,9 @@ Camera placed(Camera camera, const Transform& t, double scale) {
   return camera;
 }
 
-const Transform kFromRightHanded = Transform::scaling({1, 1, -1});
+Transform fromRightHanded() { return Transform::scaling({1, 1, -1}); }
+
+namespace {
 
 bool inRange(const Vec3& v) {
   return isFinite(v) && std::abs(v.x) <= kMaxCoordinate && std::abs(v.y) <= kMaxCoordinate &&
@@ -145,7 +148,7 @@ void readImportBlock(ImportBlocks& b, const Token& keyword) {
   // is left-handed: the file's z is turned over first, so that a model keeps its shape and a
   // file's camera sees it as the tool that made it did, not mirrored.
   const Transform placement =
-      placementTransform(source.scale, source.rotateDegrees, source.translate) * kFromRightHanded;
+      placementTransform(source.scale, source.rotateDegrees, source.translate) * fromRightHanded();
   // The size factor of the placement: the cube root of its volume factor.
   const double scale = std::cbrt(std::abs(placement.determinant()));
   Scene& scene = b.scene;
@@ -153,6 +156,7 @@ void readImportBlock(ImportBlocks& b, const Token& keyword) {
   source.firstLight = scene.lights.size();
   source.firstTexture = scene.textures.size();
   const auto textureOffset = static_cast<int32_t>(scene.textures.size());
+  SceneAnimation rig;  // the file's animation, in this import's terms (node indices its own)
 
   if (b.shipped != nullptr) {
     const size_t k = scene.imports.size();
@@ -184,24 +188,45 @@ void readImportBlock(ImportBlocks& b, const Token& keyword) {
     }
     addObjects(scene, model->objects, &placement, textureOffset);
     scene.textures.insert(scene.textures.end(), model->textures.begin(), model->textures.end());
+    const ModelRig& r = model->rig;
+    const auto importIndex = static_cast<uint32_t>(scene.imports.size());
+    const auto nodeBase = static_cast<int32_t>(scene.animation ? scene.animation->nodes.size() : 0);
+    if (!r.empty()) {
+      rig.curves = r.curves;
+      rig.nodes = r.nodes;
+      rig.duration = r.duration;
+      for (size_t i = 0; i < model->objects.size(); ++i) {
+        rig.objects.push_back({static_cast<uint32_t>(source.firstObject + i), importIndex,
+                               r.objectNodes[i], r.objectLocal[i]});
+      }
+    }
     // Lights and cameras a light or camera block could not say (beyond the coordinates a
     // scene allows, once placed) are left out, with a warning.
     size_t leftOut = 0;
     if (source.lights) {
-      for (const Light& light : model->lights) {
-        const Light l = placed(light, placement, scale, source.lightScale);
+      for (size_t i = 0; i < model->lights.size(); ++i) {
+        const Light l = placeLight(model->lights[i], placement, scale, source.lightScale);
         if (lawful(l)) {
+          if (!r.empty()) {
+            rig.lights.push_back({static_cast<uint32_t>(scene.lights.size()), importIndex,
+                                  r.lightNodes[i], r.lightLocal[i]});
+          }
           scene.lights.push_back(l);
         } else {
           ++leftOut;
         }
       }
     }
-    for (const ModelCamera& camera : model->cameras) {
-      ModelCamera offered = camera;
-      offered.camera = placed(camera.camera, placement, scale);
+    for (size_t i = 0; i < model->cameras.size(); ++i) {
+      ModelCamera offered = model->cameras[i];
+      offered.camera = placeCamera(offered.camera, placement, scale);
       if (lawful(offered.camera)) {
-        b.cameras.push_back({std::move(offered), source.file});
+        std::optional<CameraBinding> binding;
+        if (!r.empty()) {
+          const int32_t node = r.cameraNodes[i];
+          binding = CameraBinding{importIndex, node >= 0 ? node + nodeBase : -1, r.cameraLocal[i]};
+        }
+        b.cameras.push_back({std::move(offered), source.file, binding});
       } else {
         ++leftOut;
       }
@@ -226,6 +251,11 @@ void readImportBlock(ImportBlocks& b, const Token& keyword) {
   source.lightCount = scene.lights.size() - source.firstLight;
   source.textureCount = scene.textures.size() - source.firstTexture;
   scene.imports.push_back(std::move(source));
+  try {
+    addRig(scene, rig);
+  } catch (const std::invalid_argument& e) {
+    b.in.fail(fileToken, std::string("the model file's animation cannot be played: ") + e.what());
+  }
 }
 
 Camera framingCamera(const Scene& scene) {

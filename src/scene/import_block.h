@@ -10,10 +10,12 @@
 #include <filesystem>
 #include <map>
 #include <memory>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
 
+#include "scene/animation.h"
 #include "scene/asset_pack.h"
 #include "scene/model_file.h"
 #include "scene/token_stream.h"
@@ -28,6 +30,9 @@ using ModelCache = std::map<std::string, std::shared_ptr<const ImportedModel>>;
 struct OfferedCamera {
   ModelCamera camera;
   std::string file;  // the import's file, absolute
+  // When the file is animated: how the camera follows its node, for the scene's animation
+  // once the camera is chosen (its node is the scene animation's).
+  std::optional<CameraBinding> binding = {};
 };
 
 // What the blocks need from the parser, for the whole of one scene text.
@@ -48,6 +53,16 @@ void readImportBlock(ImportBlocks& b, const Token& keyword);
 // The affine map of a placement as `mesh` and `import` blocks give it: scale, then rotations
 // about x, y and z (degrees), then the translation.
 Transform placementTransform(const Vec3& scale, const Vec3& rotateDegrees, const Vec3& translate);
+
+// A light carried by a placement `t` whose size factor is `scale`, its intensity times
+// `lightScale`. Lights that fall with distance are made brighter by the square of the scale,
+// so that a model scaled up looks as it did.
+Light placeLight(Light light, const Transform& t, double scale, double lightScale);
+// A camera carried by a placement (its orthographic height scaled by `scale`).
+Camera placeCamera(Camera camera, const Transform& t, double scale);
+// Model files are right-handed (glTF, and assimp makes every format so); PRT is left-handed:
+// z is turned over before the import's placement.
+Transform fromRightHanded();
 
 // A camera that shows every bounded object of `scene` (or the origin, with none): from above
 // and in front of the box around them (-z, the side imported models face), with 40 degrees of

@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "scene/animation.h"
 #include "trace/scene.h"
 
 namespace prt {
@@ -33,6 +34,26 @@ struct ModelCamera {
   double aspectRatio = 0;   // width / height the file asks for; 0: none given
 };
 
+// How a model file's animations move what it holds, in the file's coordinates (right-handed,
+// before an import's placement): its node tree (only nodes with something placed below them;
+// parents before children), the curves driving the nodes, and the node each object, light and
+// camera hangs from with its place in that node's coordinates. The objects, lights and cameras
+// of ImportedModel are at rest (the nodes' own transforms); SceneAnimation plays the rig.
+// Empty when the file has no animation that moves anything placed.
+struct ModelRig {
+  std::vector<Curve> curves;
+  std::vector<RigNode> nodes;          // their curve indices are into `curves`
+  std::vector<int32_t> objectNodes;    // per ImportedModel::objects: its node, -1 for none
+  std::vector<Transform> objectLocal;  // per object: its mesh in its node's coordinates
+  std::vector<int32_t> lightNodes;     // per ImportedModel::lights
+  std::vector<Light> lightLocal;       // per light: in its node's coordinates
+  std::vector<int32_t> cameraNodes;    // per ImportedModel::cameras
+  std::vector<Camera> cameraLocal;     // per camera: in its node's coordinates
+  double duration = 0;                 // seconds: the last key of any curve
+
+  bool empty() const { return curves.empty(); }
+};
+
 struct ImportedModel {
   // Meshes as InstanceShapes placed in the file's coordinates; their TextureRefs index
   // `textures`.
@@ -42,6 +63,7 @@ struct ImportedModel {
   std::vector<Texture> textures;
   std::vector<std::string> warnings;  // one line each, naming the file
   std::string format;                 // "glTF 2.0", or the assimp importer's description
+  ModelRig rig;                       // how they move; glTF files only
 };
 
 struct ModelReadOptions {

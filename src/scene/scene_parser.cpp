@@ -6,8 +6,10 @@
 #include <cctype>
 #include <cstdint>
 #include <filesystem>
+#include <stdexcept>
 
 #include "scene/block_reader.h"
+#include "scene/key_frames.h"
 #include "scene/keywords.h"
 #include "scene/mesh_block.h"
 #include "scene/number_text.h"
@@ -44,6 +46,15 @@ bool isName(const std::string& word) {
 // written and re-read scene is bit-identical: normalising twice can change the last bit.
 Vec3 unitLength(const Vec3& v) {
   return std::abs(length(v) - 1.0) <= 1e-12 ? v : normalize(v);
+}
+
+int put(const Vec3& v, double* out) {
+  out[0] = v.x, out[1] = v.y, out[2] = v.z;
+  return 3;
+}
+int put(double v, double* out) {
+  out[0] = v;
+  return 1;
 }
 
 class SceneParser {
@@ -117,9 +128,21 @@ class SceneParser {
     once(keyword, camera_);
     Camera& camera = scene_.camera;
     BlockReader block(in_, keyword, "camera",
-                      {"eye", "look_at", "up", "fov", "ortho_height", "from", "name", "index"});
+                      {"eye", "look_at", "up", "fov", "ortho_height", "from", "name", "index", "key"});
+    KeyFrames keys("camera", FieldTrack::Target::camera, {"eye", "look_at", "up", "fov"});
+    const ValueReader read = [&](const std::string& name, double* out) {
+      if (name == "fov") return put(readNumber(in_, name, Range::open(0, 180)), out);
+      return put(readVector(in_, name, kCoordinate), out);
+    };
+    const ValueReader base = [&](const std::string& name, double* out) {
+      if (name == "eye") return put(camera.eye, out);
+      if (name == "look_at") return put(camera.lookAt, out);
+      if (name == "up") return put(camera.up, out);
+      return put(camera.fovDegrees, out);
+    };
     while (const Token* param = block.next()) {
       const std::string& name = param->text;
+      if (name == "key") keys.read(in_, *param, read);
       if (name == "eye") camera.eye = readVector(in_, name, kCoordinate);
       if (name == "look_at") camera.lookAt = readVector(in_, name, kCoordinate);
       if (name == "up") camera.up = readVector(in_, name, kCoordinate);
@@ -130,7 +153,7 @@ class SceneParser {
       if (name == "index") cameraIndex_ = readInteger(in_, name, 0, 1 << 20);
     }
     if (block.has("from")) {
-      for (const char* other : {"eye", "look_at", "up", "fov", "ortho_height"}) {
+      for (const char* other : {"eye", "look_at", "up", "fov", "ortho_height", "key"}) {
         if (block.has(other)) {
           in_.fail(block.valueToken(other), std::string("a camera taken 'from' a model file has no '") +
                                                 other + "' of its own");
@@ -153,6 +176,7 @@ class SceneParser {
     }
     block.require({"eye", "look_at"});
     checkCamera(camera, block, keyword);
+    keys.finish(scene_, 0, base);
   }
 
   void checkCamera(const Camera& camera, const BlockReader& block, const Token& keyword) {
@@ -236,7 +260,11 @@ class SceneParser {
     requireBlock(camera_, "camera", "camera { eye 0 1 -5  look_at 0 0 0 }");
   }
 
-  void useCamera(const OfferedCamera& c) { scene_.camera = c.camera.camera; }
+  // A camera of an animated file follows its node: the scene's animation places it at each time.
+  void useCamera(const OfferedCamera& c) {
+    scene_.camera = c.camera.camera;
+    if (c.binding) editAnimation(scene_).camera = {*c.binding};
+  }
 
   void image(const Token& keyword) {
     once(keyword, image_);
@@ -321,11 +349,25 @@ class SceneParser {
                "expected the kind of light (" + kinds + ") after 'light', found " + describe(kind));
     }
     Light light;
+    // The keyed parameters of each kind of light, and how their values are read.
+    const std::string title = "light " + kind.text;
+    KeyFrames keys(title, FieldTrack::Target::light, {"position", "center", "direction",
+                                                      "corner", "radius", "color"});
+    const ValueReader read = [&](const std::string& name, double* out) {
+      if (!isKeyedField(FieldTrack::Target::light, title, name)) {
+        in_.fail(in_.at(in_.position() - 1), "'" + name + "' cannot be keyed in the '" + title +
+                                                 "' block");
+      }
+      if (name == "color") return put(readColor(in_, name), out);
+      if (name == "radius") return put(readNumber(in_, name, kSize), out);
+      return put(readVector(in_, name, kCoordinate), out);
+    };
     if (kind.text == "point") {
       PointLight point;
-      BlockReader block(in_, kind, "light point", {"position", "color", "falloff"});
+      BlockReader block(in_, kind, "light point", {"position", "color", "falloff", "key"});
       while (const Token* param = block.next()) {
         const std::string& name = param->text;
+        if (name == "key") keys.read(in_, *param, read);
         if (name == "position") point.position = readVector(in_, name, kCoordinate);
         if (name == "color") light.color = readColor(in_, name);
         if (name == "falloff") light.falloff = readFalloff();
@@ -334,9 +376,10 @@ class SceneParser {
       light.shape = point;
     } else if (kind.text == "sphere") {
       SphereLight sphere;
-      BlockReader block(in_, kind, "light sphere", {"center", "radius", "color", "falloff"});
+      BlockReader block(in_, kind, "light sphere", {"center", "radius", "color", "falloff", "key"});
       while (const Token* param = block.next()) {
         const std::string& name = param->text;
+        if (name == "key") keys.read(in_, *param, read);
         if (name == "center") sphere.center = readVector(in_, name, kCoordinate);
         if (name == "radius") sphere.radius = readNumber(in_, name, kSize);
         if (name == "color") light.color = readColor(in_, name);
@@ -345,14 +388,15 @@ class SceneParser {
       block.require({"center", "radius"});
       light.shape = sphere;
     } else if (kind.text == "rect") {
-      light.shape = rectLight(kind, light);
+      light.shape = rectLight(kind, light, keys, read);
     } else if (kind.text == "spot") {
-      light.shape = spotLight(kind, light);
+      light.shape = spotLight(kind, light, keys, read);
     } else if (kind.text == "directional") {
       DirectionalLight sun;
-      BlockReader block(in_, kind, "light directional", {"direction", "color"});
+      BlockReader block(in_, kind, "light directional", {"direction", "color", "key"});
       while (const Token* param = block.next()) {
         const std::string& name = param->text;
+        if (name == "key") keys.read(in_, *param, read);
         if (name == "direction") sun.direction = readVector(in_, name, kCoordinate);
         if (name == "color") light.color = readColor(in_, name);
       }
@@ -364,6 +408,26 @@ class SceneParser {
                          didYouMean(kind.text, {"point", "sphere", "rect", "spot", "directional"}) +
                          "; valid kinds: " + kinds);
     }
+    const ValueReader base = [&](const std::string& name, double* out) {
+      if (name == "color") return put(light.color, out);
+      return std::visit(
+          [&](const auto& shape) {
+            using T = std::decay_t<decltype(shape)>;
+            if constexpr (std::is_same_v<T, SphereLight>) {
+              return name == "radius" ? put(shape.radius, out) : put(shape.center, out);
+            } else if constexpr (std::is_same_v<T, RectLight>) {
+              return put(shape.corner, out);
+            } else if constexpr (std::is_same_v<T, DirectionalLight>) {
+              return put(shape.direction, out);
+            } else if constexpr (std::is_same_v<T, SpotLight>) {
+              return name == "direction" ? put(shape.direction, out) : put(shape.position, out);
+            } else {
+              return put(shape.position, out);
+            }
+          },
+          light.shape);
+    };
+    keys.finish(scene_, static_cast<uint32_t>(scene_.lights.size()), base);
     scene_.lights.push_back(light);
   }
 
@@ -383,12 +447,13 @@ class SceneParser {
     return unitLength(v);
   }
 
-  SpotLight spotLight(const Token& kind, Light& light) {
+  SpotLight spotLight(const Token& kind, Light& light, KeyFrames& keys, const ValueReader& read) {
     SpotLight spot;
     BlockReader block(in_, kind, "light spot",
-                      {"position", "direction", "inner", "outer", "color", "falloff"});
+                      {"position", "direction", "inner", "outer", "color", "falloff", "key"});
     while (const Token* param = block.next()) {
       const std::string& name = param->text;
+      if (name == "key") keys.read(in_, *param, read);
       if (name == "position") spot.position = readVector(in_, name, kCoordinate);
       if (name == "direction") spot.direction = readVector(in_, name, kCoordinate);
       if (name == "inner") spot.innerDegrees = readNumber(in_, name, Range::closed(0, 90));
@@ -407,11 +472,13 @@ class SceneParser {
     return spot;
   }
 
-  RectLight rectLight(const Token& kind, Light& light) {
+  RectLight rectLight(const Token& kind, Light& light, KeyFrames& keys, const ValueReader& read) {
     RectLight rect;
-    BlockReader block(in_, kind, "light rect", {"corner", "edge1", "edge2", "color", "falloff"});
+    BlockReader block(in_, kind, "light rect",
+                      {"corner", "edge1", "edge2", "color", "falloff", "key"});
     while (const Token* param = block.next()) {
       const std::string& name = param->text;
+      if (name == "key") keys.read(in_, *param, read);
       if (name == "corner") rect.corner = readVector(in_, name, kCoordinate);
       if (name == "edge1") rect.edge1 = readVector(in_, name, kCoordinate);
       if (name == "edge2") rect.edge2 = readVector(in_, name, kCoordinate);
@@ -435,23 +502,38 @@ class SceneParser {
   void sphere(const Token& keyword) {
     Object object{SphereShape{}, Material{}};
     SphereShape& sphere = std::get<SphereShape>(object.shape);
-    BlockReader block(in_, keyword, "sphere", {"center", "radius", "surface"});
+    BlockReader block(in_, keyword, "sphere", {"center", "radius", "surface", "key"});
+    KeyFrames keys("sphere", FieldTrack::Target::object, {"center", "radius"});
+    const ValueReader read = [&](const std::string& name, double* out) {
+      if (name == "radius") return put(readNumber(in_, name, kSize), out);
+      return put(readVector(in_, name, kCoordinate), out);
+    };
     while (const Token* param = block.next()) {
       const std::string& name = param->text;
+      if (name == "key") keys.read(in_, *param, read);
       if (name == "center") sphere.center = readVector(in_, name, kCoordinate);
       if (name == "radius") sphere.radius = readNumber(in_, name, kSize);
       if (name == "surface") surface(*param, object.material);
     }
     block.require({"center", "radius"});
+    keys.finish(scene_, static_cast<uint32_t>(scene_.objects.size()),
+                [&](const std::string& name, double* out) {
+                  return name == "radius" ? put(sphere.radius, out) : put(sphere.center, out);
+                });
     scene_.objects.push_back(object);
   }
 
   void box(const Token& keyword) {
     Object object{BoxShape{}, Material{}};
     BoxShape& box = std::get<BoxShape>(object.shape);
-    BlockReader block(in_, keyword, "box", {"min", "max", "surface"});
+    BlockReader block(in_, keyword, "box", {"min", "max", "surface", "key"});
+    KeyFrames keys("box", FieldTrack::Target::object, {"min", "max"});
+    const ValueReader read = [&](const std::string& name, double* out) {
+      return put(readVector(in_, name, kCoordinate), out);
+    };
     while (const Token* param = block.next()) {
       const std::string& name = param->text;
+      if (name == "key") keys.read(in_, *param, read);
       if (name == "min") box.min = readVector(in_, name, kCoordinate);
       if (name == "max") box.max = readVector(in_, name, kCoordinate);
       if (name == "surface") surface(*param, object.material);
@@ -466,6 +548,10 @@ class SceneParser {
                      formatDouble(box.min[axis]));
       }
     }
+    keys.finish(scene_, static_cast<uint32_t>(scene_.objects.size()),
+                [&](const std::string& name, double* out) {
+                  return name == "min" ? put(box.min, out) : put(box.max, out);
+                });
     scene_.objects.push_back(object);
   }
 
@@ -537,6 +623,12 @@ Scene parseScene(std::string_view text, const std::string& fileName,
                      std::to_string(scene.imports.size()) + " imports but " +
                      std::to_string(shipped.meshBlocks.size()) + " and " +
                      std::to_string(shipped.imports.size()) + " were sent with it");
+  }
+  // The imports' rigs came in the pack (the text has only its own keys): put back with them.
+  try {
+    addRig(scene, shipped.rig);
+  } catch (const std::invalid_argument& e) {
+    throw InputError(std::string("the animation sent with the scene does not fit it: ") + e.what());
   }
   return scene;
 }

@@ -9,6 +9,7 @@
 #include <variant>
 
 #include "core/check.h"
+#include "scene/key_frames.h"
 #include "scene/number_text.h"
 #include "scene/scene_file.h"
 
@@ -70,6 +71,24 @@ class Writer {
   std::string out_;
 };
 
+// The block's `key` entries, if it is animated.
+void writeKeys(Writer& out, const Scene& scene, FieldTrack::Target target, size_t index) {
+  for (const KeyGroup& group : keyGroupsOf(scene, target, static_cast<uint32_t>(index))) {
+    out.raw(" key " + formatDouble(group.time) + " {");
+    for (size_t i = 0; i < group.tracks.size(); ++i) {
+      const Curve& curve = group.tracks[i]->curve;
+      const double* v = curve.values.data() + group.keyIndex[i] * curve.width;
+      const char* name = group.tracks[i]->field.c_str();
+      if (curve.width == 1) {
+        out.number(name, v[0]);
+      } else {
+        out.vector(name, {v[0], v[1], v[2]});
+      }
+    }
+    out.raw(" }");
+  }
+}
+
 // The fields of `material` that differ from Material's defaults, as " name value ..." text.
 std::string surfaceFields(const Material& material) {
   const Material defaults;
@@ -90,7 +109,8 @@ std::string surfaceFields(const Material& material) {
   return out.take();
 }
 
-void writeLight(Writer& out, const Light& light) {
+void writeLight(Writer& out, const Scene& scene, size_t index) {
+  const Light& light = scene.lights[index];
   std::visit(
       [&](const auto& shape) {
         using T = std::decay_t<decltype(shape)>;
@@ -121,10 +141,12 @@ void writeLight(Writer& out, const Light& light) {
       light.shape);
   out.vector("color", light.color);
   if (light.falloff == Falloff::inverseSquare) out.raw(" falloff inverse_square");
+  writeKeys(out, scene, FieldTrack::Target::light, index);
   out.close();
 }
 
-void writeImport(Writer& out, const ImportSource& import) {
+void writeImport(Writer& out, const Scene& scene, size_t index) {
+  const ImportSource& import = scene.imports[index];
   out.open("import");
   out.string("file", import.file);
   out.vector("scale", import.scale);
@@ -132,10 +154,12 @@ void writeImport(Writer& out, const ImportSource& import) {
   out.vector("translate", import.translate);
   // Its lights were written with the others, as light blocks.
   out.raw(" no_lights");
+  writeKeys(out, scene, FieldTrack::Target::import, index);
   out.close();
 }
 
-void writeObject(Writer& out, const Object& object) {
+void writeObject(Writer& out, const Scene& scene, size_t index) {
+  const Object& object = scene.objects[index];
   std::visit(
       [&](const auto& shape) {
         using T = std::decay_t<decltype(shape)>;
@@ -174,6 +198,7 @@ void writeObject(Writer& out, const Object& object) {
       object.shape);
   const std::string fields = surfaceFields(object.material);
   if (!fields.empty()) out.raw(" surface {" + fields + " }");
+  writeKeys(out, scene, FieldTrack::Target::object, index);
   out.close();
 }
 
@@ -188,6 +213,7 @@ std::string writeScene(const Scene& scene) {
   out.vector("up", camera.up);
   out.number("fov", camera.fovDegrees);
   if (camera.orthoHeight > 0) out.number("ortho_height", camera.orthoHeight);
+  writeKeys(out, scene, FieldTrack::Target::camera, 0);
   out.close();
 
   out.open("image");
@@ -207,17 +233,17 @@ std::string writeScene(const Scene& scene) {
   out.integer("drt", scene.sampling.drtRate);
   out.close();
 
-  for (const Light& light : scene.lights) writeLight(out, light);
+  for (size_t i = 0; i < scene.lights.size(); ++i) writeLight(out, scene, i);
   // Each import where its objects began, in place of them.
   auto import = scene.imports.begin();
   for (size_t i = 0; i < scene.objects.size(); ++i) {
     if (import != scene.imports.end() && import->firstObject == i) {
-      writeImport(out, *import);
+      writeImport(out, scene, static_cast<size_t>(import - scene.imports.begin()));
       i += import->objectCount - 1;
       ++import;
       continue;
     }
-    writeObject(out, scene.objects[i]);
+    writeObject(out, scene, i);
   }
   return out.take();
 }

@@ -3,6 +3,7 @@
 // sent to workers. No acceleration structures here: trace/ builds those from it.
 // Units: world units for positions and sizes, degrees for angles, linear RGB for colours.
 
+#include <memory>
 #include <string>
 #include <variant>
 #include <vector>
@@ -158,6 +159,8 @@ struct ImportSource {
   bool operator==(const ImportSource&) const = default;
 };
 
+struct SceneAnimation;  // scene/animation.h
+
 struct Scene {
   Camera camera;
   ImageSpec image;
@@ -167,6 +170,8 @@ struct Scene {
   std::vector<Object> objects;
   std::vector<Texture> textures;  // what materials' TextureRefs index
   std::vector<ImportSource> imports;  // in the order of their blocks
+  // How the scene moves (scene/animation.h: sceneAt gives it at a time); null: it does not.
+  std::shared_ptr<const SceneAnimation> animation;
   // What reading the scene skipped and why (triangles of a mesh file), for the user to see;
   // "file:line: what". Not part of the scene itself: never written or sent.
   std::vector<std::string> warnings;

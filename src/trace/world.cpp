@@ -88,12 +88,18 @@ Bounds boundsOf(const LightShape& shape) {
 
 }  // namespace
 
-const MeshBvh& World::treeFor(const std::shared_ptr<const TriangleMesh>& mesh) {
+const MeshBvh& World::treeFor(const std::shared_ptr<const TriangleMesh>& mesh,
+                              const World* reuse) {
   for (const auto& tree : meshes_) {
     if (tree->mesh() == mesh.get()) return *tree;  // placed again: built once
   }
+  if (reuse != nullptr) {
+    for (const auto& tree : reuse->meshes_) {
+      if (tree->mesh() == mesh.get()) return *meshes_.emplace_back(tree);
+    }
+  }
   const auto start = std::chrono::steady_clock::now();
-  meshes_.push_back(std::make_unique<MeshBvh>(mesh));
+  meshes_.push_back(std::make_shared<const MeshBvh>(mesh));
   const MeshBvh& tree = *meshes_.back();
   meshStats_.buildSeconds +=
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -103,7 +109,7 @@ const MeshBvh& World::treeFor(const std::shared_ptr<const TriangleMesh>& mesh) {
   return tree;
 }
 
-World::World(Scene scene) : scene_(std::move(scene)) {
+World::World(Scene scene, const World* reuse) : scene_(std::move(scene)) {
   for (uint32_t i = 0; i < scene_.objects.size(); ++i) {
     const Object& o = scene_.objects[i];
     const double transmissivity = o.material.transmissivity;
@@ -113,10 +119,10 @@ World::World(Scene scene) : scene_(std::move(scene)) {
     } else if (const auto* b = std::get_if<BoxShape>(&o.shape)) {
       items_.push_back({b->min, b->max, boundsOf(o.shape), transmissivity, i, Kind::box});
     } else if (const auto* m = std::get_if<MeshShape>(&o.shape)) {
-      const MeshBvh& mesh = treeFor(m->mesh);
+      const MeshBvh& mesh = treeFor(m->mesh, reuse);
       items_.push_back({Vec3(), Vec3(), mesh.bounds(), transmissivity, i, Kind::mesh, &mesh});
     } else if (const auto* instance = std::get_if<InstanceShape>(&o.shape)) {
-      const MeshBvh& mesh = treeFor(instance->mesh);
+      const MeshBvh& mesh = treeFor(instance->mesh, reuse);
       ++meshStats_.instances;
       placements_.push_back(std::make_unique<Transform>(instance->worldFromMesh.inverse()));
       const Bounds box = placedBounds(mesh.bounds(), instance->worldFromMesh);

@@ -40,7 +40,11 @@ struct SurfaceAttributes {
 
 class World {
  public:
-  explicit World(Scene scene);
+  explicit World(Scene scene) : World(std::move(scene), nullptr) {}
+  // The same, taking from `reuse` (if not null) the trees of the meshes it shares with
+  // `scene`: how the frames of an animation are prepared, where meshes move but keep their
+  // shape. `reuse` may be destroyed afterwards; meshStats() counts only what was built here.
+  World(Scene scene, const World* reuse);
 
   const Scene& scene() const { return scene_; }
   const Material& material(uint32_t object) const { return scene_.objects[object].material; }
@@ -112,7 +116,7 @@ class World {
     if (item.meshFromWorld == nullptr) return ray;
     return {item.meshFromWorld->point(ray.origin), item.meshFromWorld->vector(ray.direction)};
   }
-  const MeshBvh& treeFor(const std::shared_ptr<const TriangleMesh>& mesh);
+  const MeshBvh& treeFor(const std::shared_ptr<const TriangleMesh>& mesh, const World* reuse);
   struct Plane {
     Vec3 point, normal;
     double transmissivity = 0;
@@ -131,7 +135,7 @@ class World {
   QuadBvh bvh_;
   ShadowShafts shafts_;
   std::vector<Item> items_;
-  std::vector<std::unique_ptr<MeshBvh>> meshes_;
+  std::vector<std::shared_ptr<const MeshBvh>> meshes_;
   std::vector<std::unique_ptr<Transform>> placements_;
   MeshStats meshStats_;
   Bounds itemsBox_;  // around all of them

@@ -2,7 +2,8 @@
 // Bytes that are not a packing must end in a std::runtime_error (never a crash, an
 // out-of-bounds read, a huge allocation or a leak); bytes that unpack must give meshes and
 // images as the pack promises (indices in range, texels matching the size, usable
-// transforms, texture references within their import), and must pack again, from a scene
+// transforms, texture references within their import, a rig whose curves are well formed and
+// whose indices are in range), and must pack again, from a scene
 // holding what they gave, into bytes that unpack and pack to the very same bytes.
 
 #include <cstddef>
@@ -53,6 +54,9 @@ prt::Scene sceneOf(const prt::ShippedAssets& assets) {
     scene.textures.insert(scene.textures.end(), shipped.textures.begin(), shipped.textures.end());
     scene.imports.push_back(import);
   }
+  if (!(assets.rig == prt::SceneAnimation{})) {
+    scene.animation = std::make_shared<const prt::SceneAnimation>(assets.rig);
+  }
   return scene;
 }
 
@@ -82,6 +86,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
       }
     }
   }
+  check(assets.rig.fields.empty() && prt::rigProblem(assets.rig).empty());
+  for (const prt::ObjectBinding& b : assets.rig.objects) check(b.import < assets.imports.size());
+  for (const prt::LightBinding& b : assets.rig.lights) check(b.import < assets.imports.size());
+  for (const prt::CameraBinding& b : assets.rig.camera) check(b.import < assets.imports.size());
   // Packed again, the assets unpack, and pack to the same bytes once more.
   const std::vector<uint8_t> again = prt::packAssets(sceneOf(assets));
   const std::vector<uint8_t> twice = prt::packAssets(sceneOf(prt::unpackAssets(again)));

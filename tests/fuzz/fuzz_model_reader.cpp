@@ -71,6 +71,31 @@ void checkModel(const prt::ImportedModel& model, const std::string& path) {
     check(std::isfinite(v.orthoHeight) && v.orthoHeight >= 0);
     check(std::isfinite(c.aspectRatio) && c.aspectRatio >= 0);
   }
+  // The rig: empty, or one binding per object, light and camera, its curves well formed (and
+  // finite wherever they are evaluated) and its indices in range.
+  const prt::ModelRig& rig = model.rig;
+  if (rig.empty()) {
+    check(rig.nodes.empty() && rig.objectNodes.empty() && rig.lightNodes.empty() && rig.cameraNodes.empty());
+    return;
+  }
+  check(rig.objectNodes.size() == model.objects.size() && rig.objectLocal.size() == model.objects.size());
+  check(rig.lightNodes.size() == model.lights.size() && rig.lightLocal.size() == model.lights.size());
+  check(rig.cameraNodes.size() == model.cameras.size() && rig.cameraLocal.size() == model.cameras.size());
+  prt::SceneAnimation a;
+  a.curves = rig.curves;
+  a.nodes = rig.nodes;
+  a.duration = rig.duration;
+  check(prt::rigProblem(a).empty());
+  for (const auto* bound : {&rig.objectNodes, &rig.lightNodes, &rig.cameraNodes}) {
+    for (const int32_t n : *bound) check(n >= -1 && n < static_cast<int32_t>(rig.nodes.size()));
+  }
+  for (const prt::Curve& c : rig.curves) {
+    double v[4];
+    for (const double t : {c.times.front() - 1, 0.5 * (c.times.front() + c.times.back()), c.times.back() + 1}) {
+      c.evaluate(t, v);
+      for (int i = 0; i < c.width; ++i) check(std::isfinite(v[i]));
+    }
+  }
 }
 
 }  // namespace

@@ -20,6 +20,10 @@
 #                   thread count
 #   singleton       one rank is refused with a clear message
 #   slowdown        a --slowdown list not matching the worker count is refused
+#   sequence STRATEGY  an animated scene as one job (--frames 0-6:2): every frame written is
+#                   byte-identical to the same --frame rendered serially
+#   sequence-resume SIGKILL of the whole job of a sequence mid-render; --resume gives every
+#                   frame of the serial render
 #   changing        the default (adaptive) strategy with a worker slowing down part-way
 #                   (--slowdown-at): the image is still the serial one
 set -eu
@@ -125,6 +129,42 @@ case $mode in
     mpi_prt --strategy "$arg" --batch 16 -o mpi.pfm
     [ "$status" -eq 0 ] || fail "mpirun exited with $status"
     cmp serial.pfm mpi.pfm || fail "the MPI image differs from the serial one"
+    ;;
+  sequence)
+    frames="0 2 4 6"
+    for f in $frames; do
+      # shellcheck disable=SC2086
+      "$prt" render "$scene" $size -q --fps 4 --frame "$f" -o "serial_$f.pfm"
+    done
+    mpi_prt --strategy "$arg" --batch 16 --fps 4 --frames 0-6:2 -o "mpi_#.pfm" --report r.json
+    [ "$status" -eq 0 ] || fail "mpirun exited with $status"
+    for f in $frames; do
+      cmp "serial_$f.pfm" "mpi_$f.pfm" || fail "frame $f under MPI differs from the serial one"
+    done
+    cmp -s serial_0.pfm serial_6.pfm && fail "frames 0 and 6 are the same: nothing moved"
+    python3 - <<'PY'
+import json
+r = json.load(open("r.json"))
+assert [f["frame"] for f in r["frames"]] == [0, 2, 4, 6], r["frames"]
+assert sum(f["pixels"] for f in r["frames"]) == 4 * 24 * 18, r["frames"]
+PY
+    ;;
+  sequence-resume)
+    geometry="--width 48 --height 36 --spp 2"
+    # shellcheck disable=SC2086
+    "$prt" render "$scene" $geometry -q --fps 4 --frames 0-7 -o "serial_#.pfm"
+    # shellcheck disable=SC2086
+    mpi_prt_background -np "$np" "$prt" render "$scene" $geometry -q --fps 4 --frames 0-7 \
+      --slowdown "$(slowdowns)" --batch 8 -o "mpi_#.pfm" --checkpoint ck --checkpoint-every 0.1
+    wait_for_progress ck 2000 || { kill_job; fail "no progress within 20 s"; }
+    kill_job
+    geometry="$geometry" mpi_prt --batch 16 --fps 4 --frames 0-7 -o "mpi_#.pfm" --checkpoint ck \
+      --resume
+    [ "$status" -eq 0 ] || fail "the resumed run exited with $status"
+    for f in 0 1 2 3 4 5 6 7; do
+      cmp "serial_$f.pfm" "mpi_$f.pfm" || fail "frame $f of the resumed job differs"
+    done
+    [ ! -f ck ] || fail "the checkpoint was left behind"
     ;;
   changing)
     # shellcheck disable=SC2086

@@ -1,0 +1,47 @@
+#include "drive/frame_renderer.h"
+
+#include <chrono>
+
+#include "core/check.h"
+#include "scene/animation.h"
+
+namespace prt {
+
+FrameRenderer::FrameRenderer(Scene scene, const RenderSettings& settings,
+                             const FrameSequence& frames)
+    : scene_(std::move(scene)),
+      settings_(settings),
+      frames_(frames),
+      pixelsPerFrame_(static_cast<uint64_t>(scene_.image.width) * scene_.image.height) {}
+
+const Renderer& FrameRenderer::frame(uint64_t ordinal) {
+  PRT_CHECK(ordinal < frames_.count());
+  // A scene that does not move is the same at every frame: built once.
+  if (!scene_.animation) ordinal = 0;
+  if (ordinal == current_) return *renderer_;
+  const auto start = std::chrono::steady_clock::now();
+  renderer_.reset();
+  auto world = std::make_unique<World>(sceneAt(scene_, frames_.seconds(ordinal)), world_.get());
+  world_ = std::move(world);
+  renderer_ = std::make_unique<Renderer>(*world_, settings_);
+  current_ = ordinal;
+  ++framesBuilt_;
+  buildSeconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return *renderer_;
+}
+
+uint64_t FrameRenderer::render(const TaskSet& tasks, int threads, std::vector<Color>& colors,
+                               double* cpuSeconds) {
+  if (frames_.count() == 1) return renderTasks(frame(0), tasks, threads, colors, cpuSeconds);
+  colors.clear();
+  colors.reserve(tasks.size());
+  uint64_t rays = 0;
+  std::vector<Color> piece;
+  forEachFrame(tasks, pixelsPerFrame_, [&](uint64_t ordinal, const TaskSet& pixels) {
+    rays += renderTasks(frame(ordinal), pixels, threads, piece, cpuSeconds);
+    colors.insert(colors.end(), piece.begin(), piece.end());
+  });
+  return rays;
+}
+
+}  // namespace prt
