@@ -68,6 +68,43 @@ TEST_F(AnimationCliTest, EveryStrategyRendersTheSequenceBitForBit) {
   }
 }
 
+// An import's keyed placement moves the whole file (a model without an animation of its own),
+// under the thread driver as serially.
+TEST_F(AnimationCliTest, AKeyedImportMovesTheWholeFile) {
+  const std::string crate = (kSource / "scenes" / "models" / "crate.glb").string();
+  const std::string scene = write(
+      "moving.scene", "image { width 32 height 24 }\n"
+                      "import { file \"" + crate + "\" key 2 { translate 1 0 0 rotate 0 90 0 } }\n"
+                      "plane { point 0 0 0 normal 0 1 0 }\n");
+  ASSERT_EQ(run("render " + scene + kSize + " --frames 0-4:2 -o " + path("s_#.pfm")).exitCode, 0);
+  const Result r = run("render " + scene + kSize + " --frames 0-4:2 --workers 2 -o " +
+                       path("p_#.pfm"));
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  for (const char* f : {"0", "2", "4"}) {
+    EXPECT_EQ(readAll(path(std::string("s_") + f + ".pfm")),
+              readAll(path(std::string("p_") + f + ".pfm"))) << f;
+  }
+  EXPECT_NE(readAll(path("s_0.pfm")), readAll(path("s_4.pfm")));
+}
+
+// The simulator takes a sequence as one job too: whole frames per worker leave the slow
+// machines' last frames to decide the end, the default balances within frames.
+TEST_F(AnimationCliTest, TheSimulatorBalancesASequenceAndShowsWholeFramesLosing) {
+  const std::string common = "simulate --workers 8 --width 32 --height 24 --slow-share 0.5 "
+                             "--slow-factor 4 --frames 10 --report ";
+  const Result adaptive = run(common + path("a.json"));
+  ASSERT_EQ(adaptive.exitCode, 0) << adaptive.output;
+  EXPECT_NE(adaptive.output.find("10 frames"), std::string::npos) << adaptive.output;
+  ASSERT_EQ(run(common + path("f.json") + " --strategy frames").exitCode, 0);
+  const auto elapsed = [&](const std::string& file) {
+    const std::string text = readAll(path(file));
+    const size_t at = text.find("\"elapsed_s\": ");
+    return std::stod(text.substr(at + 13));
+  };
+  EXPECT_LT(elapsed("a.json") * 1.2, elapsed("f.json"));
+  EXPECT_NE(run("simulate --workers 4 --frames 0").exitCode, 0);
+}
+
 TEST_F(AnimationCliTest, FlagsAndPatternsAreCheckedBeforeRendering) {
   struct Case {
     std::string flags, message;

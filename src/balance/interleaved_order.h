@@ -30,6 +30,9 @@ uint64_t interleavedStrata(uint64_t taskCount);
 // Every task 0 .. taskCount-1 exactly once, in interleaved order. With `frameTasks` (a frame
 // sequence's pixels per frame), each frame's tasks are interleaved among themselves and the
 // frames follow one another, so that frames complete one after another, not all at the end.
+// (The scan-line order, frame after frame, traces about 10 % faster on real workers but gave
+// 1,024 simulated workers an ASU of 0.81 against 0.995: the first hand-outs then see unlike
+// parts of the image.)
 TaskSet interleavedOrder(uint64_t taskCount, uint64_t frameTasks = 0);
 
 }  // namespace prt

@@ -41,6 +41,7 @@ struct SimulateOptions {
   std::optional<double> lognormal;      // sigma of log-normal speeds
   unsigned long long seed = 1;          // for --slow-share and --lognormal
   std::string costMapPath;              // empty: the synthetic complex-scene map
+  uint64_t frames = 1;                  // --frames N: a sequence of N frames, the map reused
   std::optional<double> serialSeconds;  // rescale the map to this total; synthetic default 60
   unsigned long long batchPixels = 128;
   double batchOverheadMicroseconds = 0;
@@ -126,7 +127,24 @@ int runSimulate(const SimulateOptions& o) {
   checkHtmlPath(o.htmlPath);
 
   std::string source;
-  const CostMap costs = loadCostMap(o, source);
+  CostMap costs = loadCostMap(o, source);
+  if (o.frames > 1) {
+    // The same frame N times over, one above the other: the sequence's tasks (a scene whose
+    // cost changes from frame to frame is beyond one map; the balance across frames is not).
+    if (costs.pixelCount() * o.frames > (1ull << 30)) {
+      throw InputError("--frames " + std::to_string(o.frames) + " of " +
+                       std::to_string(costs.width()) + "x" + std::to_string(costs.height()) +
+                       " exceed the 2^30 pixels one job may hold");
+    }
+    std::vector<float> all;
+    all.reserve(costs.pixelCount() * o.frames);
+    for (uint64_t f = 0; f < o.frames; ++f) {
+      all.insert(all.end(), costs.secondsPerPixel().begin(), costs.secondsPerPixel().end());
+    }
+    costs = CostMap(costs.width(), costs.height() * static_cast<int>(o.frames), std::move(all));
+    source += ", " + std::to_string(o.frames) + " frames";
+    options.frames = o.frames;
+  }
   const auto start = std::chrono::steady_clock::now();
   const SimulatedRun run = simulate(costs, options);
   const double wall =
@@ -235,6 +253,10 @@ Action addSimulateCommand(CLI::App& app, const std::string& commandLine) {
       ->group(speeds);
 
   const std::string model = "Cost and network model";
+  cmd->add_option("--frames", o->frames,
+                  "Simulate a sequence of N frames as one job, each costing what the map says "
+                  "(the map reused for every frame)")
+      ->check(CLI::Range(1ull, 1ull << 20));
   cmd->add_option("--cost-map", o->costMapPath,
                   "Per-pixel costs recorded by prt render SCENE --cost-map FILE (default: a "
                   "synthetic map shaped like scenes/complex.scene)")

@@ -6,6 +6,7 @@
 
 #include "core/portable_math.h"
 #include "scene/block_reader.h"
+#include "scene/key_frames.h"
 #include "scene/mesh_block.h"
 #include "scene/value_reader.h"
 #include "trace/shapes.h"
@@ -128,9 +129,21 @@ Transform placementTransform(const Vec3& scale, const Vec3& rotateDegrees, const
 void readImportBlock(ImportBlocks& b, const Token& keyword) {
   ImportSource source;
   BlockReader block(b.in, keyword, "import",
-                    {"file", "scale", "rotate", "translate", "no_lights", "light_scale"});
+                    {"file", "scale", "rotate", "translate", "no_lights", "light_scale", "key"});
+  // The placement may be keyed: the whole file then moves (on top of its own animation).
+  KeyFrames keys("import", FieldTrack::Target::import, {"scale", "rotate", "translate"});
+  const auto put = [](const Vec3& v, double* out) {
+    out[0] = v.x, out[1] = v.y, out[2] = v.z;
+    return 3;
+  };
+  const ValueReader readKeyed = [&](const std::string& name, double* out) {
+    if (name == "scale") return put(readMeshScale(b.in, name, "import"), out);
+    if (name == "rotate") return put(readVector(b.in, name, Range::closed(-36000, 36000)), out);
+    return put(readVector(b.in, name, kCoordinate), out);
+  };
   while (const Token* param = block.next()) {
     const std::string& name = param->text;
+    if (name == "key") keys.read(b.in, *param, readKeyed);
     if (name == "file") source.file = readString(b.in, name);
     if (name == "scale") source.scale = readMeshScale(b.in, name, "import");
     if (name == "rotate") source.rotateDegrees = readVector(b.in, name, Range::closed(-36000, 36000));
@@ -191,6 +204,9 @@ void readImportBlock(ImportBlocks& b, const Token& keyword) {
     const ModelRig& r = model->rig;
     const auto importIndex = static_cast<uint32_t>(scene.imports.size());
     const auto nodeBase = static_cast<int32_t>(scene.animation ? scene.animation->nodes.size() : 0);
+    // A keyed placement moves everything of a file without an animation of its own: each
+    // object, light and camera is bound to no node, in the file's coordinates.
+    const bool bindAll = r.empty() && !keys.empty();
     if (!r.empty()) {
       rig.curves = r.curves;
       rig.nodes = r.nodes;
@@ -198,6 +214,11 @@ void readImportBlock(ImportBlocks& b, const Token& keyword) {
       for (size_t i = 0; i < model->objects.size(); ++i) {
         rig.objects.push_back({static_cast<uint32_t>(source.firstObject + i), importIndex,
                                r.objectNodes[i], r.objectLocal[i]});
+      }
+    } else if (bindAll) {
+      for (size_t i = 0; i < model->objects.size(); ++i) {
+        rig.objects.push_back({static_cast<uint32_t>(source.firstObject + i), importIndex, -1,
+                               std::get<InstanceShape>(model->objects[i].shape).worldFromMesh});
       }
     }
     // Lights and cameras a light or camera block could not say (beyond the coordinates a
@@ -210,6 +231,9 @@ void readImportBlock(ImportBlocks& b, const Token& keyword) {
           if (!r.empty()) {
             rig.lights.push_back({static_cast<uint32_t>(scene.lights.size()), importIndex,
                                   r.lightNodes[i], r.lightLocal[i]});
+          } else if (bindAll) {
+            rig.lights.push_back({static_cast<uint32_t>(scene.lights.size()), importIndex, -1,
+                                  model->lights[i]});
           }
           scene.lights.push_back(l);
         } else {
@@ -225,6 +249,8 @@ void readImportBlock(ImportBlocks& b, const Token& keyword) {
         if (!r.empty()) {
           const int32_t node = r.cameraNodes[i];
           binding = CameraBinding{importIndex, node >= 0 ? node + nodeBase : -1, r.cameraLocal[i]};
+        } else if (bindAll) {
+          binding = CameraBinding{importIndex, -1, model->cameras[i].camera};
         }
         b.cameras.push_back({std::move(offered), source.file, binding});
       } else {
@@ -250,7 +276,14 @@ void readImportBlock(ImportBlocks& b, const Token& keyword) {
   source.objectCount = scene.objects.size() - source.firstObject;
   source.lightCount = scene.lights.size() - source.firstLight;
   source.textureCount = scene.textures.size() - source.firstTexture;
+  const ImportSource base = source;
   scene.imports.push_back(std::move(source));
+  keys.finish(scene, static_cast<uint32_t>(scene.imports.size() - 1),
+              [&](const std::string& name, double* out) {
+                if (name == "scale") return put(base.scale, out);
+                if (name == "rotate") return put(base.rotateDegrees, out);
+                return put(base.translate, out);
+              });
   try {
     addRig(scene, rig);
   } catch (const std::invalid_argument& e) {

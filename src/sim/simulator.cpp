@@ -42,6 +42,15 @@ MasterOptions masterOptions(const SimulationOptions& options) {
   return m;
 }
 
+SceneMsg sceneMessage(const SimulationOptions& options) {
+  SceneMsg scene{std::string(options.sceneBytes, ' '), 1, 1};
+  if (options.frames > 1) {
+    scene.frames.last = static_cast<int64_t>(options.frames) - 1;
+    scene.frames.animated = true;
+  }
+  return scene;
+}
+
 class Simulation {
  public:
   Simulation(const CostMap& costs, const SimulationOptions& options)
@@ -49,7 +58,7 @@ class Simulation {
         options_(options),
         net_(workerCount(), options.network),
         master_(makeStrategy(options.strategy, options.strategyOptions), startingWorkers(),
-                costs.pixelCount(), SceneMsg{std::string(options.sceneBytes, ' '), 1, 1}, nullptr,
+                costs.pixelCount(), sceneMessage(options), nullptr,
                 masterOptions(options)) {
     for (int w = 0; w < workerCount(); ++w) {
       const auto i = static_cast<size_t>(w);

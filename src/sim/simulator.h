@@ -57,6 +57,9 @@ struct SimulationOptions {
   bool endgame = false;                   // --endgame: copies of the last tasks (Master)
   NetworkOptions network;
   uint64_t sceneBytes = 4096;  // the scene text the master sends to each worker
+  // A frame sequence: the cost map holds this many frames one above the other (its pixels are
+  // the tasks of every frame, as a real sequence's are); 1: a still.
+  uint64_t frames = 1;
 };
 
 struct SimulatedRun {
