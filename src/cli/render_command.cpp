@@ -163,6 +163,7 @@ int renderSerialSequence(const RenderOptions& o, const Scene& scene,
                   static_cast<unsigned long long>(frames.count()), path.c_str(), stats.seconds);
     }
   }
+  if (!o.quiet) std::printf("%s", videoHint(scene.image.output, frames).c_str());
   if (!o.quiet) {
     std::printf("%llu frames of %dx%d, %d spp, DRT %d: %.3f s rendering, %.3f s preparing "
                 "frames, %llu rays\n",
