@@ -105,6 +105,17 @@ TEST_F(AnimationCliTest, TheSimulatorBalancesASequenceAndShowsWholeFramesLosing)
   EXPECT_NE(run("simulate --workers 4 --frames 0").exitCode, 0);
 }
 
+// The run's page of a sequence shows a sheet of its frames and one frame's ownership map.
+TEST_F(AnimationCliTest, TheRunPageOfASequenceShowsItsFrames) {
+  const Result r = run("render " + kScene + kSize + " --frames 0-20:4 --workers 2 -o " +
+                       path("f_##.png") + " --html " + path("page.html"));
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  const std::string page = readAll(path("page.html"));
+  EXPECT_NE(page.find("6 frames of 32×24"), std::string::npos);
+  EXPECT_NE(page.find("shown: frames 0, 4, 8, 12, 16, 20"), std::string::npos);
+  EXPECT_NE(page.find("ownership_map"), std::string::npos);
+}
+
 TEST_F(AnimationCliTest, FlagsAndPatternsAreCheckedBeforeRendering) {
   struct Case {
     std::string flags, message;

@@ -82,6 +82,44 @@ PagePicture renderPicture(const Image& image, int maxSide) {
   return p;
 }
 
+PagePicture framesPicture(const Image& frames, int frameHeight, const FrameSequence& sequence) {
+  // At most 12 frames, evenly spread from the first to the last, 4 to a row, each 160 wide.
+  const uint64_t count = sequence.count();
+  const uint64_t shown = std::min<uint64_t>(12, count);
+  const int columns = static_cast<int>(std::min<uint64_t>(4, shown));
+  const int rows = static_cast<int>((shown + 3) / 4);
+  const int width = frames.width();
+  const int factor = std::max(1, (width + 159) / 160);
+  const int tw = std::max(1, width / factor), th = std::max(1, frameHeight / factor);
+  Image sheet(columns * (tw + 4), rows * (th + 4));
+  std::string numbers;
+  for (uint64_t k = 0; k < shown; ++k) {
+    const uint64_t ordinal = shown == 1 ? 0 : k * (count - 1) / (shown - 1);
+    const int ox = static_cast<int>(k % 4) * (tw + 4) + 2, oy = static_cast<int>(k / 4) * (th + 4) + 2;
+    const int top = static_cast<int>(ordinal) * frameHeight;
+    for (int y = 0; y < th; ++y) {
+      for (int x = 0; x < tw; ++x) {
+        Color sum(0);
+        for (int dy = 0; dy < factor; ++dy) {
+          for (int dx = 0; dx < factor; ++dx) {
+            sum = sum + frames.at(std::min(width - 1, x * factor + dx),
+                                  top + std::min(frameHeight - 1, y * factor + dy));
+          }
+        }
+        sheet.set(ox + x, oy + y, sum * (1.0 / (factor * factor)));
+      }
+    }
+    numbers += (numbers.empty() ? "" : ", ") + std::to_string(sequence.number(ordinal));
+  }
+  PagePicture p;
+  p.png = encodePng(sheet);
+  p.caption = std::to_string(count) + " frames of " + std::to_string(width) + "×" +
+              std::to_string(frameHeight) + ", each identical to a serial render; shown: frames " +
+              numbers + ". The ownership map is frame " +
+              std::to_string(sequence.number(count / 2)) + "'s.";
+  return p;
+}
+
 PagePicture costPicture(const CostMap& costs, int maxSide) {
   std::vector<float> sorted = costs.secondsPerPixel();
   const size_t k = sorted.size() * 99 / 100;
@@ -132,10 +170,20 @@ void writeRenderReportAndPage(const RenderOptions& o, const Scene& scene, const 
         {"ownership", o.ownershipPath}}) {
     if (!path.empty()) context.outputs.emplace_back(name, path);
   }
-  const std::vector<int32_t> owner(run.owner.begin(), run.owner.end());
+  const FrameSequence frames = framesOf(o);
+  const uint64_t perFrame = static_cast<uint64_t>(scene.image.width) * scene.image.height;
+  // A sequence's page shows who rendered its middle frame, and a sheet of its frames.
+  const uint64_t shown = frames.count() / 2;
+  const auto first = run.owner.begin() + static_cast<std::ptrdiff_t>(shown * perFrame);
+  const std::vector<int32_t> owner(first, first + static_cast<std::ptrdiff_t>(perFrame));
   const nlohmann::json document = reportDocument(run.report, context, run.events, owner);
-  writeReportAndPage(o.reportPath, o.htmlPath, document,
-                     o.htmlPath.empty() ? PagePicture{} : renderPicture(run.image));
+  PagePicture picture;
+  if (!o.htmlPath.empty() && frames.count() > 1) {
+    picture = framesPicture(run.image, scene.image.height, frames);
+  } else if (!o.htmlPath.empty()) {
+    picture = renderPicture(run.image);
+  }
+  writeReportAndPage(o.reportPath, o.htmlPath, document, picture);
 }
 
 }  // namespace prt::cli

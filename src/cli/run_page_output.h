@@ -43,6 +43,8 @@ void writeRenderReportAndPage(const RenderOptions& o, const Scene& scene, const 
 PagePicture renderPicture(const Image& image, int maxSide = 1600);
 // A simulated run's picture: the cost map as a heat map (brighter is costlier, square-root
 // scale up to the 99th percentile).
+// A sheet of a sequence's frames (stacked in `frames`, `frameHeight` rows each) for the page.
+PagePicture framesPicture(const Image& frames, int frameHeight, const FrameSequence& sequence);
 PagePicture costPicture(const CostMap& costs, int maxSide = 1600);
 
 }  // namespace prt::cli
