@@ -9,6 +9,7 @@
 #include "core/stop_signals.h"
 #include "image/image_io.h"
 #include "drive/frame_renderer.h"
+#include "drive/parallel_run.h"
 #include "trace/renderer.h"
 
 namespace prt::cli {
@@ -71,9 +72,8 @@ int renderSerialWithCheckpoint(const RenderOptions& o, const Scene& scene,
     ++frameCounts[p / perFrame];
   });
   const auto writeFrame = [&](uint64_t ordinal) {
-    Image frame(scene.image.width, scene.image.height);
-    for (uint64_t p = 0; p < perFrame; ++p) frame.set(p, image.at(ordinal * perFrame + p));
-    writeImage(frame, framePath(scene.image.output, frames.number(ordinal)));
+    writeImage(frameOfSequence(image, scene.image.height, ordinal),
+               framePath(scene.image.output, frames.number(ordinal)));
   };
   if (sequence) {  // what the earlier run completed, written again in case it was cut short
     for (uint64_t i = 0; i < frames.count(); ++i) {

@@ -236,11 +236,9 @@ int finishParallelRun(const RenderOptions& o, const Scene& scene, const Parallel
     writeImage(ownershipImage(run.image, run.owner), o.ownershipPath);
   } else if (!o.ownershipPath.empty()) {  // one map per frame
     const Image all = ownershipImage(run.image, run.owner);
-    const uint64_t perFrame = static_cast<uint64_t>(scene.image.width) * scene.image.height;
     for (uint64_t i = 0; i < frames.count(); ++i) {
-      Image frame(scene.image.width, scene.image.height);
-      for (uint64_t p = 0; p < perFrame; ++p) frame.set(p, all.at(i * perFrame + p));
-      writeImage(frame, framePath(o.ownershipPath, frames.number(i)));
+      writeImage(frameOfSequence(all, scene.image.height, i),
+                 framePath(o.ownershipPath, frames.number(i)));
     }
   }
   // The image holds every pixel now: the checkpoint has nothing more to give.

@@ -97,12 +97,16 @@ void ImageAssembler::add(int worker, const TaskSet& tasks, const std::vector<flo
   });
 }
 
-Image ImageAssembler::frame(uint64_t ordinal) const {
-  const int height = static_cast<int>(pixelsPerFrame_ / static_cast<uint64_t>(image_.width()));
-  Image out(image_.width(), height);
-  const uint64_t offset = ordinal * pixelsPerFrame_;
-  for (uint64_t p = 0; p < pixelsPerFrame_; ++p) out.set(p, image_.at(offset + p));
+Image frameOfSequence(const Image& stacked, int frameHeight, uint64_t ordinal) {
+  Image out(stacked.width(), frameHeight);
+  const uint64_t perFrame = out.pixelCount(), offset = ordinal * perFrame;
+  for (uint64_t p = 0; p < perFrame; ++p) out.set(p, stacked.at(offset + p));
   return out;
+}
+
+Image ImageAssembler::frame(uint64_t ordinal) const {
+  const auto height = static_cast<int>(pixelsPerFrame_ / static_cast<uint64_t>(image_.width()));
+  return frameOfSequence(image_, height, ordinal);
 }
 
 void ImageAssembler::restore(const Checkpoint& checkpoint) {

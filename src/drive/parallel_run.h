@@ -95,6 +95,9 @@ class ImageAssembler {
   std::vector<uint64_t> frameCounts_;  // pixels in, per frame
 };
 
+// The ordinal-th frame of a sequence's image (its frames stacked, `frameHeight` rows each).
+Image frameOfSequence(const Image& stacked, int frameHeight, uint64_t ordinal);
+
 // The scene as the master sends it.
 SceneMsg makeSceneMessage(const Scene& scene, const RenderSettings& settings,
                           const FrameSequence& frames = {});
