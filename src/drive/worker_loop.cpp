@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <deque>
+#include <new>
 #include <stdexcept>
 #include <string>
 
@@ -110,6 +111,8 @@ class WorkerLoop {
     Message m;
     try {
       m = decode(in.bytes);
+    } catch (const std::bad_alloc&) {
+      throw;  // out of memory is not a bad message: main() reports it as such
     } catch (const std::exception& e) {
       throw std::runtime_error("bad message from " +
                                (in.from == kMaster ? std::string("the master")
