@@ -4,6 +4,9 @@
 
 #include <benchmark/benchmark.h>
 
+#include <vector>
+
+#include "balance/interleaved_order.h"
 #include "core/rng.h"
 #include "scene/scene_file.h"
 #include "trace/isa_level.h"
@@ -152,6 +155,29 @@ void BM_ComplexSceneWorld(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_ComplexSceneWorld)->Unit(benchmark::kMillisecond);
+
+// The cost of the order pixels are traced in, on a frame of the keyframes scene at 320x240
+// and 4 samples: in scan lines, and in the strategies' interleaved order (interleaved_order.h:
+// cells of a few neighbouring pixels spread across the image). Same pixels, same image; only
+// the time differs.
+void BM_PixelOrder(benchmark::State& state) {
+  Scene scene = loadSceneFile(PRT_SOURCE_DIR "/scenes/keyframes.scene");
+  scene.image.width = 320;
+  scene.image.height = 240;
+  const World world(scene);
+  const Renderer renderer(world, RenderSettings{4, 1});
+  const uint64_t n = renderer.pixelCount();
+  const int mode = static_cast<int>(state.range(0));
+  std::vector<uint64_t> pixels = mode == 0 ? TaskSet::range(0, n).toVector()
+                                           : interleavedOrder(n).toVector();
+  uint64_t rays = 0;
+  for (auto _ : state) {
+    for (uint64_t p : pixels) benchmark::DoNotOptimize(renderer.renderPixel(p, rays));
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(n));
+  state.SetLabel(mode == 0 ? "scan lines" : "interleaved");
+}
+BENCHMARK(BM_PixelOrder)->DenseRange(0, 1)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace prt

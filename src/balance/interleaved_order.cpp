@@ -16,11 +16,16 @@ bool isPrime(uint64_t n) {
 
 }  // namespace
 
+uint64_t interleavedCells(uint64_t taskCount) {
+  if (taskCount <= 1) return 1;
+  uint64_t c = std::max<uint64_t>(2, taskCount / (kStratumTasks * kCellStrata));
+  while (!isPrime(c)) ++c;
+  return c;
+}
+
 uint64_t interleavedStrata(uint64_t taskCount) {
   if (taskCount <= 1) return 1;
-  uint64_t s = std::max<uint64_t>(2, taskCount / kStratumTasks);
-  while (!isPrime(s)) ++s;
-  return std::min(s, taskCount);
+  return std::min(interleavedCells(taskCount) * kCellStrata, taskCount);
 }
 
 TaskSet interleavedOrder(uint64_t taskCount, uint64_t frameTasks) {
@@ -37,18 +42,21 @@ TaskSet interleavedOrder(uint64_t taskCount, uint64_t frameTasks) {
   }
   const uint64_t strata = interleavedStrata(taskCount);
   if (strata <= 1) return TaskSet::range(0, taskCount);
-  // The golden-ratio step, coprime with the prime number of strata (unless S = taskCount,
-  // which is then a prime too small to matter; any step 1..S-1 is coprime with it).
+  const uint64_t cells = interleavedCells(taskCount);
+  // The golden-ratio step over the cells, coprime with their prime number.
   const double golden = (std::sqrt(5.0) - 1) / 2;
   const uint64_t step = std::clamp<uint64_t>(
-      static_cast<uint64_t>(std::llround(golden * static_cast<double>(strata))), 1, strata - 1);
+      static_cast<uint64_t>(std::llround(golden * static_cast<double>(cells))), 1, cells - 1);
   TaskSet order;
-  uint64_t first = 0;
-  for (uint64_t i = 0; i < strata; ++i) {
-    if (first < taskCount) {
-      order.append(TaskRun{first, (taskCount - first + strata - 1) / strata, strata});
+  uint64_t cell = 0;
+  for (uint64_t i = 0; i < cells; ++i) {
+    for (uint64_t k = 0; k < kCellStrata; ++k) {
+      const uint64_t first = cell * kCellStrata + k;
+      if (first < strata) {
+        order.append(TaskRun{first, (taskCount - first + strata - 1) / strata, strata});
+      }
     }
-    first = (first + step) % strata;
+    cell = (cell + step) % cells;
   }
   return order;
 }

@@ -5,13 +5,18 @@
 // glass however the cost is spread. Used by "reservoir-scatter".
 //
 // The tasks are split into S strata, stratum j holding the pixels j, j + S, j + 2S, ...: about
-// kStratumTasks of them, spread from the top of the image to the bottom. The strata follow
-// one another in golden-ratio order, j = i * g mod S with g / S close to 0.618, so consecutive
-// strata land far apart across the image and any run of them covers it evenly (Weyl's
-// sequence; S is prime, so every stratum comes exactly once). A stretch of L tasks is then
-// L / kStratumTasks whole strata plus at most two partial ones: even across a cluster of
-// workers whose hand-outs are a few hundred tasks, no worker gets a band of scan lines.
-// Each stratum is one strided run, so the order stays compact: S runs in all.
+// kStratumTasks of them, spread from the top of the image to the bottom. Strata come in cells
+// of kCellStrata neighbours (strata cB .. cB + B - 1: B pixels side by side at each of the
+// stratum's places), and the cells follow one another in golden-ratio order, c = i * g mod C
+// with g / C close to 0.618 and C prime, so consecutive cells land far apart across the image
+// and any run of them covers it evenly (Weyl's sequence; every cell comes exactly once). A
+// stretch of L tasks is then L / kStratumTasks whole strata plus at most two partial ones:
+// even across a cluster of workers whose hand-outs are a few hundred tasks, no worker gets a
+// band of scan lines. The cells keep a batch's pixels near one another: traced one thread,
+// the keyframes scene's pixels cost 1.09x their scan-line time in lone strata and 1.03x in
+// cells of 4 (bench/trace_bench.cpp BM_PixelOrder), and 4 slowed workers rendering a
+// sequence gained about 5 % (bench/animation.py); the simulated ASU did not drop. Each
+// stratum is one strided run, so the order stays compact: S runs in all.
 //
 // Pure function; thread-safe.
 
@@ -22,9 +27,13 @@
 namespace prt {
 
 inline constexpr uint64_t kStratumTasks = 32;
+inline constexpr uint64_t kCellStrata = 4;  // neighbouring strata per cell
 
-// The number of strata for `taskCount` tasks: the smallest prime >= taskCount / kStratumTasks
-// (at least 2, at most taskCount; 1 for one task).
+// The number of cells for `taskCount` tasks: the smallest prime >= taskCount / (kStratumTasks
+// * kCellStrata), at least 2 (1 for one task).
+uint64_t interleavedCells(uint64_t taskCount);
+
+// The number of strata: kCellStrata per cell, at most taskCount.
 uint64_t interleavedStrata(uint64_t taskCount);
 
 // Every task 0 .. taskCount-1 exactly once, in interleaved order. With `frameTasks` (a frame

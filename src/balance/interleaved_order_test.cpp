@@ -18,13 +18,21 @@ TEST(InterleavedOrder, EveryTaskExactlyOnce) {
   }
 }
 
-TEST(InterleavedOrder, StrataArePrimeAndHoldAboutThirtyTwoTasks) {
-  EXPECT_EQ(interleavedStrata(640 * 480), 9601u);  // 9600 rounded up to a prime
+TEST(InterleavedOrder, CellsArePrimeAndStrataHoldAboutThirtyTwoTasks) {
+  EXPECT_EQ(interleavedCells(640 * 480), 2411u);  // 2400 rounded up to a prime
+  EXPECT_EQ(interleavedStrata(640 * 480), 2411u * kCellStrata);
   EXPECT_EQ(interleavedStrata(1), 1u);
-  EXPECT_EQ(interleavedStrata(40), 2u);
+  EXPECT_EQ(interleavedStrata(5), 5u);  // two cells of 4 would be more strata than tasks
   const TaskSet order = interleavedOrder(640 * 480);
-  EXPECT_EQ(order.runs().size(), 9601u) << "one compact run per stratum";
-  EXPECT_EQ(order.runs()[0], (TaskRun{0, 32, 9601}));
+  const uint64_t strata = 2411 * kCellStrata;
+  EXPECT_EQ(order.runs().size(), strata) << "one compact run per stratum";
+  // The first cell: its strata side by side, then a cell far away.
+  for (uint64_t k = 0; k < kCellStrata; ++k) {
+    EXPECT_EQ(order.runs()[k], (TaskRun{k, 32, strata}));
+  }
+  const uint64_t next = order.runs()[kCellStrata].first;
+  EXPECT_EQ(next % kCellStrata, 0u);
+  EXPECT_GT(next, strata / 4);
 }
 
 TEST(InterleavedOrder, ShortStretchesSampleTheWholeImage) {

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include "balance/interleaved_order.h"
 #include "core/input_error.h"
 
 namespace prt {
@@ -97,17 +98,19 @@ namespace {
 TEST(ReservoirScatterTest, BlocksAndHandOutsFollowTheInterleavedOrder) {
   ReservoirStrategy strategy(80, /*interleaved=*/true);
   EXPECT_EQ(strategy.name(), "reservoir-scatter");
-  // 2 equal workers, 40 tasks: 2 strata (0, 2, .., 38 then 1, 3, .., 39); limit 32, blocks
-  // of 16; the reservoir holds 25, 27, .., 39 and half of it goes to the first request.
+  // 2 equal workers, 40 tasks in the interleaved order (8 strata of 5: 0, 8, .., 32 then
+  // 1, 9, ..); limit 32, blocks of 16 in that order; the reservoir holds the last 8 and half
+  // of it goes to the first request.
+  TaskSet order = interleavedOrder(40);
+  ASSERT_EQ(order.runs().front(), (TaskRun{0, 5, 8}));
+  const TaskSet first = order.takeFront(16), second = order.takeFront(16);
   const Decisions start = strategy.start(StartInfo{40, {1.0, 1.0}});
   ASSERT_EQ(start.size(), 2u);
-  EXPECT_EQ(std::get<Assign>(start[0]).tasks, TaskSet::strided(0, 16, 2));
-  TaskSet second = TaskSet::strided(32, 4, 2);
-  second.append(TaskRun{1, 12, 2});
+  EXPECT_EQ(std::get<Assign>(start[0]).tasks, first);
   EXPECT_EQ(std::get<Assign>(start[1]).tasks, second);
   const Decisions more = strategy.onRequest(0);
   ASSERT_EQ(more.size(), 1u);
-  EXPECT_EQ(std::get<Assign>(more[0]).tasks, TaskSet::strided(25, 4, 2));
+  EXPECT_EQ(std::get<Assign>(more[0]).tasks, order.takeFront(4));
 }
 
 }  // namespace
