@@ -13,6 +13,7 @@ packages=(
   libembree-dev  # bench/mesh_bench.cpp only: Embree's rays per second beside PRT's
   python3 gnuplot-nox hyperfine
   chromium  # headless, for the test that opens the run page in a browser
+  ffmpeg  # prt render --video: a sequence's frames made into a video
   clang libclang-rt-14-dev   # libFuzzer and the sanitizers, for scripts/fuzz.sh
 )
 

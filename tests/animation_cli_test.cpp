@@ -9,11 +9,14 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include "prt_command.h"
 
@@ -105,7 +108,8 @@ TEST_F(AnimationCliTest, TheSimulatorBalancesASequenceAndShowsWholeFramesLosing)
   EXPECT_NE(run("simulate --workers 4 --frames 0").exitCode, 0);
 }
 
-// The run's page of a sequence shows a sheet of its frames and one frame's ownership map.
+// The run's page of a sequence shows a sheet of its frames, one frame's ownership map and
+// the frame boundaries on its timeline.
 TEST_F(AnimationCliTest, TheRunPageOfASequenceShowsItsFrames) {
   const Result r = run("render " + kScene + kSize + " --frames 0-20:4 --workers 2 -o " +
                        path("f_##.png") + " --html " + path("page.html"));
@@ -114,6 +118,8 @@ TEST_F(AnimationCliTest, TheRunPageOfASequenceShowsItsFrames) {
   EXPECT_NE(page.find("6 frames of 32×24"), std::string::npos);
   EXPECT_NE(page.find("shown: frames 0, 4, 8, 12, 16, 20"), std::string::npos);
   EXPECT_NE(page.find("ownership_map"), std::string::npos);
+  EXPECT_NE(page.find("class=\"frame-line\""), std::string::npos) << "frame boundaries";
+  EXPECT_NE(page.find("frame 20 complete at"), std::string::npos);
 }
 
 TEST_F(AnimationCliTest, FlagsAndPatternsAreCheckedBeforeRendering) {
@@ -215,6 +221,141 @@ TEST_F(AnimationCliTest, ASerialSequenceWithACheckpointResumes) {
     const std::string n = std::to_string(f);
     EXPECT_EQ(readAll(path("ref_" + n + ".pfm")), readAll(path("k_" + n + ".pfm"))) << f;
   }
+}
+
+// A shell command's stdout.
+Result shell(const std::string& command) {
+  Result r;
+  FILE* pipe = popen(command.c_str(), "r");
+  if (pipe == nullptr) return r;
+  char buffer[4096];
+  size_t n = 0;
+  while ((n = fread(buffer, 1, sizeof buffer, pipe)) > 0) r.output.append(buffer, n);
+  const int status = pclose(pipe);
+  r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+bool haveFfmpeg() {
+  return std::system("command -v ffmpeg >/dev/null 2>&1 && command -v ffprobe >/dev/null 2>&1") ==
+         0;
+}
+
+// Files in the scratch folder whose names hold ".tmp-": a temporary left behind.
+std::vector<std::string> temporariesIn(const std::string& folder) {
+  std::vector<std::string> found;
+  for (const auto& e : fs::directory_iterator(folder)) {
+    const std::string name = e.path().filename().string();
+    if (name.find(".tmp-") != std::string::npos) found.push_back(name);
+  }
+  return found;
+}
+
+// --video: the frames, fed to Debian's ffmpeg in order, become a video another tool (ffprobe)
+// reads back with every frame, at the animation's speed over the step, padded to even sizes.
+TEST_F(AnimationCliTest, VideoOfASequenceHasEveryFrameAtTheAnimationsSpeed) {
+  if (!haveFfmpeg()) GTEST_SKIP() << "ffmpeg and ffprobe are not installed (scripts/install-deps.sh)";
+  // An older frame beside the pattern's is not picked up: only this run's frames are fed.
+  write("f_99.png", "not a frame of this run");
+  const Result r = run("render " + kScene + " --width 33 --height 25 --spp 1 --fps 8 "
+                       "--frames 0-22:2 --workers 2 -o " + path("f_##.png") + " --video " +
+                       path("v.mp4"));
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_NE(r.output.find("v.mp4: video of 12 frames at 4 frames per second"), std::string::npos)
+      << r.output;
+  const Result probe = shell(
+      "ffprobe -v error -count_frames -select_streams v:0 -show_entries "
+      "stream=codec_name,width,height,pix_fmt,r_frame_rate,nb_read_frames -of csv=p=0 " +
+      path("v.mp4"));
+  EXPECT_EQ(probe.output, "h264,34,26,yuv420p,4/1,12\n");
+  EXPECT_TRUE(temporariesIn(dir_.string()).empty());
+  // A serial sequence, quiet, to a container of ffmpeg's own choice.
+  const Result gif = run("render " + kScene + " --width 16 --height 12 --spp 1 --frames 0-4 -q "
+                         "-o " + path("g_#.ppm") + " --video " + path("v.gif"));
+  ASSERT_EQ(gif.exitCode, 0) << gif.output;
+  EXPECT_EQ(gif.output, "");
+  EXPECT_EQ(shell("ffprobe -v error -count_frames -show_entries "
+                               "stream=codec_name,nb_read_frames -of csv=p=0 " + path("v.gif"))
+                .output,
+            "gif,5\n");
+}
+
+TEST_F(AnimationCliTest, VideoProblemsAreCleanErrorsAndKeepTheFrames) {
+  const std::string base = "render " + kScene + " --width 16 --height 12 --spp 1 -q ";
+  // Refused before anything renders (exit 2, no frames).
+  EXPECT_EQ(run(base + "-o " + path("a.png") + " --video " + path("a.mp4")).exitCode, 2);
+  EXPECT_EQ(run(base + "--frames 0-2 -o " + path("b_#.png") + " --video " + path("b")).exitCode,
+            2);
+  const Result missing = run(base + "--frames 0-2 -o " + path("c_#.png") + " --video " +
+                             path("c.mp4"), "PRT_FFMPEG=/nonexistent/ffmpeg ");
+  EXPECT_EQ(missing.exitCode, 2);
+  EXPECT_NE(missing.output.find("--video needs ffmpeg"), std::string::npos) << missing.output;
+  EXPECT_FALSE(fs::exists(path("c_0.png")));
+  // An ffmpeg that fails after the render: exit 1 with what it said; the frames stay, no
+  // video and no temporary files.
+  const std::string failing = write("ffmpeg-fails", "#!/bin/sh\ncat >/dev/null\n"
+                                                    "echo 'Unknown encoder boom' >&2\nexit 3\n");
+  fs::permissions(failing, fs::perms::owner_all);
+  const Result failed = run(base + "--frames 0-2 --workers 2 -o " + path("d_#.png") +
+                            " --video " + path("d.mp4"), "PRT_FFMPEG=" + failing + " ");
+  EXPECT_EQ(failed.exitCode, 1) << failed.output;
+  EXPECT_NE(failed.output.find("Unknown encoder boom"), std::string::npos) << failed.output;
+  EXPECT_NE(failed.output.find("frames are written"), std::string::npos) << failed.output;
+  for (const char* f : {"d_0.png", "d_1.png", "d_2.png"}) EXPECT_TRUE(fs::exists(path(f))) << f;
+  EXPECT_FALSE(fs::exists(path("d.mp4")));
+  // An ffmpeg that stops reading at once, frames larger than a pipe holds (prt must not die
+  // of SIGPIPE), and one that reads everything and writes nothing.
+  const std::string deaf = write("ffmpeg-deaf", "#!/bin/sh\nexit 0\n");
+  fs::permissions(deaf, fs::perms::owner_all);
+  const Result stopped =
+      run("render " + kScene + " --width 200 --height 150 --spp 1 -q --frames 0-1 -o " +
+          path("e_#.ppm") + " --video " + path("e.mp4"), "PRT_FFMPEG=" + deaf + " ");
+  EXPECT_EQ(stopped.exitCode, 1) << stopped.output;
+  EXPECT_NE(stopped.output.find("stopped reading"), std::string::npos) << stopped.output;
+  EXPECT_FALSE(fs::exists(path("e.mp4")));
+  const std::string silent = write("ffmpeg-silent", "#!/bin/sh\ncat >/dev/null\nexit 0\n");
+  fs::permissions(silent, fs::perms::owner_all);
+  const Result nothing = run(base + "--frames 0-2 -o " + path("g_#.png") + " --video " +
+                             path("g.mp4"), "PRT_FFMPEG=" + silent + " ");
+  EXPECT_EQ(nothing.exitCode, 1) << nothing.output;
+  EXPECT_NE(nothing.output.find("without writing the video"), std::string::npos)
+      << nothing.output;
+  EXPECT_FALSE(fs::exists(path("g.mp4")));
+  EXPECT_TRUE(temporariesIn(dir_.string()).empty());
+}
+
+// Ctrl-C while ffmpeg runs (SIGINT to the whole process group, as a terminal sends it): exit
+// 130, no video and no temporary file left.
+TEST_F(AnimationCliTest, CtrlCWhileTheVideoIsMadeLeavesNothingBehind) {
+  const std::string slow = write("ffmpeg-slow", "#!/bin/sh\nfor a; do out=$a; done\n"
+                                                "echo partial > \"$out\"\nexec sleep 30\n");
+  fs::permissions(slow, fs::perms::owner_all);
+  const std::string command = "PRT_FFMPEG=" + slow + " exec " + prt::e2e::prtBinary() +
+                              " render " + kScene + " --width 16 --height 12 --spp 1 -q "
+                              "--frames 0-2 -o " + path("f_#.png") + " --video " +
+                              path("v.mp4") + " >/dev/null 2>&1";
+  const pid_t child = fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    setpgid(0, 0);
+    execl("/bin/sh", "sh", "-c", command.c_str(), nullptr);
+    _exit(127);
+  }
+  setpgid(child, child);
+  // Until ffmpeg has written into the temporary video.
+  bool started = false;
+  for (int i = 0; i < 400 && !started; ++i) {
+    started = !temporariesIn(dir_.string()).empty() && fs::exists(path("f_2.png"));
+    if (!started) std::this_thread::sleep_for(std::chrono::milliseconds(25));
+  }
+  std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  kill(-child, SIGINT);
+  int status = 0;
+  waitpid(child, &status, 0);
+  ASSERT_TRUE(started);
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 128 + SIGINT) << status;
+  EXPECT_FALSE(fs::exists(path("v.mp4")));
+  EXPECT_TRUE(temporariesIn(dir_.string()).empty());
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "cli/progress_bar.h"
+#include "cli/video_output.h"
 #include "core/input_error.h"
 #include "core/stop_signals.h"
 #include "image/image_io.h"
@@ -124,6 +125,7 @@ int renderSerialWithCheckpoint(const RenderOptions& o, const Scene& scene,
   const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
   if (!sequence) writeImage(image, scene.image.output);
   removeCheckpoint(o.checkpointPath);
+  if (sequence) finishSequence(o, scene.image.output, frames);
   if (!o.quiet) {
     std::printf("%s: %dx%d, %d spp, DRT %d, %.3f s, %llu rays; %llu pixels from the checkpoint\n",
                 scene.image.output.c_str(), scene.image.width, scene.image.height,

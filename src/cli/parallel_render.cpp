@@ -2,6 +2,7 @@
 
 #include "cli/flag_checks.h"
 #include "cli/run_page_output.h"
+#include "cli/video_output.h"
 
 #include <cstdio>
 #include <cstdlib>
@@ -82,21 +83,6 @@ std::optional<double> serialSeconds(const RenderOptions& o, const Scene& scene,
 }
 
 }  // namespace
-
-std::string videoHint(const std::string& pattern, const FrameSequence& frames) {
-  const size_t slash = pattern.find_last_of('/');
-  const size_t start = pattern.find('#', slash == std::string::npos ? 0 : slash + 1);
-  size_t end = start;
-  while (end < pattern.size() && pattern[end] == '#') ++end;
-  const std::string glob = pattern.substr(0, start) + "*" + pattern.substr(end);
-  char rate[32];
-  std::snprintf(rate, sizeof rate, "%.6g", frames.fps / static_cast<double>(frames.step));
-  // Single quotes keep the shell from expanding the glob: ffmpeg does, in name order, which
-  // the zero-padded numbers keep in frame order.
-  return std::string("to make a video of the frames (Debian's ffmpeg):\n  ffmpeg -framerate ") +
-         rate + " -pattern_type glob -i '" + glob +
-         "' -c:v libx264 -pix_fmt yuv420p video.mp4\n";
-}
 
 void addParallelOptions(CLI::App& cmd, RenderOptions& o) {
   const std::string parallel = "Parallel";
@@ -243,8 +229,8 @@ int finishParallelRun(const RenderOptions& o, const Scene& scene, const Parallel
   }
   // The image holds every pixel now: the checkpoint has nothing more to give.
   if (!o.checkpointPath.empty()) removeCheckpoint(o.checkpointPath);
+  if (sequence) finishSequence(o, scene.image.output, frames);
   if (!o.quiet && sequence) {
-    std::printf("%s", videoHint(scene.image.output, frames).c_str());
     std::printf("%s: %llu frames (%lld-%lld:%lld) of %dx%d, %d spp, DRT %d\n%s",
                 scene.image.output.c_str(), static_cast<unsigned long long>(frames.count()),
                 static_cast<long long>(frames.first), static_cast<long long>(frames.last),

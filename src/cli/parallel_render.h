@@ -19,9 +19,6 @@ void addParallelOptions(CLI::App& cmd, RenderOptions& o);
 // True when this process was started by mpirun/mpiexec (Open MPI, MPICH or PMIx launchers).
 bool launchedByMpirun();
 
-// The ffmpeg command that makes a video of a sequence's frames written to `pattern`, as the
-// run prints it: frames at --fps over the step (so the video keeps the animation's speed).
-std::string videoHint(const std::string& pattern, const FrameSequence& frames);
 
 ParallelOptions toParallelOptions(const RenderOptions& o, int workers);
 // Writes the image, the report, the trace and the ownership map the options ask for, and

@@ -13,6 +13,7 @@
 #include "cli/parallel_render.h"
 #include "cli/progress_bar.h"
 #include "cli/run_page_output.h"
+#include "cli/video_output.h"
 #include "core/input_error.h"
 #include "image/atomic_file.h"
 #include "image/image_io.h"
@@ -123,6 +124,7 @@ void checkOutputs(const RenderOptions& o, const Scene& scene) {
                                                          {"--trace", o.tracePath},
                                                          {"--ownership", o.ownershipPath},
                                                          {"--html", o.htmlPath},
+                                                         {"--video", o.videoPath},
                                                          {"--checkpoint", o.checkpointPath}};
   std::vector<std::pair<const char*, fs::path>> seen;
   for (const auto& [flag, path] : outputs) {
@@ -163,13 +165,14 @@ int renderSerialSequence(const RenderOptions& o, const Scene& scene,
                   static_cast<unsigned long long>(frames.count()), path.c_str(), stats.seconds);
     }
   }
-  if (!o.quiet) std::printf("%s", videoHint(scene.image.output, frames).c_str());
+  finishSequence(o, scene.image.output, frames);
   if (!o.quiet) {
     std::printf("%llu frames of %dx%d, %d spp, DRT %d: %.3f s rendering, %.3f s preparing "
-                "frames, %llu rays\n",
+                "frames (%.3f s the first, with the meshes' trees), %llu rays\n",
                 static_cast<unsigned long long>(frames.count()), scene.image.width,
                 scene.image.height, settings.samplesPerPixel, settings.drtRate, total.seconds,
-                renderer.buildSeconds(), static_cast<unsigned long long>(total.rays));
+                renderer.buildSeconds(), renderer.firstBuildSeconds(),
+                static_cast<unsigned long long>(total.rays));
   }
   return 0;
 }
@@ -240,6 +243,7 @@ int runRender(const RenderOptions& o) {
       Scene scene = loadScene(o.scene);
       const RenderSettings settings = resolveSettings(o, scene);
       checkOutputs(o, scene);
+      checkVideo(o, framesOf(o));
       return std::pair{std::move(scene), settings};
     });
   }
@@ -257,6 +261,7 @@ int runRender(const RenderOptions& o) {
     }
   }
   checkOutputs(o, scene);
+  checkVideo(o, framesOf(o));
   if (parallel) return renderParallelLocal(o, scene, settings);
   if (!o.checkpointPath.empty()) return renderSerialWithCheckpoint(o, scene, settings);
   if (o.resume) throw InputError("--resume needs --checkpoint FILE: the checkpoint to resume");
@@ -306,6 +311,12 @@ Action addRenderCommand(CLI::App& app, const std::string& commandLine) {
       ->group(animation);
   cmd->add_option("--fps", o->fps, "Frames per second: frame N is the scene at N / FPS seconds")
       ->capture_default_str()
+      ->group(animation);
+  cmd->add_option("--video", o->videoPath,
+                  "Once every frame is written, make them into a video FILE with ffmpeg at the "
+                  "animation's speed (.mp4, .mkv, .mov: H.264; .webm, .gif, ...: ffmpeg's "
+                  "choice)")
+      ->check(fileName())
       ->group(animation);
   cmd->add_option("--cost-map", o->costMapPath,
                   "Serial render: also write each pixel's render time to FILE, the cost map "

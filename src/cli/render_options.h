@@ -29,6 +29,7 @@ struct RenderOptions {
   std::string frames;         // --frames A-B[:STEP]: an animation's frames as one job
   std::string frame;          // --frame N: one frame of it
   double fps = 24;            // --fps: frame N is at N / fps seconds
+  std::string videoPath;      // --video FILE: the sequence's frames made into a video
 
   // Parallel rendering.
   std::optional<int> workers;              // local driver: worker threads

@@ -1,6 +1,7 @@
 #include "core/subprocess.h"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -8,6 +9,7 @@
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
+#include <exception>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -38,7 +40,8 @@ std::string findProgram(const std::string& program) {
 }
 
 int runProgram(const std::string& program, const std::vector<std::string>& args,
-               const fs::path& directory, const fs::path& logFile) {
+               const fs::path& directory, const fs::path& logFile,
+               const std::function<bool(int)>& feedStdin) {
   std::vector<std::string> argvStrings = {program};
   argvStrings.insert(argvStrings.end(), args.begin(), args.end());
   std::vector<char*> argv;
@@ -52,18 +55,26 @@ int runProgram(const std::string& program, const std::vector<std::string>& args,
   if (::pipe2(report, O_CLOEXEC) != 0) {
     throw std::runtime_error(cannot + "pipe: " + std::strerror(errno));
   }
-  const pid_t pid = ::fork();
-  if (pid < 0) {
+  int input[2] = {-1, -1};  // the child's stdin when fed
+  if (feedStdin && ::pipe2(input, O_CLOEXEC) != 0) {
     const int error = errno;
     ::close(report[0]);
     ::close(report[1]);
+    throw std::runtime_error(cannot + "pipe: " + std::strerror(error));
+  }
+  const pid_t pid = ::fork();
+  if (pid < 0) {
+    const int error = errno;
+    for (int fd : {report[0], report[1], input[0], input[1]}) {
+      if (fd >= 0) ::close(fd);
+    }
     throw std::runtime_error(cannot + "fork: " + std::strerror(error));
   }
   if (pid == 0) {  // child: only async-signal-safe calls from here on
     ::close(report[0]);
     int error = 0;
     const int log = ::open(logFile.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
-    const int devNull = ::open("/dev/null", O_RDONLY);
+    const int devNull = input[0] >= 0 ? input[0] : ::open("/dev/null", O_RDONLY);
     if (log < 0 || devNull < 0 || ::chdir(directory.c_str()) != 0 || ::dup2(devNull, 0) < 0 ||
         ::dup2(log, 1) < 0 || ::dup2(log, 2) < 0) {
       error = errno;
@@ -76,6 +87,21 @@ int runProgram(const std::string& program, const std::vector<std::string>& args,
     ::_exit(127);
   }
   ::close(report[1]);
+  std::exception_ptr feedFailure;
+  if (input[0] >= 0) {
+    ::close(input[0]);
+    // SIGPIPE ignored while feeding: a child that stops reading gives EPIPE, not our death.
+    struct sigaction ignore {}, previous {};
+    ignore.sa_handler = SIG_IGN;
+    ::sigaction(SIGPIPE, &ignore, &previous);
+    try {
+      feedStdin(input[1]);
+    } catch (...) {
+      feedFailure = std::current_exception();
+    }
+    ::close(input[1]);
+    ::sigaction(SIGPIPE, &previous, nullptr);
+  }
   int childError = 0;
   ssize_t got;
   do {
@@ -89,6 +115,7 @@ int runProgram(const std::string& program, const std::vector<std::string>& args,
   if (got == static_cast<ssize_t>(sizeof childError)) {
     throw std::runtime_error(cannot + std::strerror(childError));
   }
+  if (feedFailure) std::rethrow_exception(feedFailure);
   return status;
 }
 

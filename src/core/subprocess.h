@@ -1,9 +1,11 @@
 #pragma once
-// Running helper programs (POV-Ray, gnuplot) as child processes: fork/exec with an argument
-// vector, no shell, so no quoting; stdin from /dev/null, stdout and stderr to a log file.
+// Running helper programs (POV-Ray, gnuplot, ffmpeg) as child processes: fork/exec with an
+// argument vector, no shell, so no quoting; stdin from /dev/null (or a pipe the caller
+// feeds), stdout and stderr to a log file.
 // Thread-safe: nothing is shared between calls. Blocks until the child exits.
 
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -17,8 +19,13 @@ std::string findProgram(const std::string& program);
 // `directory`, its stdout and stderr to `logFile`. Returns the wait status (see
 // describeExit). Throws std::runtime_error "cannot run '<program>': <reason>" when it cannot
 // be started.
+// With `feedStdin`, the child's stdin is a pipe: feedStdin(fd) writes to it (returning
+// false to stop early) and the pipe is closed after; a child that stops reading makes the
+// writes fail with EPIPE, never a SIGPIPE to this process. Exceptions from feedStdin pass
+// on once the child has been waited for.
 int runProgram(const std::string& program, const std::vector<std::string>& args,
-               const std::filesystem::path& directory, const std::filesystem::path& logFile);
+               const std::filesystem::path& directory, const std::filesystem::path& logFile,
+               const std::function<bool(int)>& feedStdin = {});
 
 // "" for a clean exit (code 0), else "exited with code N" or "was killed by signal N".
 std::string describeExit(int waitStatus);

@@ -74,7 +74,9 @@ void removeStaleTemporaries(const std::string& path) {
   for (const fs::directory_entry& entry : entries) {
     const std::string name = entry.path().filename().string();
     if (!name.starts_with(prefix)) continue;
-    const std::string rest = name.substr(prefix.size());
+    std::string rest = name.substr(prefix.size());
+    // A TemporaryFile keeps its extension: ".tmp-PID-N.mp4".
+    if (const size_t dot = rest.find('.'); dot != std::string::npos) rest.resize(dot);
     const size_t dash = rest.find('-');
     if (dash == 0 || dash == std::string::npos || dash > 9 ||
         rest.find_first_not_of("0123456789-") != std::string::npos) {
@@ -90,12 +92,13 @@ void removeStaleTemporaries(const std::string& path) {
 // Creates the temporary file exclusively ("x"), so a stale file of the same name left by a
 // crashed process with a recycled pid is never reused: we just move on to the next name.
 // `slot` is its entry in the table of files to remove on a signal.
-std::FILE* openTemporary(const std::string& path, std::string& tempPath, int& slot) {
+std::FILE* openTemporary(const std::string& path, std::string& tempPath, int& slot,
+                         const std::string& extension = "") {
   static std::atomic<uint64_t> counter{0};
   removeStaleTemporaries(path);
   const std::string prefix = path + ".tmp-" + std::to_string(::getpid()) + "-";
   for (int attempt = 0; attempt < 100; ++attempt) {
-    tempPath = prefix + std::to_string(counter.fetch_add(1, std::memory_order_relaxed));
+    tempPath = prefix + std::to_string(counter.fetch_add(1, std::memory_order_relaxed)) + extension;
     // Registered before it exists, so that no signal can leave it behind.
     slot = registerTemporary(tempPath);
     if (std::FILE* f = std::fopen(tempPath.c_str(), "wbx")) return f;
@@ -107,6 +110,22 @@ std::FILE* openTemporary(const std::string& path, std::string& tempPath, int& sl
 }
 
 }  // namespace
+
+TemporaryFile::TemporaryFile(const std::string& path, const std::string& extension)
+    : target_(path) {
+  std::FILE* file = openTemporary(path, tempPath_, slot_, extension);
+  std::fclose(file);
+}
+
+TemporaryFile::~TemporaryFile() {
+  if (!committed_) std::remove(tempPath_.c_str());
+  unregisterTemporary(slot_);
+}
+
+void TemporaryFile::commit() {
+  if (std::rename(tempPath_.c_str(), target_.c_str()) != 0) throwCannotWrite(target_, errno);
+  committed_ = true;
+}
 
 void writeFileAtomically(const std::string& path,
                          const std::function<void(std::FILE*)>& writeContents) {

@@ -37,6 +37,28 @@ void writeFileAtomically(const std::string& path,
 // checking every output of a run before the run starts. Leaves `path` itself untouched.
 void checkWritable(const std::string& path);
 
+// A temporary file beside `path` for another program to fill (ffmpeg writing a video), named
+// `path + ".tmp-<pid>-<counter>" + extension` so that the program can tell the format from
+// its name. It is created empty, removed by the signal handlers and by the destructor, and
+// as a stale file by later writes beside `path` if this process dies; commit() renames it
+// onto `path` (throwing InputError "cannot write ..." on failure). Not copyable.
+class TemporaryFile {
+ public:
+  TemporaryFile(const std::string& path, const std::string& extension);
+  ~TemporaryFile();
+  TemporaryFile(const TemporaryFile&) = delete;
+  TemporaryFile& operator=(const TemporaryFile&) = delete;
+
+  const std::string& path() const { return tempPath_; }
+  void commit();
+
+ private:
+  std::string target_;
+  std::string tempPath_;
+  int slot_ = -1;
+  bool committed_ = false;
+};
+
 // Installs handlers for SIGTERM, SIGINT and SIGHUP that remove this process's temporary files
 // and _exit(128 + signal). For a program's main(), once, before any thread starts.
 void removeTemporaryFilesOnSignals();
