@@ -25,8 +25,10 @@ const Renderer& FrameRenderer::frame(uint64_t ordinal) {
   world_ = std::move(world);
   renderer_ = std::make_unique<Renderer>(*world_, settings_);
   current_ = ordinal;
-  ++framesBuilt_;
-  buildSeconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (++framesBuilt_ == 1) firstBuildSeconds_ = seconds;
+  buildSeconds_ += seconds;
   return *renderer_;
 }
 

@@ -40,9 +40,11 @@ class FrameRenderer {
   uint64_t render(const TaskSet& tasks, int threads, std::vector<Color>& colors,
                   double* cpuSeconds = nullptr);
 
-  // What preparing frames has cost: how many were built and their seconds in all.
+  // What preparing frames has cost: how many were built and their seconds in all, and the
+  // first build's seconds (it builds the meshes' trees, which later frames keep).
   uint64_t framesBuilt() const { return framesBuilt_; }
   double buildSeconds() const { return buildSeconds_; }
+  double firstBuildSeconds() const { return firstBuildSeconds_; }
 
   // The tasks of `tasks` that fall in each frame, as pixel indices of that frame, in order:
   // calls f(ordinal, pixels) for each frame met (a frame may be met again after another).
@@ -59,6 +61,7 @@ class FrameRenderer {
   std::unique_ptr<Renderer> renderer_;
   uint64_t framesBuilt_ = 0;
   double buildSeconds_ = 0;
+  double firstBuildSeconds_ = 0;
 };
 
 template <typename F>

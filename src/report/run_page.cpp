@@ -329,7 +329,8 @@ std::string timelineSection(const json& r, const std::vector<std::string>& colou
        "above it is time lost to waiting. Below: one row per " +
        std::string(t.value("aggregated", false) ? "group of workers" : "worker") +
        ". Hover anything for details.</p>\n";
-  s += "<div class=\"timeline-box\">" + timelineSvg(t, colours) + "</div>\n";
+  const json frames = r.contains("frames") ? r["frames"] : json();
+  s += "<div class=\"timeline-box\">" + timelineSvg(t, colours, frames) + "</div>\n";
   s += "<div class=\"legend\"><span>" + chip("#4e79a7") +
        "rendering (in the worker's colour)</span>"
        "<span><span class=\"chip setup-chip\"></span>setting up (scene, speed index)</span>"
@@ -339,7 +340,12 @@ std::string timelineSection(const json& r, const std::vector<std::string>& colou
        "<span><span class=\"chip lost-chip\"></span>lost</span>"
        "<span><span class=\"chip absent-chip\"></span>not there yet (joined later)</span>"
        "<span><span class=\"chip mark-chip\"></span>other events (reissued tasks, "
-       "...)</span></div>\n";
+       "...)</span>" +
+       std::string(frames.is_array() && !frames.empty()
+                       ? "<span><span class=\"chip frame-chip\"></span>a frame complete "
+                         "(labelled with its number)</span>"
+                       : "") +
+       "</div>\n";
   if (t.value("aggregated", false)) {
     s += "<p class=\"note\">" + formatCount(t.value("workers", 0)) +
          " workers are too many to draw one by one: each row stands for " +

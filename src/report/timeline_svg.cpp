@@ -51,7 +51,8 @@ std::string rowLabel(int first, int last) {
 
 }  // namespace
 
-std::string timelineSvg(const json& timeline, const std::vector<std::string>& colours) {
+std::string timelineSvg(const json& timeline, const std::vector<std::string>& colours,
+                        const json& frames) {
   if (!timeline.is_object() || !timeline.contains("rows") || timeline["rows"].empty()) return "";
   const json& rows = timeline["rows"];
   const int ticks = std::max(1, timeline.value("ticks", 1000));
@@ -205,6 +206,31 @@ std::string timelineSvg(const json& timeline, const std::vector<std::string>& co
            escapeHtml(mark.value("label", std::string())) + " (master) at " +
            formatSeconds(mark.value("t_s", 0.0)) + "</title></path>";
     }
+  }
+
+  // Frame boundaries: where each frame of a sequence was complete. Every frame gets its line;
+  // labels only where they do not crowd one another (about 40 px apart).
+  if (frames.is_array() && !frames.empty()) {
+    s += "<g class=\"frames\">";
+    double lastLabel = -1e9;
+    for (const json& f : frames) {
+      if (!f.is_object() || !f.contains("completed_s") || !f["completed_s"].is_number()) continue;
+      const double t = f["completed_s"].get<double>();
+      const std::string name =
+          f.contains("frame") && f["frame"].is_number_integer()
+              ? "frame " + std::to_string(f["frame"].get<long long>())
+              : std::string("a frame");
+      const double px = xs(t);
+      s += "<path d=\"M" + num(px) + " " + num(rowsTop - 4) + "V" + num(rowsBottom) +
+           "\" class=\"frame-line\"><title>" + escapeHtml(name) + " complete at " +
+           formatSeconds(t) + "</title></path>";
+      if (px - lastLabel >= 40) {
+        s += "<text x=\"" + num(px) + "\" y=\"" + num(rowsTop - 5) + "\" class=\"frame-label\">" +
+             escapeHtml(name.substr(name.rfind(' ') + 1)) + "</text>";
+        lastLabel = px;
+      }
+    }
+    s += "</g>\n";
   }
 
   // Time axis.

@@ -1,6 +1,10 @@
 #include "report/timeline.h"
 
+#include "report/timeline_svg.h"
+
 #include <gtest/gtest.h>
+
+#include <string>
 
 namespace prt {
 namespace {
@@ -72,6 +76,30 @@ TEST(Timeline, MarksPerRowAreCapped) {
   const json t = timelineJson(e, 1, 3.0, {100, 64, 100});
   EXPECT_EQ(t["rows"][0]["marks"].size(), 100u);
   EXPECT_EQ(t["marks_dropped"], 150);
+}
+
+size_t countOf(const std::string& text, const std::string& what) {
+  size_t n = 0;
+  for (size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
+
+TEST(TimelineSvg, FrameBoundariesAreDrawnEachAndLabelledWhereTheyFit) {
+  const json t = timelineJson(twoWorkers(), 2, 10.0, {100, 64, 100, 100});
+  EXPECT_EQ(countOf(timelineSvg(t, {"#ff0000", "#00ff00"}), "frame-line"), 0u) << "a still";
+  // 100 frames in 10 s: a line for each, far fewer labels (the plot is 900 px wide).
+  json frames = json::array();
+  for (int f = 0; f < 100; ++f) {
+    frames.push_back({{"frame", f + 1}, {"pixels", 10}, {"completed_s", 0.1 * (f + 1)}});
+  }
+  frames.push_back({{"frame", 999}, {"completed_s", "not a number"}});  // skipped, no throw
+  const std::string svg = timelineSvg(t, {"#ff0000", "#00ff00"}, frames);
+  EXPECT_EQ(countOf(svg, "class=\"frame-line\""), 100u);
+  const size_t labels = countOf(svg, "class=\"frame-label\"");
+  EXPECT_GE(labels, 10u);
+  EXPECT_LE(labels, 25u);
+  EXPECT_NE(svg.find("frame 1 complete at"), std::string::npos);
+  EXPECT_NE(svg.find(">1</text>"), std::string::npos) << "the first frame is labelled";
 }
 
 }  // namespace
