@@ -119,6 +119,11 @@ void addParallelOptions(CLI::App& cmd, RenderOptions& o) {
                  "for the adaptive strategies, hanoi for the rest)")
       ->capture_default_str()
       ->group(parallel);
+  cmd.add_option("--batch-seconds", o.batchSeconds,
+                 "Batches grow past --batch pixels to what a worker renders in S seconds at its "
+                 "last batch's rate (at most 64 times --batch; 0: every batch --batch pixels)")
+      ->capture_default_str()
+      ->group(parallel);
   cmd.add_option("--batch", o.batchPixels, "Pixels a worker renders between returning results")
       ->check(CLI::Range(1ull, 1ull << 28))  // no image has more pixels; "-1" would wrap
       ->capture_default_str()
@@ -199,6 +204,7 @@ ParallelOptions toParallelOptions(const RenderOptions& o, int workers) {
       automatic ? (runsSpeedIndexByDefault(p.strategy) ? SpeedIndexKind::Hanoi : SpeedIndexKind::None)
                 : parseSpeedIndexKind(o.speedIndex);
   p.batchPixels = o.batchPixels;
+  p.batchSeconds = o.batchSeconds;
   p.threads = o.threads;
   p.workerTimeoutSeconds = o.workerTimeoutSeconds;
   p.endgame = o.endgame == "on";

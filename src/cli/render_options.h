@@ -40,6 +40,7 @@ struct RenderOptions {
   std::string acceptWorkersPath;           // --accept-workers FILE (MPI)
   std::string speedIndex = "auto";         // what workers measure: auto | hanoi | probe | none
   unsigned long long batchPixels = 128;    // pixels per returned batch
+  double batchSeconds = 0.03;              // batches grow to this much work
   double workerTimeoutSeconds = 5;         // the lease: silence before a worker is lost
   std::string endgame = "off";             // on | off: copies of the last tasks
   std::string checkpointPath;              // --checkpoint FILE

@@ -11,6 +11,7 @@
 #include "core/machine.h"
 #include "image/atomic_file.h"
 #include "image/image_io.h"
+#include "scene/number_text.h"
 
 namespace prt::cli {
 
@@ -154,6 +155,7 @@ void writeRenderReportAndPage(const RenderOptions& o, const Scene& scene, const 
   context.parameters =
       strategyParameters(o.strategyFlags.name(), strategyOptionsFrom(o.strategyFlags));
   context.parameters.emplace_back("batch_pixels", std::to_string(o.batchPixels));
+  context.parameters.emplace_back("batch_seconds", formatDouble(o.batchSeconds));
   context.parameters.emplace_back("speed_index", o.speedIndex);
   std::string slowdowns;
   for (double k : o.slowdowns) {

@@ -44,6 +44,7 @@ struct SimulateOptions {
   uint64_t frames = 1;                  // --frames N: a sequence of N frames, the map reused
   std::optional<double> serialSeconds;  // rescale the map to this total; synthetic default 60
   unsigned long long batchPixels = 128;
+  double batchSeconds = 0;
   double batchOverheadMicroseconds = 0;
   double speedIndexSeconds = 0.08;
   std::vector<double> speedIndices;  // per worker, replaying a real run's measurements
@@ -115,6 +116,7 @@ int runSimulate(const SimulateOptions& o) {
   options.speedIndexRun = o.speedIndexRun == "auto" ? runsSpeedIndexByDefault(options.strategy)
                                                     : o.speedIndexRun == "on";
   options.batchPixels = o.batchPixels;
+  options.batchSeconds = o.batchSeconds;
   options.endgame = o.endgame == "on";
   options.batchOverheadSeconds = o.batchOverheadMicroseconds * 1e-6;
   options.baseSpeedIndexSeconds = o.speedIndexSeconds;
@@ -267,6 +269,12 @@ Action addSimulateCommand(CLI::App& app, const std::string& commandLine) {
       ->check(positiveUpTo(1e9, "seconds"))
       ->group(model);
   cmd->add_option("--batch", o->batchPixels, "Pixels a worker renders between returning results")
+      ->capture_default_str()
+      ->group(model);
+  cmd->add_option("--batch-seconds", o->batchSeconds,
+                  "Batches grow past --batch pixels to what a worker renders in S simulated "
+                  "seconds at its last batch's rate, as prt render's do (its default: 0.03); "
+                  "0 keeps every batch --batch pixels")
       ->capture_default_str()
       ->group(model);
   cmd->add_option("--batch-overhead-us", o->batchOverheadMicroseconds,

@@ -1,11 +1,14 @@
 #include "cluster/worker.h"
 
+#include <algorithm>
+
 #include "core/check.h"
 
 namespace prt {
 
 Worker::Worker(int id, WorkerOptions options) : id_(id), options_(options) {
   PRT_CHECK(options_.batchPixels >= 1);
+  PRT_CHECK(options_.batchSeconds >= 0);
 }
 
 Outbox Worker::setupDone(double speedIndexSeconds) {
@@ -16,7 +19,13 @@ Outbox Worker::setupDone(double speedIndexSeconds) {
 
 TaskSet Worker::nextBatch() {
   PRT_CHECK(hasWork());
-  return queue_.takeFront(options_.batchPixels);
+  uint64_t size = options_.batchPixels;
+  if (options_.batchSeconds > 0 && pixelsPerSecond_ > 0) {
+    const double wanted = pixelsPerSecond_ * options_.batchSeconds;
+    const double most = static_cast<double>(size) * WorkerOptions::kMaxBatchGrowth;
+    if (wanted > static_cast<double>(size)) size = static_cast<uint64_t>(std::min(wanted, most));
+  }
+  return queue_.takeFront(size);
 }
 
 Outbox Worker::batchDone(const TaskSet& batch, std::vector<float> rgb, double computeSeconds) {
@@ -25,6 +34,9 @@ Outbox Worker::batchDone(const TaskSet& batch, std::vector<float> rgb, double co
 }
 
 Outbox Worker::finishBatch(const TaskSet& batch, std::vector<float> rgb, double computeSeconds) {
+  if (computeSeconds > 0 && !batch.empty()) {
+    pixelsPerSecond_ = static_cast<double>(batch.size()) / computeSeconds;
+  }
   Outbox out;
   if (!batch.empty()) {
     out.push_back({kMaster, ResultsMsg{batch, std::move(rgb), computeSeconds}});

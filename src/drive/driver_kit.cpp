@@ -184,6 +184,7 @@ WorkerExit runWorkerSide(Transport& net, int id, const ParallelOptions& options,
                       options.slowdownChangesOf(id), threads);
   WorkerLoopOptions loop;
   loop.batchPixels = options.batchPixels;
+  loop.batchSeconds = options.batchSeconds;
   loop.heartbeatSeconds = heartbeatSecondsFor(options.workerTimeoutSeconds);
   loop.masterTimeoutSeconds = options.workerTimeoutSeconds;
   for (const FaultInjection& f : options.faults) {

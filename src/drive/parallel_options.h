@@ -27,6 +27,7 @@ struct ParallelOptions {
   std::vector<double> slowdowns;       // per worker, each >= 1; empty: all 1
   std::vector<SpeedChange> slowdownChanges;  // --slowdown-at: factors >= 1 from a time on
   uint64_t batchPixels = 128;          // pixels per returned batch of results, per thread
+  double batchSeconds = 0.03;          // batches grow to this much work (WorkerOptions)
   int threads = 1;                     // rendering threads of each worker; 0: all the CPUs
                                        // its affinity allows (mpirun --bind-to sets it)
   double workerTimeoutSeconds = 5;     // the lease: silence (not even a heartbeat) after which

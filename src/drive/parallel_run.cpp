@@ -65,6 +65,9 @@ void validateParallelOptions(const ParallelOptions& o, uint64_t pixelCount) {
     }
   }
   if (o.batchPixels < 1) throw InputError("--batch must be at least 1");
+  if (!(o.batchSeconds >= 0 && o.batchSeconds <= 60)) {
+    throw InputError("--batch-seconds must be in [0, 60] (0: batches of --batch pixels)");
+  }
   if (!(o.workerTimeoutSeconds >= 0.1) || !(o.workerTimeoutSeconds <= 86400)) {
     throw InputError("--worker-timeout must be between 0.1 and 86400 seconds (got " +
                      formatNumber(o.workerTimeoutSeconds) + ")");

@@ -26,7 +26,8 @@ class WorkerLoop {
         options_(options),
         faults_(faults),
         // A batch keeps every thread busy: batchPixels for each of them.
-        worker_(id, WorkerOptions{options.batchPixels * static_cast<uint64_t>(engine.threads())}) {}
+        worker_(id, WorkerOptions{options.batchPixels * static_cast<uint64_t>(engine.threads()),
+                                  options.batchSeconds}) {}
 
   WorkerExit run() {
     try {

@@ -34,6 +34,7 @@ struct WorkerFaultActions {
 
 struct WorkerLoopOptions {
   uint64_t batchPixels = 128;         // pixels per returned batch of results (per thread)
+  double batchSeconds = 0;            // batches grow to this much work (WorkerOptions)
   double heartbeatSeconds = 1.0;      // a HeartbeatMsg at least this often
   double masterTimeoutSeconds = 5.0;  // silence from the master after which the worker stops
   std::optional<FaultInjection> fault;

@@ -95,6 +95,7 @@ RunReport runSimulated(const CostMap& costs, const ParallelOptions& options,
   }
   sim.joins = options.joins;
   sim.batchPixels = options.batchPixels;
+  sim.batchSeconds = options.batchSeconds;
   sim.baseSpeedIndexSeconds = masterSpeedIndexSeconds;
   sim.speedIndexSeconds = workerSpeedIndices;
   sim.speedIndexRun = options.speedIndexKind != SpeedIndexKind::None;

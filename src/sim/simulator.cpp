@@ -23,8 +23,8 @@ struct Mail {
 };
 
 struct SimWorker {
-  SimWorker(int id, uint64_t batchPixels, double speed_, double speedIndex_)
-      : machine(id, WorkerOptions{batchPixels}), speed(speed_), speedIndex(speedIndex_) {}
+  SimWorker(int id, WorkerOptions options, double speed_, double speedIndex_)
+      : machine(id, options), speed(speed_), speedIndex(speedIndex_) {}
   Worker machine;
   double speed;       // relative to the cost map's machine
   double speedIndex;  // seconds; what it measures during setup
@@ -66,7 +66,8 @@ class Simulation {
       const double speedIndex = options.speedIndexSeconds.empty()
                                     ? options.baseSpeedIndexSeconds / speed
                                     : options.speedIndexSeconds[i];
-      workers_.emplace_back(w, options.batchPixels, speed, speedIndex);
+      workers_.emplace_back(w, WorkerOptions{options.batchPixels, options.batchSeconds}, speed,
+                            speedIndex);
       workers_.back().speedChanges = changesOf(options.speedChanges, w);
     }
   }
@@ -287,6 +288,9 @@ void validateSimulationOptions(const SimulationOptions& o, uint64_t pixelCount) 
                      std::to_string(pixelCount) + ")");
   }
   if (o.batchPixels < 1) throw InputError("--batch must be at least 1");
+  if (!(o.batchSeconds >= 0 && o.batchSeconds <= 60)) {
+    throw InputError("--batch-seconds must be in [0, 60] (0: batches of --batch pixels)");
+  }
   if (!(o.batchOverheadSeconds >= 0) || !std::isfinite(o.batchOverheadSeconds)) {
     throw InputError("--batch-overhead-us must be finite and >= 0");
   }
