@@ -124,9 +124,8 @@ void finishSequence(const RenderOptions& o, const std::string& pattern,
   std::string problem;
   const int status = runProgram(ffmpeg, args, fs::current_path(), log.path(), [&](int fd) {
     for (uint64_t i = 0; i < frames.count(); ++i) {
-      if (!copyFileTo(framePath(pattern, frames.number(i)), fd, problem)) return false;
+      if (!copyFileTo(framePath(pattern, frames.number(i)), fd, problem)) return;
     }
-    return true;
   });
   const std::string exit = describeExit(status);
   if (!exit.empty() || !problem.empty()) {

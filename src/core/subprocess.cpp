@@ -41,7 +41,7 @@ std::string findProgram(const std::string& program) {
 
 int runProgram(const std::string& program, const std::vector<std::string>& args,
                const fs::path& directory, const fs::path& logFile,
-               const std::function<bool(int)>& feedStdin) {
+               const std::function<void(int)>& feedStdin) {
   std::vector<std::string> argvStrings = {program};
   argvStrings.insert(argvStrings.end(), args.begin(), args.end());
   std::vector<char*> argv;

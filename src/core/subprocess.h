@@ -19,13 +19,13 @@ std::string findProgram(const std::string& program);
 // `directory`, its stdout and stderr to `logFile`. Returns the wait status (see
 // describeExit). Throws std::runtime_error "cannot run '<program>': <reason>" when it cannot
 // be started.
-// With `feedStdin`, the child's stdin is a pipe: feedStdin(fd) writes to it (returning
-// false to stop early) and the pipe is closed after; a child that stops reading makes the
+// With `feedStdin`, the child's stdin is a pipe: feedStdin(fd) writes to it and the pipe
+// is closed after; a child that stops reading makes the
 // writes fail with EPIPE, never a SIGPIPE to this process. Exceptions from feedStdin pass
 // on once the child has been waited for.
 int runProgram(const std::string& program, const std::vector<std::string>& args,
                const std::filesystem::path& directory, const std::filesystem::path& logFile,
-               const std::function<bool(int)>& feedStdin = {});
+               const std::function<void(int)>& feedStdin = {});
 
 // "" for a clean exit (code 0), else "exited with code N" or "was killed by signal N".
 std::string describeExit(int waitStatus);
