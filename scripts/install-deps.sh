@@ -6,6 +6,8 @@ set -euo pipefail
 packages=(
   build-essential cmake ninja-build pkg-config git
   libcli11-dev nlohmann-json3-dev libpng-dev libtbb-dev libassimp-dev
+  libopenexr-dev libjpeg-dev  # .exr and .jpg images
+  libcpp-httplib-dev  # prt render --serve: the live page
   libtinygltf-dev libstb-dev  # glTF 2.0 model files, and texture images
   libgtest-dev libgmock-dev libbenchmark-dev
   openmpi-bin libopenmpi-dev

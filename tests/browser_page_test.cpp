@@ -7,9 +7,15 @@
 // start.
 
 #include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
+#include <regex>
 #include <sstream>
+#include <thread>
 
 #include "core/subprocess.h"
 #include "image/image_io.h"
@@ -56,7 +62,7 @@ class BrowserPageTest : public e2e::ScratchDirTest {
                                      "--enable-logging=stderr",
                                      "--v=0",
                                      mode,
-                                     "file://" + page};
+                                     page.rfind("http", 0) == 0 ? page : "file://" + page};
     const std::string log = path("chromium.log");
     const int exit = runProgram(findProgram("timeout"), args, path(""), log);
     if (status) {
@@ -140,6 +146,52 @@ TEST_F(BrowserPageTest, LargeSimulatedRunAndItsSavedReportOpen) {
     // The group row holding worker 700 (rows of 16: 688-703) is highlighted.
     EXPECT_NE(dom.find("class=\"row sel\" data-first=\"688\""), std::string::npos) << page;
   }
+}
+
+// The live page of a running render (--serve): Chromium loads it while the render runs, its
+// script polls the status and draws a row per worker; the render then ends as usual.
+TEST_F(BrowserPageTest, LivePageOfARunningRenderUpdatesAndShowsTheWorkers) {
+  SKIP_IF_NO_BROWSER();
+  const std::string errors = path("render.err");
+  const std::string command = "exec " + e2e::prtBinary() + " render " +
+                              std::string(PRT_SOURCE_DIR) +
+                              "/scenes/complex.scene --case D --width 160 --height 120 "
+                              "--workers 2 --slowdown 20,20 --serve 127.0.0.1:0 -o " +
+                              path("live.png") + " >/dev/null 2>" + errors;
+  const pid_t child = fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    setpgid(0, 0);
+    execl("/bin/sh", "sh", "-c", command.c_str(), nullptr);
+    _exit(127);
+  }
+  setpgid(child, child);
+  std::string url;
+  const std::regex address("live page at (http://127\\.0\\.0\\.1:[0-9]+/)");
+  for (int i = 0; i < 400 && url.empty(); ++i) {
+    std::smatch m;
+    const std::string text = readWholeFile(errors);
+    if (std::regex_search(text, m, address)) url = m[1];
+    if (url.empty()) std::this_thread::sleep_for(std::chrono::milliseconds(25));
+  }
+  if (url.empty()) kill(-child, SIGKILL);
+  ASSERT_FALSE(url.empty()) << readWholeFile(errors);
+
+  const std::string dom = chromium(url, "--dump-dom");
+  int status = 0;
+  waitpid(child, &status, 0);
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << readWholeFile(errors);
+  EXPECT_EQ(consoleLines(dom), std::vector<std::string>{}) << "the page logged messages";
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(dom, m, std::regex("data-updates=\"([0-9]+)\""))) << dom;
+  EXPECT_GE(std::stoi(m[1]), 3) << "the page did not keep updating:\n" << lastLines(dom, 30);
+  EXPECT_NE(dom.find("data-phase=\"rendering\""), std::string::npos) << lastLines(dom, 30);
+  for (const char* row : {"<tr class=\"worker working\"><td><span class=\"swatch\"",
+                          "</span>0</td>", "</span>1</td>"}) {
+    EXPECT_NE(dom.find(row), std::string::npos) << row << "\n" << lastLines(dom, 30);
+  }
+  EXPECT_NE(dom.find("of 19,200 px"), std::string::npos) << lastLines(dom, 30);
+  EXPECT_NE(dom.find("/image.png?v="), std::string::npos) << "the image was not loaded";
 }
 
 }  // namespace

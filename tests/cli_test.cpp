@@ -9,6 +9,7 @@
 #include <iterator>
 #include <string>
 
+#include "image/image_io.h"
 #include "prt_command.h"
 
 namespace prt {
@@ -33,6 +34,33 @@ TEST_F(CliTest, RendersAndPrintsSummary) {
   EXPECT_EQ(r.exitCode, 0) << r.output;
   EXPECT_TRUE(fs::exists(path("out.png")));
   EXPECT_NE(r.output.find("rays"), std::string::npos) << r.output;
+}
+
+// .exr (float: the same bits as .pfm; --exr-half: smaller) and .jpg, serial and parallel;
+// --width alone keeps the scene's 4:3.
+TEST_F(CliTest, WritesExrAndJpegAndWidthAloneKeepsTheAspectRatio) {
+  const std::string scene = write("ok.scene", kValidScene);
+  ASSERT_EQ(run("render " + scene + " -q -o " + path("ref.pfm")).exitCode, 0);
+  const Image reference = readImage(path("ref.pfm"));
+  for (const char* how : {"", " --workers 2"}) {
+    const Result exr = run("render " + scene + how + " -q -o " + path("a.exr"));
+    ASSERT_EQ(exr.exitCode, 0) << exr.output;
+    EXPECT_EQ(readImage(path("a.exr")), reference) << how;
+    const Result half = run("render " + scene + how + " -q --exr-half -o " + path("h.exr"));
+    ASSERT_EQ(half.exitCode, 0) << half.output;
+    EXPECT_LT(fs::file_size(path("h.exr")), fs::file_size(path("a.exr")));
+    const Result jpg = run("render " + scene + how + " -q --jpeg-quality 80 -o " + path("a.jpg"));
+    ASSERT_EQ(jpg.exitCode, 0) << jpg.output;
+    EXPECT_EQ(readImage(path("a.jpg")).width(), 16);
+  }
+  const Result bad = run("render " + scene + " -q --jpeg-quality 0 -o " + path("b.jpg"));
+  EXPECT_EQ(bad.exitCode, 2) << bad.output;
+  ASSERT_EQ(run("render " + scene + " -q --width 40 -o " + path("w.png")).exitCode, 0);
+  const Image wide = readImage(path("w.png"));
+  EXPECT_EQ(wide.width(), 40);
+  EXPECT_EQ(wide.height(), 30);
+  ASSERT_EQ(run("render " + scene + " -q --height 3 -o " + path("t.png")).exitCode, 0);
+  EXPECT_EQ(readImage(path("t.png")).width(), 4);
 }
 
 TEST_F(CliTest, SceneErrorNamesFileLineColumnAndWritesNothing) {

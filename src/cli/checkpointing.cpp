@@ -4,7 +4,8 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "cli/progress_bar.h"
+#include "cli/live_view.h"
+#include "drive/run_progress.h"
 #include "cli/video_output.h"
 #include "core/input_error.h"
 #include "core/stop_signals.h"
@@ -74,7 +75,7 @@ int renderSerialWithCheckpoint(const RenderOptions& o, const Scene& scene,
   });
   const auto writeFrame = [&](uint64_t ordinal) {
     writeImage(frameOfSequence(image, scene.image.height, ordinal),
-               framePath(scene.image.output, frames.number(ordinal)));
+               framePath(scene.image.output, frames.number(ordinal)), o.imageOptions);
   };
   if (sequence) {  // what the earlier run completed, written again in case it was cut short
     for (uint64_t i = 0; i < frames.count(); ++i) {
@@ -88,12 +89,18 @@ int renderSerialWithCheckpoint(const RenderOptions& o, const Scene& scene,
   uint64_t rays = 0;
   // Pieces of a few rows: small enough to save often, large enough to keep every core busy.
   const uint64_t piece = std::max<uint64_t>(4096, 4 * static_cast<uint64_t>(scene.image.width));
-  ProgressBar bar("px", !o.quiet);
+  LiveView view(o, {"serial", "", scene.image.width, scene.image.height, frames.count(),
+                    scene.image.output});
+  RunProgress progress(view.board(), scene.image.width, scene.image.height, frames.count());
+  progress.resumed(done);
   std::vector<Color> colors;
   uint64_t next = 0;
   while (next < pixels) {
     if (const int sig = interrupted ? interrupted() : 0) {
       writeCheckpoint(o.checkpointPath, key, done, image, noOwners);
+      progress.end(steadySeconds(), image, nullptr, false,
+                   "interrupted by signal " + std::to_string(sig));
+      view.finish();
       std::fprintf(stderr,
                    "prt: interrupted by signal %d; %llu of %llu pixels are saved in '%s': run the "
                    "same command with --resume to render the rest\n",
@@ -107,14 +114,18 @@ int renderSerialWithCheckpoint(const RenderOptions& o, const Scene& scene,
       ++next;
     }
     if (todo.empty()) continue;
+    const double before = steadySeconds();
     rays += renderer.render(todo, o.threads, colors);
+    const double after = steadySeconds();
     size_t i = 0;
     todo.forEach([&](uint64_t p) {
       image.set(p, colors[i++]);
       if (++frameCounts[p / perFrame] == perFrame && sequence) writeFrame(p / perFrame);
     });
     done.append(todo);
-    bar.update(done.size(), pixels);
+    progress.measured(todo, after - before, after);
+    progress.finished(todo);
+    progress.tick(after, image, nullptr);
     const auto now = Clock::now();
     if (std::chrono::duration<double>(now - lastSave).count() >= o.checkpointEverySeconds &&
         next < pixels) {
@@ -123,7 +134,9 @@ int renderSerialWithCheckpoint(const RenderOptions& o, const Scene& scene,
     }
   }
   const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
-  if (!sequence) writeImage(image, scene.image.output);
+  progress.end(steadySeconds(), image, nullptr, true, "written to " + scene.image.output);
+  view.finish();
+  if (!sequence) writeImage(image, scene.image.output, o.imageOptions);
   removeCheckpoint(o.checkpointPath);
   if (sequence) finishSequence(o, scene.image.output, frames);
   if (!o.quiet) {

@@ -4,6 +4,7 @@
 
 #include <CLI/CLI.hpp>
 #include <functional>
+#include <optional>
 #include <string>
 
 #include "trace/scene.h"
@@ -22,6 +23,10 @@ void addSceneSource(CLI::App& cmd, SceneSource& source);
 
 // loadSceneFile, printing what it skipped (Scene::warnings) to stderr.
 Scene loadScene(const SceneSource& source);
+
+// --width and --height over the scene's image size. One of them alone keeps the scene's
+// aspect ratio: the other side is scaled to match, rounded, at least 1 pixel.
+void applyImageSize(Scene& scene, std::optional<int> width, std::optional<int> height);
 
 using Action = std::function<int()>;  // returns the process exit code
 

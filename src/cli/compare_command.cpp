@@ -56,8 +56,7 @@ int runCompare(const CompareOptions& o) {
   if (!o.testCase.empty()) settings = *paperTestCase(o.testCase);
   if (o.spp) settings.samplesPerPixel = *o.spp;
   if (o.drt) settings.drtRate = *o.drt;
-  if (o.width) scene.image.width = *o.width;
-  if (o.height) scene.image.height = *o.height;
+  applyImageSize(scene, o.width, o.height);
   const uint64_t pixels = static_cast<uint64_t>(scene.image.width) * scene.image.height;
   if (pixels > (1ull << 26)) {
     throw InputError("image too large for a comparison: " + std::to_string(scene.image.width) +
@@ -160,7 +159,7 @@ Action addCompareCommand(CLI::App& app) {
       "differ (PSNR, share of differing pixels). Exit code 0 when the comparison ran, 1 when "
       "POV-Ray is missing or fails, 2 on bad input");
   addSceneSource(*cmd, o->scene);
-  cmd->add_option("--width", o->width, "Image width in pixels (default: the scene's)")
+  cmd->add_option("--width", o->width, "Image width in pixels (default: the scene's; alone, the height keeps its aspect ratio)")
       ->check(CLI::Range(1, 32768));
   cmd->add_option("--height", o->height, "Image height in pixels (default: the scene's)")
       ->check(CLI::Range(1, 32768));

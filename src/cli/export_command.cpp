@@ -39,8 +39,7 @@ int runExport(const ExportOptions& o) {
   if (!o.testCase.empty()) settings = *paperTestCase(o.testCase);
   if (o.spp) settings.samplesPerPixel = *o.spp;
   if (o.drt) settings.drtRate = *o.drt;
-  if (o.width) scene.image.width = *o.width;
-  if (o.height) scene.image.height = *o.height;
+  applyImageSize(scene, o.width, o.height);
 
   PovOptions options;
   options.areaLightGrid = o.areaGrid;
@@ -72,9 +71,9 @@ Action addExportCommand(CLI::App& app) {
   cmd->add_option("-o,--output", o->output, "Output file (.pov); written atomically")
       ->required()
       ->check(fileName());
-  cmd->add_option("--width", o->width, "Image width in pixels (the camera depends on it)")
+  cmd->add_option("--width", o->width, "Image width in pixels (the camera depends on it; alone, the height keeps the scene's aspect ratio)")
       ->check(CLI::Range(1, 32768));
-  cmd->add_option("--height", o->height, "Image height in pixels")->check(CLI::Range(1, 32768));
+  cmd->add_option("--height", o->height, "Image height in pixels (alone: the width follows the scene's aspect ratio)")->check(CLI::Range(1, 32768));
   cmd->add_option("--spp", o->spp,
                   "Samples per pixel, mapped to POV-Ray antialiasing in the command line "
                   "written into the file's header")

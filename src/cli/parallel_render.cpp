@@ -1,6 +1,7 @@
 #include "cli/parallel_render.h"
 
 #include "cli/flag_checks.h"
+#include "cli/live_view.h"
 #include "cli/run_page_output.h"
 #include "cli/video_output.h"
 
@@ -217,7 +218,7 @@ ParallelOptions toParallelOptions(const RenderOptions& o, int workers) {
 int finishParallelRun(const RenderOptions& o, const Scene& scene, const ParallelRun& run) {
   const FrameSequence frames = framesOf(o);
   const bool sequence = frames.count() > 1;
-  if (!sequence) writeImage(run.image, scene.image.output);  // a sequence's frames are written
+  if (!sequence) writeImage(run.image, scene.image.output, o.imageOptions);  // a sequence's frames are written
   writeRenderReportAndPage(o, scene, run);  // --report and --html
   if (!o.tracePath.empty()) {
     writeFileAtomically(o.tracePath,
@@ -251,6 +252,13 @@ int finishParallelRun(const RenderOptions& o, const Scene& scene, const Parallel
   return 0;
 }
 
+namespace {
+ProgressBoard::RunFacts runFacts(const std::string& driver, const RunRequest& request) {
+  return {driver, request.options.strategy, request.scene.image.width,
+          request.scene.image.height, request.frames.count(), request.scene.image.output};
+}
+}  // namespace
+
 RunRequest makeRunRequest(const RenderOptions& o, const Scene& scene, const RenderSettings& s,
                           int workers) {
   RunRequest request;
@@ -264,9 +272,11 @@ RunRequest makeRunRequest(const RenderOptions& o, const Scene& scene, const Rend
     const FrameSequence frames = request.frames;
     const std::string pattern = scene.image.output;
     const bool quiet = o.quiet;
-    request.frameDone = [frames, pattern, quiet](uint64_t ordinal, const Image& frame) {
+    const ImageWriteOptions imageOptions = o.imageOptions;
+    request.frameDone = [frames, pattern, quiet, imageOptions](uint64_t ordinal,
+                                                               const Image& frame) {
       const std::string path = framePath(pattern, frames.number(ordinal));
-      writeImage(frame, path);
+      writeImage(frame, path, imageOptions);
       if (!quiet) std::fprintf(stderr, "prt: frame %lld written: %s\n",
                                static_cast<long long>(frames.number(ordinal)), path.c_str());
     };
@@ -283,9 +293,16 @@ int renderParallelLocal(const RenderOptions& o, const Scene& scene, const Render
   request.serialSeconds = serialSeconds(o, scene, s);
   request.masterSpeedIndexSeconds =
       serialSpeedIndexSeconds(request.options.speedIndexKind, scene, s);
+  LiveView view(o, runFacts("threads", request));
+  request.progress = &view.board();
   try {
-    return finishParallelRun(o, scene, renderLocal(request));
+    ParallelRun run = renderLocal(request);
+    view.stopLines();
+    const int code = finishParallelRun(o, scene, run);
+    view.finish();
+    return code;
   } catch (const RunFailed& e) {
+    view.stopLines();
     std::fprintf(stderr, "prt: error: %s\n", e.what());
     return e.signal() > 0 ? 128 + e.signal() : 1;
   }
@@ -323,9 +340,20 @@ int renderParallelMpi(const RenderOptions& o, const SceneLoader& loadScene) {
     request.serialSeconds = serialSeconds(o, request.scene, request.settings);
     request.masterSpeedIndexSeconds = serialSpeedIndexSeconds(
         request.options.speedIndexKind, request.scene, request.settings);
+    LiveView view(o, runFacts("mpi", request));
+    request.progress = &view.board();
     // From here the driver kit survives lost workers; only losing them all fails the run.
-    const ParallelRun run = renderMpiMaster(session, request);
+    const ParallelRun run = [&] {
+      try {
+        return renderMpiMaster(session, request);
+      } catch (...) {
+        view.stopLines();
+        throw;
+      }
+    }();
+    view.stopLines();
     const int code = finishParallelRun(o, request.scene, run);
+    view.finish();
     finishMpiMaster(session, run);
     return session.exitCode(code);
   } catch (const RunFailed& e) {

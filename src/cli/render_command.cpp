@@ -11,7 +11,8 @@
 #include "cli/commands.h"
 #include "cli/flag_checks.h"
 #include "cli/parallel_render.h"
-#include "cli/progress_bar.h"
+#include "cli/live_view.h"
+#include "drive/run_progress.h"
 #include "cli/run_page_output.h"
 #include "cli/video_output.h"
 #include "core/input_error.h"
@@ -59,8 +60,7 @@ RenderSettings resolveSettings(const RenderOptions& o, Scene& scene) {
   if (!o.testCase.empty()) s = *paperTestCase(o.testCase);
   if (o.spp) s.samplesPerPixel = *o.spp;
   if (o.drt) s.drtRate = *o.drt;
-  if (o.width) scene.image.width = *o.width;
-  if (o.height) scene.image.height = *o.height;
+  applyImageSize(scene, o.width, o.height);
   if (!o.output.empty()) scene.image.output = o.output;
   const uint64_t pixels = static_cast<uint64_t>(scene.image.width) * scene.image.height;
   if (pixels > (1ull << 28)) {
@@ -142,20 +142,45 @@ void checkOutputs(const RenderOptions& o, const Scene& scene) {
   }
 }
 
+ProgressBoard::RunFacts serialFacts(const RenderOptions& o, const Scene& scene,
+                                    const FrameSequence& frames) {
+  (void)o;
+  return {"serial", "", scene.image.width, scene.image.height, frames.count(), scene.image.output};
+}
+
+// A tile of a serial render (of the frame whose first task is `firstTask`) into its progress.
+void reportTile(RunProgress& progress, const TileDone& tile, uint64_t firstTask) {
+  TaskSet tasks;
+  const auto w = static_cast<uint64_t>(tile.image.width());
+  for (int y = tile.y0; y < tile.y1; ++y) {
+    tasks.append(TaskRun{firstTask + static_cast<uint64_t>(y) * w + static_cast<uint64_t>(tile.x0),
+                         static_cast<uint64_t>(tile.x1 - tile.x0), 1});
+  }
+  const double now = steadySeconds();
+  progress.measured(tasks, tile.seconds, now);
+  progress.finished(tasks);
+  progress.tick(now, tile.image, nullptr, false, firstTask);
+}
+
 // The frames of a sequence one after another, each on every thread and written once done.
 int renderSerialSequence(const RenderOptions& o, const Scene& scene,
                          const RenderSettings& settings, const FrameSequence& frames) {
   FrameRenderer renderer(scene, settings, frames);
   RenderStats total;
+  LiveView view(o, serialFacts(o, scene, frames));
+  RunProgress progress(view.board(), scene.image.width, scene.image.height, frames.count());
+  const uint64_t perFrame = renderer.pixelsPerFrame();
   for (uint64_t i = 0; i < frames.count(); ++i) {
     RenderStats stats;
-    Image image = [&] {
-      ProgressBar bar("px", !o.quiet);
-      return renderImage(renderer.frame(i), o.threads, &stats,
-                         [&](uint64_t done, uint64_t all) { bar.update(done, all); });
-    }();
+    Image image = renderImage(renderer.frame(i), o.threads, &stats, [&](const TileDone& tile) {
+      reportTile(progress, tile, i * perFrame);
+    });
     const std::string path = framePath(scene.image.output, frames.number(i));
-    writeImage(image, path);
+    if (i + 1 == frames.count()) {
+      progress.end(steadySeconds(), image, nullptr, true, "frames written to " + scene.image.output,
+                   i * perFrame);
+    }
+    writeImage(image, path, o.imageOptions);
     total.rays += stats.rays;
     total.seconds += stats.seconds;
     if (!o.quiet) {
@@ -165,6 +190,7 @@ int renderSerialSequence(const RenderOptions& o, const Scene& scene,
                   static_cast<unsigned long long>(frames.count()), path.c_str(), stats.seconds);
     }
   }
+  view.finish();
   finishSequence(o, scene.image.output, frames);
   if (!o.quiet) {
     std::printf("%llu frames of %dx%d, %d spp, DRT %d: %.3f s rendering, %.3f s preparing "
@@ -194,13 +220,15 @@ int renderSerial(const RenderOptions& o, const Scene& scene, const RenderSetting
   const Renderer renderer(world, settings);
   RenderStats stats;
   std::vector<float> pixelSeconds;
-  Image image = [&] {
-    ProgressBar bar("px", !o.quiet);
-    return renderImage(renderer, o.threads, &stats,
-                       [&](uint64_t done, uint64_t total) { bar.update(done, total); },
-                       o.costMapPath.empty() ? nullptr : &pixelSeconds);
-  }();
-  writeImage(image, scene.image.output);
+  LiveView view(o, serialFacts(o, scene, frames));
+  RunProgress progress(view.board(), scene.image.width, scene.image.height);
+  Image image = renderImage(
+      renderer, o.threads, &stats, [&](const TileDone& tile) { reportTile(progress, tile, 0); },
+      o.costMapPath.empty() ? nullptr : &pixelSeconds);
+  progress.end(steadySeconds(), image, nullptr, true,
+               "written to " + scene.image.output, 0);
+  writeImage(image, scene.image.output, o.imageOptions);
+  view.finish();
   if (!o.costMapPath.empty()) {
     writeCostMapFile(o.costMapPath,
                      CostMap(scene.image.width, scene.image.height, std::move(pixelSeconds)));
@@ -280,11 +308,22 @@ Action addRenderCommand(CLI::App& app, const std::string& commandLine) {
       "mpirun with rank 0 as the master)");
   addSceneSource(*cmd, o->scene);
   cmd->add_option("-o,--output", o->output,
-                  "Output image; the extension picks the format (.png, .ppm, .pfm). "
+                  "Output image; the extension picks the format (.png, .jpg, .exr, .pfm, .ppm). "
                   "Default: the scene's output file")
       ->check(fileName());
-  cmd->add_option("--width", o->width, "Image width in pixels")->check(CLI::Range(1, 32768));
-  cmd->add_option("--height", o->height, "Image height in pixels")->check(CLI::Range(1, 32768));
+  cmd->add_option("--width", o->width,
+                  "Image width in pixels (alone: the height follows the scene's aspect ratio)")
+      ->check(CLI::Range(1, 32768));
+  cmd->add_option("--height", o->height,
+                  "Image height in pixels (alone: the width follows the scene's aspect ratio)")
+      ->check(CLI::Range(1, 32768));
+  cmd->add_flag("--exr-half", o->imageOptions.exrHalf,
+                "Write .exr images as 16-bit half floats (default: 32-bit floats, every bit "
+                "kept)");
+  cmd->add_option("--jpeg-quality", o->imageOptions.jpegQuality,
+                  "Quality of .jpg images, 1 (smallest) to 100 (best)")
+      ->check(CLI::Range(1, 100))
+      ->capture_default_str();
   cmd->add_option("--spp", o->spp, "Supersampling: samples per pixel (SS)")
       ->check(CLI::Range(1, 4096));
   cmd->add_option("--drt", o->drt,
@@ -301,7 +340,12 @@ Action addRenderCommand(CLI::App& app, const std::string& commandLine) {
                   "rank may use, as --bind-to sets it)")
       ->check(CLI::Range(0, 1024))
       ->capture_default_str();
-  cmd->add_flag("-q,--quiet", o->quiet, "No progress bar, summary or report table");
+  cmd->add_flag("-q,--quiet", o->quiet, "No progress lines, summary or report table");
+  cmd->add_option("--serve", o->serve,
+                  "While rendering, serve a live page of the render at [HOST:]PORT (the image "
+                  "so far, each worker's progress, the ETA; /status.json for scripts). "
+                  "Loopback by default; any other HOST needs the access token it prints. "
+                  "PORT 0: any free port");
   const std::string animation = "Animation";
   cmd->add_option("--frames", o->frames,
                   "Render frames A to B (every STEP-th) of an animated scene as one job, each "

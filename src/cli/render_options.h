@@ -8,6 +8,7 @@
 #include "cli/commands.h"
 #include "cli/strategy_flags.h"
 #include "core/frame_sequence.h"
+#include "image/image_io.h"
 
 namespace prt::cli {
 
@@ -25,6 +26,8 @@ struct RenderOptions {
   std::string testCase;       // A|B|C|D: sets DRT and SS as in the paper's Table III
   int threads = 0;            // serial: render threads (0: all cores); parallel: per worker
   bool quiet = false;
+  ImageWriteOptions imageOptions;  // --exr-half, --jpeg-quality
+  std::string serve;          // --serve [HOST:]PORT: the live page of the running render
   std::string costMapPath;    // serial: also write each pixel's render seconds (for simulate)
   std::string frames;         // --frames A-B[:STEP]: an animation's frames as one job
   std::string frame;          // --frame N: one frame of it

@@ -1,3 +1,5 @@
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include "cli/commands.h"
@@ -24,6 +26,18 @@ Scene loadScene(const SceneSource& source) {
   Scene scene = loadSceneFile(source.path, options);
   for (const std::string& w : scene.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
   return scene;
+}
+
+void applyImageSize(Scene& scene, std::optional<int> width, std::optional<int> height) {
+  const double aspect =
+      static_cast<double>(scene.image.width) / static_cast<double>(scene.image.height);
+  const auto scaled = [](double value) {
+    return static_cast<int>(std::clamp(std::lround(value), 1L, 32768L));
+  };
+  if (width && !height) height = scaled(*width / aspect);
+  if (height && !width) width = scaled(*height * aspect);
+  if (width) scene.image.width = *width;
+  if (height) scene.image.height = *height;
 }
 
 }  // namespace prt::cli

@@ -8,6 +8,7 @@
 #include "drive/frame_renderer.h"
 #include "drive/master_loop.h"
 #include "drive/parallel_run.h"
+#include "drive/run_progress.h"
 #include "drive/worker_engine.h"
 
 namespace prt {
@@ -41,9 +42,14 @@ ParallelRun runMasterSide(Transport& net, const RunRequest& request, const std::
     if (!frameInfo.empty()) frameInfo[ordinal].doneSeconds = net.now() - startTime;
     if (request.frameDone) request.frameDone(ordinal, assembler.frame(ordinal));
   };
+  std::optional<RunProgress> progress;
+  if (request.progress) {
+    progress.emplace(*request.progress, scene.image.width, scene.image.height, frames.count());
+  }
   MasterOptions masterOptions;
   masterOptions.endgame = options.endgame;
   if (request.resumeFrom) {
+    if (progress) progress->resumed(request.resumeFrom->done);
     assembler.restore(*request.resumeFrom);
     masterOptions.resumedDone = request.resumeFrom->done;
     // Frames the earlier run completed are written again: it may have been killed while
@@ -65,6 +71,7 @@ ParallelRun runMasterSide(Transport& net, const RunRequest& request, const std::
                       f.pixels += px.size();
                     });
                   }
+                  if (progress) progress->finished(t, w);
                   assembler.add(w, t, rgb, frames.count() > 1
                                                ? std::function<void(uint64_t)>(frameCompleted)
                                                : std::function<void(uint64_t)>());
@@ -77,6 +84,12 @@ ParallelRun runMasterSide(Transport& net, const RunRequest& request, const std::
   loop.checkpointEverySeconds = options.checkpointEverySeconds;
   loop.interrupted = request.interrupted;
   loop.abandoned = std::move(abandoned);
+  if (progress) {
+    loop.results = [&](int, const ResultsMsg& r, double now) {
+      progress->measured(r.tasks, r.computeSeconds, now);
+    };
+    loop.tick = [&](double now) { progress->tick(now, assembler.image(), &master); };
+  }
   const CheckpointKey key = checkpointKey(scene, request.settings, frames);
   bool warned = false;
   auto saveCheckpoint = [&](const std::string& why) {
@@ -100,7 +113,12 @@ ParallelRun runMasterSide(Transport& net, const RunRequest& request, const std::
   }
 
   startTime = net.now();
+  if (progress) progress->tick(startTime, assembler.image(), &master, true);
   MasterLoopResult result = runMasterLoop(net, master, loop);
+  if (progress) {
+    progress->end(net.now(), assembler.image(), &master, result.failure.empty(),
+                  result.failure);
+  }
   if (!result.failure.empty()) {
     std::string message = result.failure;
     // Workers of --join-at that had not arrived yet: the run does not wait for them.

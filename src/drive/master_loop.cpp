@@ -40,6 +40,7 @@ class MasterLoop {
       if (options_.checkpoint) deadline = std::min(deadline, nextCheckpoint);
       receive(net_.poll(deadline));
       const double now = net_.now();
+      if (options_.tick) options_.tick(now);
       sendOut(master_.expireLeases(now, options_.leaseSeconds));
       if (now >= nextBeat) {
         const Bytes beat = encode(HeartbeatMsg{});
@@ -117,6 +118,9 @@ class MasterLoop {
     if (!std::holds_alternative<HeartbeatMsg>(m)) {
       log_.add({EventKind::MessageReceived, kMaster, now, now, 0, in.bytes.size(), in.from,
                 messageName(m)});
+    }
+    if (options_.results) {
+      if (const auto* results = std::get_if<ResultsMsg>(&m)) options_.results(in.from, *results, now);
     }
     sendOut(master_.onMessage(in.from, m, now));
   }

@@ -35,6 +35,11 @@ struct MasterLoopOptions {
   std::function<void(const std::string& why)> checkpoint;  // null: no checkpoints
   std::function<int()> interrupted;   // a pending stop signal (0: none); null: never
   std::function<bool()> abandoned;    // true: stop now (the driver reports why); null: never
+  // Observers, for progress reports; null: none. `results` hears every results message
+  // before the master takes it (duplicates too: their cost was real); `tick` is called after
+  // every wait, at most a quarter of a second apart.
+  std::function<void(int from, const ResultsMsg& results, double now)> results;
+  std::function<void(double now)> tick;
 };
 
 struct MasterLoopResult {

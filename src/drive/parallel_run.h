@@ -13,6 +13,7 @@
 #include "cluster/messages.h"
 #include "drive/checkpoint.h"
 #include "drive/parallel_options.h"
+#include "drive/progress_board.h"
 #include "drive/transport.h"
 #include "drive/worker_loop.h"
 #include "image/image.h"
@@ -45,6 +46,9 @@ struct RunRequest {
   // Called on the master's thread with each frame of a sequence as soon as all its pixels are
   // in, in the order they complete (and at the start, for frames a checkpoint completes).
   std::function<void(uint64_t ordinal, const Image& frame)> frameDone;
+  // Where the master publishes its progress while it runs (see drive/progress_board.h);
+  // null: nowhere.
+  ProgressBoard* progress = nullptr;
 };
 
 // The run could not finish (every worker lost, interrupted). The message says what survived

@@ -15,10 +15,13 @@ namespace prt {
 namespace {
 
 // The registry: adding a format means one line here plus its writer and reader.
-constexpr std::array<ImageFormat, 3> kFormats = {{
+constexpr std::array<ImageFormat, 6> kFormats = {{
     {".png", writePng, readPng},
     {".ppm", writePpm, readPpm},
     {".pfm", writePfm, readPfm},
+    {".exr", writeExr, readExr},
+    {".jpg", writeJpeg, readJpeg},
+    {".jpeg", writeJpeg, readJpeg},
 }};
 
 std::string lowerCaseExtension(const std::string& path) {
@@ -76,9 +79,9 @@ std::vector<unsigned char> readFileBytes(const std::string& path) {
 
 }  // namespace
 
-void writeImage(const Image& image, const std::string& path) {
+void writeImage(const Image& image, const std::string& path, const ImageWriteOptions& options) {
   const ImageFormat& format = requireFormat(path);
-  writeFileAtomically(path, [&](std::FILE* file) { format.write(image, file, path); });
+  writeFileAtomically(path, [&](std::FILE* file) { format.write(image, file, path, options); });
 }
 
 Image readImage(const std::string& path) {

@@ -3,7 +3,10 @@
 //   .png  8-bit RGB, sRGB-encoded (with an sRGB chunk)      - for viewing
 //   .ppm  binary P6, 8-bit sRGB-encoded                      - trivial to parse anywhere
 //   .pfm  32-bit float linear RGB, little-endian             - lossless, for comparisons
-// Writing clamps to [0, 1] and rounds for the 8-bit formats; PFM keeps every float bit.
+//   .exr  OpenEXR, linear RGB, 32-bit float or 16-bit half    - for compositing tools
+//   .jpg  JPEG (also .jpeg), 8-bit sRGB-encoded, lossy        - small, for sharing
+// Writing clamps to [0, 1] and rounds for the 8-bit formats; PFM and float EXR keep every
+// float bit.
 //
 // All functions are thread-safe (writes to different paths run independently).
 
@@ -14,11 +17,18 @@
 
 namespace prt {
 
+// How the formats with a choice write.
+struct ImageWriteOptions {
+  bool exrHalf = false;  // .exr: 16-bit half floats instead of 32-bit floats
+  int jpegQuality = 95;  // .jpg: 1 (smallest) to 100 (best)
+};
+
 // Writes `image` to `path` atomically: the file appears complete or not at all, and an
 // existing file is replaced only by a complete new one (see image/atomic_file.h).
 // Throws InputError for an unsupported extension (the message lists the valid ones) or any
 // I/O failure ("cannot write 'out/x.png': No such file or directory").
-void writeImage(const Image& image, const std::string& path);
+void writeImage(const Image& image, const std::string& path,
+                const ImageWriteOptions& options = {});
 
 // The bytes of `image` as a PNG file (8-bit sRGB, as writeImage writes .png), for embedding
 // an image in another document. Throws std::runtime_error if libpng fails.
@@ -33,7 +43,8 @@ Image readImage(const std::string& path);
 // reject "-o out.jpg" before rendering instead of after.
 bool isSupportedImagePath(const std::string& path);
 
-// The supported extensions, lower case with the dot: {".png", ".ppm", ".pfm"}.
+// The supported extensions, lower case with the dot: {".png", ".ppm", ".pfm", ".exr", ".jpg",
+// ".jpeg"}.
 std::vector<std::string> supportedImageExtensions();
 
 }  // namespace prt

@@ -134,7 +134,8 @@ void writeHeader(std::FILE* file, const char* magic, const Image& image, const c
 
 }  // namespace
 
-void writePpm(const Image& image, std::FILE* file, const std::string& /*path*/) {
+void writePpm(const Image& image, std::FILE* file, const std::string& /*path*/,
+              const ImageWriteOptions& /*options*/) {
   writeHeader(file, "P6", image, "255");
   const std::span<const float> samples = image.data();
   std::vector<unsigned char> row(3 * static_cast<size_t>(image.width()));
@@ -187,7 +188,8 @@ Image readPpm(std::span<const unsigned char> bytes, const std::string& path) {
   return image;
 }
 
-void writePfm(const Image& image, std::FILE* file, const std::string& /*path*/) {
+void writePfm(const Image& image, std::FILE* file, const std::string& /*path*/,
+              const ImageWriteOptions& /*options*/) {
   // Negative scale = little-endian samples.
   writeHeader(file, "PF", image, "-1.0");
   const std::span<const float> samples = image.data();

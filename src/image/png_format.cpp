@@ -53,7 +53,8 @@ std::string encodePng(const Image& image) {
   return bytes;
 }
 
-void writePng(const Image& image, std::FILE* file, const std::string& path) {
+void writePng(const Image& image, std::FILE* file, const std::string& path,
+              const ImageWriteOptions& /*options*/) {
   const std::vector<png_byte> encoded = srgbSamples(image);
   png_image png = pngHeader(image);
   if (png_image_write_to_stdio(&png, file, 0, encoded.data(), 0, nullptr) == 0) {

@@ -244,8 +244,8 @@ TEST(SceneErrors, ImageSizes) {
 
 TEST(SceneErrors, OutputExtension) {
   const std::string camera = "camera { eye 0 0 -5 look_at 0 0 0 }\n";
-  expectError(camera + "image { width 4 height 3 output \"fig.jpg\" }", 2, 33,
-              {"'output' must be a file name ending in .png, .ppm, .pfm", "\"fig.jpg\""});
+  expectError(camera + "image { width 4 height 3 output \"fig.tga\" }", 2, 33,
+              {"'output' must be a file name ending in .png, .ppm, .pfm", "\"fig.tga\""});
   expectError(camera + "image { width 4 height 3 output \"\" }", 2, 33, {".png, .ppm, .pfm"});
   expectError(camera + "image { width 4 height 3 output \"png\" }", 2, 33, {".png, .ppm, .pfm"});
 }

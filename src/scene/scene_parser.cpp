@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "image/image_io.h"
 #include "scene/block_reader.h"
 #include "scene/key_frames.h"
 #include "scene/keywords.h"
@@ -23,17 +24,11 @@ namespace {
 constexpr int kMaxImageSide = 32768;
 // An RGBA float image of 2^28 pixels already takes 4 GiB; larger ones do not fit in memory.
 constexpr int64_t kMaxImagePixels = int64_t{1} << 28;
-constexpr const char* kImageExtensions[] = {".png", ".ppm", ".pfm"};
 
 const Range kSize = Range{0, kMaxCoordinate, true, false};  // in (0, kMaxCoordinate]
 
 std::string at(const Token& token) {
   return "line " + std::to_string(token.line) + ", column " + std::to_string(token.column);
-}
-
-std::string lowerCase(std::string text) {
-  for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return text;
 }
 
 bool isName(const std::string& word) {
@@ -292,12 +287,11 @@ class SceneParser {
   }
 
   void checkOutput(const std::string& output, const Token& token) {
-    const std::string extension = lowerCase(std::filesystem::path(output).extension().string());
-    for (const char* allowed : kImageExtensions) {
-      if (extension == allowed) return;
-    }
-    in_.fail(token, "'output' must be a file name ending in " + joinNames(kImageExtensions) +
-                        ", found " + describe(token));
+    if (isSupportedImagePath(output)) return;
+    std::string list;
+    for (const std::string& e : supportedImageExtensions()) list += (list.empty() ? "" : ", ") + e;
+    in_.fail(token, "'output' must be a file name ending in " + list + ", found " +
+                        describe(token));
   }
 
   void environment(const Token& keyword) {

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <ctime>
 #include <mutex>
+#include <numeric>
 #include <vector>
 
 #include "core/cpu_time.h"
@@ -94,6 +95,17 @@ void renderTileTimed(const Renderer& renderer, Image& image, int x0, int y0, int
   }
 }
 // --- end per-pixel cost recording ------------------------------------------------------------
+
+// A step coprime with `count` near count times the golden ratio's fraction: tile i * step mod
+// count visits every tile once, each next one far from the last, so the first tiles of a
+// render sample the whole image.
+uint64_t spreadingStep(uint64_t count) {
+  if (count < 3) return 1;
+  uint64_t step = static_cast<uint64_t>(0.6180339887498949 * static_cast<double>(count));
+  step = std::max<uint64_t>(step, 1);
+  while (std::gcd(step, count) != 1) ++step;
+  return step;
+}
 }  // namespace
 
 Image renderImage(const Renderer& renderer, int threads, RenderStats* stats,
@@ -107,7 +119,11 @@ Image renderImage(const Renderer& renderer, int threads, RenderStats* stats,
   std::mutex progressMutex;
   uint64_t done = 0;
   if (pixelSeconds) pixelSeconds->assign(renderer.pixelCount(), 0.0f);
-  parallelFor(static_cast<uint64_t>(tilesX) * tilesY, threads, [&](uint64_t tile) {
+  const uint64_t tileCount = static_cast<uint64_t>(tilesX) * static_cast<uint64_t>(tilesY);
+  const uint64_t step = spreadingStep(tileCount);
+  parallelFor(tileCount, threads, [&](uint64_t i) {
+    const uint64_t tile = (i * step) % tileCount;
+    const auto tileStart = std::chrono::steady_clock::now();
     const int tx = static_cast<int>(tile % static_cast<uint64_t>(tilesX)) * kTileSize;
     const int ty = static_cast<int>(tile / static_cast<uint64_t>(tilesX)) * kTileSize;
     uint64_t tileRays = 0;
@@ -124,9 +140,11 @@ Image renderImage(const Renderer& renderer, int threads, RenderStats* stats,
     }
     rays += tileRays;
     if (progress) {
+      const double seconds =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - tileStart).count();
       std::lock_guard lock(progressMutex);
       done += static_cast<uint64_t>(x1 - tx) * (y1 - ty);
-      progress(done, renderer.pixelCount());
+      progress(TileDone{tx, ty, x1, y1, seconds, image, done, renderer.pixelCount()});
     }
   });
   if (stats) {

@@ -39,9 +39,18 @@ class Renderer {
   Shader shader_;
 };
 
-// Called after each tile with the number of pixels finished so far; may be called from any
-// rendering thread, but never concurrently with itself.
-using ProgressFn = std::function<void(uint64_t pixelsDone, uint64_t pixelsTotal)>;
+// A tile just rendered, for progress reports: its pixels, the wall seconds its thread spent
+// on them, the image so far (only finished tiles' pixels may be read: other threads are
+// writing the rest) and the count of pixels finished.
+struct TileDone {
+  int x0, y0, x1, y1;  // [x0, x1) x [y0, y1)
+  double seconds;
+  const Image& image;
+  uint64_t pixelsDone, pixelsTotal;
+};
+// Called after each tile; may be called from any rendering thread, but never concurrently
+// with itself (calls are ordered after the tiles they report).
+using ProgressFn = std::function<void(const TileDone&)>;
 
 struct RenderStats {
   uint64_t rays = 0;
@@ -49,7 +58,8 @@ struct RenderStats {
 };
 
 // Renders the whole image with one parallel-for over 16x16 tiles on `threads` threads
-// (<= 0: all cores). With `pixelSeconds`, also records each pixel's wall time in seconds
+// (<= 0: all cores), taken in an order spread over the image (every part of it is seen
+// early, which an estimate of the time left needs; the pixels do not depend on it). With `pixelSeconds`, also records each pixel's wall time in seconds
 // (index y * width + x; resized to the pixel count): the per-pixel cost map the simulator
 // replays. Timing reads the clock around each pixel and never changes the image.
 Image renderImage(const Renderer& renderer, int threads, RenderStats* stats = nullptr,

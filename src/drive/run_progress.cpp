@@ -1,0 +1,144 @@
+#include "drive/run_progress.h"
+
+#include <algorithm>
+
+#include "cluster/master.h"
+
+namespace prt {
+namespace {
+constexpr double kRateWindowSeconds = 5;
+}  // namespace
+
+RunProgress::RunProgress(ProgressBoard& board, int width, int height, uint64_t frames)
+    : board_(board),
+      width_(width),
+      height_(height),
+      frames_(std::max<uint64_t>(frames, 1)),
+      perFrame_(static_cast<uint64_t>(width) * static_cast<uint64_t>(height)),
+      cost_(width, height, frames_),
+      done_(perFrame_ * frames_, false),
+      frameDone_(frames_, 0) {}
+
+void RunProgress::finished(const TaskSet& tasks, int worker) {
+  cost_.finished(tasks);
+  if (worker >= 0 && owner_.empty()) owner_.assign(done_.size(), -1);
+  tasks.forEach([&](uint64_t t) {
+    if (t >= done_.size() || done_[t]) return;
+    done_[t] = true;
+    ++frameDone_[t / perFrame_];
+    if (worker >= 0) owner_[t] = static_cast<int16_t>(worker);
+  });
+}
+
+void RunProgress::resumed(const TaskSet& tasks) {
+  finished(tasks);
+  resumed_ += tasks.size();
+}
+
+std::optional<double> RunProgress::expectedTotal(double now) const {
+  const std::optional<double> eta = cost_.etaSeconds(now);
+  if (!eta || !started_) return std::nullopt;
+  return now - start_ + *eta;
+}
+
+ProgressSnapshot RunProgress::build(double now, const Master* master) {
+  if (!started_) {
+    started_ = true;
+    start_ = now;
+  }
+  ProgressSnapshot s;
+  s.phase = cost_.finishedCount() > resumed_ || master == nullptr
+                ? ProgressSnapshot::Phase::Rendering
+                : ProgressSnapshot::Phase::Starting;
+  s.elapsedSeconds = now - start_;
+  s.pixelsDone = cost_.finishedCount();
+  s.pixelsTotal = cost_.taskCount();
+  s.resumedPixels = resumed_;
+  s.etaSeconds = cost_.etaSeconds(now);
+  s.doneFraction = cost_.doneFraction();
+  if (master == nullptr) return s;
+  const Ledger& ledger = master->ledger();
+  const int n = master->workerCount();
+  rates_.resize(static_cast<size_t>(n));
+  for (int w = 0; w < n; ++w) {
+    WorkerProgress p;
+    p.pixels = ledger.acceptedFrom(w);
+    auto& samples = rates_[static_cast<size_t>(w)];
+    samples.push_back({now, p.pixels});
+    while (samples.size() > 2 && samples[1].at < now - kRateWindowSeconds) {
+      samples.erase(samples.begin());
+    }
+    const RateSample& first = samples.front();
+    if (now > first.at) {
+      p.pixelsPerSecond = static_cast<double>(p.pixels - first.pixels) / (now - first.at);
+    }
+    p.silentSeconds = std::max(0.0, ledger.silentSeconds(w, now));
+    if (const auto joined = ledger.joinedAt(w)) p.joinedAt = *joined - start_;
+    if (!ledger.isLive(w)) {
+      p.state = WorkerProgress::State::Lost;
+      for (const LostWorker& l : ledger.losses()) {
+        if (l.worker == w) {
+          p.lostAt = l.atSeconds - start_;
+          p.lostReason = l.reason;
+        }
+      }
+    } else if (master->holdsWork(w)) {
+      p.state = WorkerProgress::State::Working;
+    } else {
+      p.state = p.pixels > 0 ? WorkerProgress::State::Idle : WorkerProgress::State::Starting;
+    }
+    s.workers.push_back(std::move(p));
+  }
+  return s;
+}
+
+void RunProgress::copyImage(const Image& image, uint64_t imageFirstTask) {
+  // The earliest frame still being rendered (the last one once all are done).
+  uint64_t frame = 0;
+  while (frame + 1 < frames_ && frameDone_[frame] == perFrame_) ++frame;
+  PartialImage partial;
+  partial.frame = frame;
+  partial.image = Image(width_, height_);
+  const size_t count = static_cast<size_t>(perFrame_);
+  const size_t offset = static_cast<size_t>(frame * perFrame_);
+  if (offset < imageFirstTask || offset - imageFirstTask + count > image.pixelCount()) return;
+  const auto from = image.data().subspan(3 * (offset - imageFirstTask), 3 * count);
+  const auto to = partial.image.data();
+  partial.done.resize(count);
+  partial.owner.assign(count, -1);
+  // Only finished pixels are read: a serial render's threads may be writing the others.
+  for (size_t i = 0; i < count; ++i) {
+    if (!done_[offset + i]) continue;
+    partial.done[i] = 1;
+    std::copy_n(from.begin() + static_cast<std::ptrdiff_t>(3 * i), 3,
+                to.begin() + static_cast<std::ptrdiff_t>(3 * i));
+    if (!owner_.empty()) partial.owner[i] = owner_[offset + i];
+  }
+  partial.version = board_.snapshot().version;
+  board_.publishImage(std::move(partial));
+}
+
+void RunProgress::tick(double now, const Image& image, const Master* master, bool force,
+                       uint64_t imageFirstTask) {
+  if (!force && now - lastPublish_ < kPublishSeconds) return;
+  lastPublish_ = now;
+  board_.publish(build(now, master));
+  if (board_.imageWanted()) copyImage(image, imageFirstTask);
+}
+
+void RunProgress::end(double now, const Image& image, const Master* master, bool finished,
+                      const std::string& message, uint64_t imageFirstTask) {
+  ProgressSnapshot s = build(now, master);
+  s.phase = finished ? ProgressSnapshot::Phase::Finished : ProgressSnapshot::Phase::Failed;
+  if (finished) {
+    s.etaSeconds = 0.0;
+    for (WorkerProgress& w : s.workers) {
+      if (w.state != WorkerProgress::State::Lost) w.state = WorkerProgress::State::Done;
+    }
+  }
+  s.message = message;
+  board_.publish(std::move(s));
+  copyImage(image, imageFirstTask);
+}
+
+}  // namespace prt
