@@ -7,8 +7,14 @@
 # the same serial time. Outputs land in out/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash scripts/install-deps.sh
-bash scripts/build.sh release
+# Only what the demo runs: its packages and the prt executable (scripts/test.sh installs and
+# builds the rest). A build directory configured before keeps its settings.
+bash scripts/install-deps.sh --demo
+if [[ -f build/CMakeCache.txt ]]; then
+  bash scripts/build.sh release prt
+else
+  PRT_CMAKE_ARGS="-DPRT_BUILD_TESTS=OFF -DPRT_BUILD_BENCH=OFF" bash scripts/build.sh release prt
+fi
 mkdir -p out
 build/prt render scenes/complex.scene --case A --workers 4 --slowdown 2,2,4,4 --measure-serial \
   --report out/report.json --html out/run.html --trace out/trace.json \

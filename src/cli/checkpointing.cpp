@@ -16,21 +16,69 @@
 
 namespace prt::cli {
 
+RenderOptions withCheckpointPlan(RenderOptions o, const Scene& scene) {
+  if (o.checkpointPath.empty() && !o.noCheckpoint && o.costMapPath.empty()) {
+    o.checkpointPath = scene.image.output + ".ckpt";
+    o.checkpointAutomatic = true;
+  }
+  return o;
+}
+
+std::string resumeCommand(const RenderOptions& o) {
+  const std::string& typed = o.commandLine;
+  const bool has = typed.find(" --resume") != std::string::npos;
+  return has ? typed : typed + " --resume";
+}
+
+std::string howToResume(const RenderOptions& o) {
+  std::error_code ec;
+  if (o.checkpointPath.empty() || !std::filesystem::exists(o.checkpointPath, ec)) return "";
+  return "\nprt: to render the rest, run:\n  " + resumeCommand(o);
+}
+
+void tellHowToResume(const RenderOptions& o) {
+  const std::string text = howToResume(o);
+  if (text.empty()) return;
+  std::fprintf(stderr, "%s\n", text.c_str() + 1);
+  std::fflush(stderr);
+}
+
 std::optional<Checkpoint> resumeCheckpoint(const RenderOptions& o, const Scene& scene,
                                            const RenderSettings& settings) {
   if (o.checkpointPath.empty()) {
-    if (o.resume) throw InputError("--resume needs --checkpoint FILE: the checkpoint to resume");
+    if (o.resume) {
+      throw InputError("--resume continues from a checkpoint, and --no-checkpoint keeps none: "
+                       "drop one of them (or name the file with --checkpoint FILE)");
+    }
     return std::nullopt;
   }
   const CheckpointKey key = checkpointKey(scene, settings, framesOf(o));
   if (!o.resume) {
     std::error_code ec;
-    if (std::filesystem::exists(o.checkpointPath, ec)) {
-      throw InputError("checkpoint '" + o.checkpointPath +
-                       "' already exists: add --resume to continue from it, or remove it to "
-                       "render from the start");
+    if (!std::filesystem::exists(o.checkpointPath, ec)) return std::nullopt;
+    // What it holds, so the choice is an informed one.
+    std::string holds;
+    try {
+      if (const auto c = readCheckpoint(o.checkpointPath, key)) {
+        const uint64_t total = static_cast<uint64_t>(scene.image.width) * scene.image.height *
+                               framesOf(o).count();
+        char percent[32];
+        std::snprintf(percent, sizeof percent, "%.1f%%",
+                      total ? 100.0 * static_cast<double>(c->done.size()) /
+                                  static_cast<double>(total)
+                            : 0.0);
+        holds = " holds " + std::to_string(c->done.size()) + " finished pixels (" + percent +
+                ") of an earlier run of this render";
+      }
+    } catch (const InputError&) {
+      holds = " is a checkpoint of another render (or damaged)";
     }
-    return std::nullopt;
+    const std::string rm = "rm '" + o.checkpointPath + "'";
+    throw InputError("checkpoint '" + o.checkpointPath + "'" +
+                     (holds.empty() ? " already exists" : holds) +
+                     ": to continue it, run\n  " + resumeCommand(o) +
+                     "\nor, to render from the start, remove it first:\n  " + rm +
+                     (o.checkpointAutomatic ? "\n(or add --no-checkpoint to leave it be)" : ""));
   }
   std::optional<Checkpoint> c = readCheckpoint(o.checkpointPath, key);
   if (!c && !o.quiet) {
@@ -102,10 +150,10 @@ int renderSerialWithCheckpoint(const RenderOptions& o, const Scene& scene,
                    "interrupted by signal " + std::to_string(sig));
       view.finish();
       std::fprintf(stderr,
-                   "prt: interrupted by signal %d; %llu of %llu pixels are saved in '%s': run the "
-                   "same command with --resume to render the rest\n",
+                   "prt: interrupted by signal %d; %llu of %llu pixels are saved in '%s'\n",
                    sig, static_cast<unsigned long long>(done.size()),
                    static_cast<unsigned long long>(pixels), o.checkpointPath.c_str());
+      tellHowToResume(o);
       return 128 + sig;
     }
     TaskSet todo;

@@ -11,6 +11,19 @@
 
 namespace prt::cli {
 
+// The render's checkpoint settled: --checkpoint FILE as given; else, unless --no-checkpoint
+// (or --cost-map, which times a whole render), OUTPUT.ckpt beside the output, automatic:
+// written only once the render is expected to take more than kAutomaticCheckpointSeconds,
+// or when it is stopped with pixels done.
+RenderOptions withCheckpointPlan(RenderOptions o, const Scene& scene);
+
+// The command that resumes this render: the one typed, with --resume.
+std::string resumeCommand(const RenderOptions& o);
+// After a run that stopped: when its checkpoint exists, the command that resumes it
+// ("\nprt: to render the rest, run:\n  prt render ... --resume"), else nothing; and printed.
+std::string howToResume(const RenderOptions& o);
+void tellHowToResume(const RenderOptions& o);
+
 // The checkpoint to start from: nothing without --resume (an existing checkpoint file is then
 // refused, so an earlier run's progress is never overwritten by mistake), or when the file
 // does not exist yet (a warning says so). Throws InputError for a damaged file, one of

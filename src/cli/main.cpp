@@ -22,7 +22,17 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version",
                        std::string("prt 0.1.0 (trace kernels: ") + prt::traceIsaLevel() + ")");
   std::string commandLine = "prt";
-  for (int i = 1; i < argc; ++i) commandLine += std::string(" ") + argv[i];
+  // Quoted for a shell where needed: the report records it, and a stopped render prints it
+  // back with --resume for the user to run.
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    const bool plain = !arg.empty() && arg.find_first_not_of(
+                                           "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                                           "0123456789-_./=:,@%+#") == std::string::npos;
+    std::string quoted = "'";
+    for (const char c : arg) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    commandLine += " " + (plain ? arg : quoted + "'");
+  }
   const prt::cli::Action render = prt::cli::addRenderCommand(app, commandLine);
   const prt::cli::Action speedIndex = prt::cli::addSpeedIndexCommand(app);
   const prt::cli::Action join = prt::cli::addJoinCommand(app);

@@ -153,13 +153,19 @@ void addParallelOptions(CLI::App& cmd, RenderOptions& o) {
                  "seconds, when a worker is lost and when the run stops), so that a killed render "
                  "resumes with --resume; removed once the image is written")
       ->group(checkpoints);
+  cmd.add_flag("--no-checkpoint", o.noCheckpoint,
+               "Keep no automatic checkpoint: without --checkpoint, a render expected to take "
+               "more than 30 s keeps its finished pixels in OUTPUT.ckpt (removed once the "
+               "image is written), so that Ctrl-C, a kill or a lost master loses nothing")
+      ->group(checkpoints);
   cmd.add_option("--checkpoint-every", o.checkpointEverySeconds,
                  "Seconds between checkpoints")
       ->capture_default_str()
       ->group(checkpoints);
   cmd.add_flag("--resume", o.resume,
-               "Start from the --checkpoint FILE: render only the pixels it lacks (the image "
-               "is the same as an uninterrupted render's)")
+               "Start from the checkpoint (--checkpoint FILE, or the automatic OUTPUT.ckpt): "
+               "render only the pixels it lacks (the image is the same as an uninterrupted "
+               "render's)")
       ->group(checkpoints);
   cmd.add_option("--report", o.reportPath, "Write the load-balancing report as JSON")
       ->check(fileName())
@@ -177,9 +183,9 @@ void addParallelOptions(CLI::App& cmd, RenderOptions& o) {
       ->check(fileName())
       ->group(parallel);
   cmd.add_option("--inject-fault", o.faults,
-                 "Testing: WORKER:PIXELS:crash|hang makes worker WORKER (rank WORKER+1 under "
-                 "MPI) fail after rendering that many pixels")
-      ->group(parallel);
+                 "WORKER:PIXELS:crash|hang makes worker WORKER (rank WORKER+1 under MPI) fail "
+                 "after rendering that many pixels")
+      ->group("Testing");
 }
 
 bool launchedByMpirun() {
@@ -210,6 +216,7 @@ ParallelOptions toParallelOptions(const RenderOptions& o, int workers) {
   p.workerTimeoutSeconds = o.workerTimeoutSeconds;
   p.endgame = o.endgame == "on";
   p.checkpointPath = o.checkpointPath;
+  p.checkpointAutomatic = o.checkpointAutomatic;
   p.checkpointEverySeconds = o.checkpointEverySeconds;
   p.faults = parseFaults(o.faults);
   return p;
@@ -304,6 +311,7 @@ int renderParallelLocal(const RenderOptions& o, const Scene& scene, const Render
   } catch (const RunFailed& e) {
     view.stopLines();
     std::fprintf(stderr, "prt: error: %s\n", e.what());
+    tellHowToResume(o);
     return e.signal() > 0 ? 128 + e.signal() : 1;
   }
 }
@@ -312,6 +320,7 @@ int renderParallelLocal(const RenderOptions& o, const Scene& scene, const Render
 int renderParallelMpi(const RenderOptions& o, const SceneLoader& loadScene) {
 #ifdef PRT_HAVE_MPI
   MpiSession session(!o.acceptWorkersPath.empty());
+  std::optional<RenderOptions> plan;  // once the scene is read: the checkpoint settled
   if (!session.isMaster()) {
     // Every rank parses the same command line. Options that are bad here are bad on the
     // master too, which reports them once and releases the workers; until then run with
@@ -330,13 +339,15 @@ int renderParallelMpi(const RenderOptions& o, const SceneLoader& loadScene) {
           "... (rank 0 is the master, ranks 1..N the workers)");
     }
     auto [scene, settings] = loadScene();
+    plan = withCheckpointPlan(o, scene);
+    const RenderOptions& planned = *plan;
     if (!o.slowdowns.empty() && o.slowdowns.size() != static_cast<size_t>(session.workerCount())) {
       throw InputError("--slowdown lists " + std::to_string(o.slowdowns.size()) +
                        " values but mpirun started " + std::to_string(session.workerCount()) +
                        " workers (ranks 1.." + std::to_string(session.workerCount()) +
                        "; rank 0 is the master); give one per worker");
     }
-    RunRequest request = makeRunRequest(o, scene, settings, session.workerCount());
+    RunRequest request = makeRunRequest(planned, scene, settings, session.workerCount());
     request.serialSeconds = serialSeconds(o, request.scene, request.settings);
     request.masterSpeedIndexSeconds = serialSpeedIndexSeconds(
         request.options.speedIndexKind, request.scene, request.settings);
@@ -352,12 +363,13 @@ int renderParallelMpi(const RenderOptions& o, const SceneLoader& loadScene) {
       }
     }();
     view.stopLines();
-    const int code = finishParallelRun(o, request.scene, run);
+    const int code = finishParallelRun(planned, request.scene, run);
     view.finish();
     finishMpiMaster(session, run);
     return session.exitCode(code);
   } catch (const RunFailed& e) {
-    session.abort(e.what(), e.signal() > 0 ? 128 + e.signal() : 1);
+    session.abort(std::string(e.what()) + (plan ? howToResume(*plan) : ""),
+                  e.signal() > 0 ? 128 + e.signal() : 1);
   } catch (const InputError& e) {
     // Report before releasing: a released worker's exit can make mpirun end rank 0 at once.
     std::fprintf(stderr, "%s\n", e.format().c_str());

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -18,7 +19,9 @@
 #include "core/input_error.h"
 #include "image/atomic_file.h"
 #include "image/image_io.h"
+#include "drive/checkpoint.h"
 #include "drive/frame_renderer.h"
+#include "drive/parallel_options.h"
 #include "scene/animation.h"
 #include "scene/number_text.h"
 #include "scene/scene_file.h"
@@ -174,6 +177,7 @@ int renderSerialSequence(const RenderOptions& o, const Scene& scene,
     RenderStats stats;
     Image image = renderImage(renderer.frame(i), o.threads, &stats, [&](const TileDone& tile) {
       reportTile(progress, tile, i * perFrame);
+      return true;
     });
     const std::string path = framePath(scene.image.output, frames.number(i));
     if (i + 1 == frames.count()) {
@@ -220,14 +224,79 @@ int renderSerial(const RenderOptions& o, const Scene& scene, const RenderSetting
   const Renderer renderer(world, settings);
   RenderStats stats;
   std::vector<float> pixelSeconds;
+  // The automatic checkpoint (withCheckpointPlan): kept once the render proves long, and
+  // when a signal stops it.
+  (void)resumeCheckpoint(o, scene, settings);  // refuses to pass over an earlier run's
+  const std::function<int()> interrupted = stopSignalsFor(o);
+  const CheckpointKey key = checkpointKey(scene, settings, frames);
   LiveView view(o, serialFacts(o, scene, frames));
   RunProgress progress(view.board(), scene.image.width, scene.image.height);
+  std::vector<bool> done(renderer.pixelCount(), false);
+  bool armed = false;
+  double lastSave = steadySeconds();
+  const double start = lastSave;
+  const auto save = [&](const Image& partial) {
+    // Only finished pixels are read: other threads are writing the rest.
+    Image copy(partial.width(), partial.height());
+    TaskSet finished;
+    for (uint64_t p = 0; p < done.size(); ++p) {
+      if (!done[p]) continue;
+      copy.set(p, partial.at(p));
+      finished.append(TaskRun{p, 1, 1});
+    }
+    try {
+      writeCheckpoint(o.checkpointPath, key, finished, copy, {});
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "prt: warning: checkpoint not written: %s\n", e.what());
+    }
+    lastSave = steadySeconds();
+  };
+  int signal = 0;
   Image image = renderImage(
-      renderer, o.threads, &stats, [&](const TileDone& tile) { reportTile(progress, tile, 0); },
+      renderer, o.threads, &stats,
+      [&](const TileDone& tile) {
+        reportTile(progress, tile, 0);
+        for (int y = tile.y0; y < tile.y1; ++y) {
+          for (int x = tile.x0; x < tile.x1; ++x) done[tile.image.pixelIndex(x, y)] = true;
+        }
+        if (interrupted && (signal = interrupted()) != 0) return false;
+        if (o.checkpointPath.empty()) return true;
+        const double now = steadySeconds();
+        if (!armed) {
+          const std::optional<double> total = progress.expectedTotal(now);
+          armed = (total && *total > kAutomaticCheckpointSeconds) ||
+                  now - start > kAutomaticCheckpointSeconds;
+          if (armed) {
+            std::fprintf(stderr,
+                         "prt: this render is expected to take %.0f s: its finished pixels are "
+                         "kept in '%s' (--no-checkpoint: not kept)\n",
+                         total ? *total : now - start, o.checkpointPath.c_str());
+          }
+        }
+        if (armed && now - lastSave >= o.checkpointEverySeconds) save(tile.image);
+        return true;
+      },
       o.costMapPath.empty() ? nullptr : &pixelSeconds);
+  if (signal != 0) {
+    progress.end(steadySeconds(), image, nullptr, false,
+                 "interrupted by signal " + std::to_string(signal));
+    view.finish();
+    const uint64_t count = static_cast<uint64_t>(std::count(done.begin(), done.end(), true));
+    if (count > 0) {
+      save(image);
+      std::fprintf(stderr, "prt: interrupted by signal %d; %llu of %llu pixels are saved in '%s'\n",
+                   signal, static_cast<unsigned long long>(count),
+                   static_cast<unsigned long long>(done.size()), o.checkpointPath.c_str());
+      tellHowToResume(o);
+    } else {
+      std::fprintf(stderr, "prt: interrupted by signal %d before any pixel was done\n", signal);
+    }
+    return 128 + signal;
+  }
   progress.end(steadySeconds(), image, nullptr, true,
                "written to " + scene.image.output, 0);
   writeImage(image, scene.image.output, o.imageOptions);
+  if (armed) removeCheckpoint(o.checkpointPath);
   view.finish();
   if (!o.costMapPath.empty()) {
     writeCostMapFile(o.costMapPath,
@@ -290,10 +359,19 @@ int runRender(const RenderOptions& o) {
   }
   checkOutputs(o, scene);
   checkVideo(o, framesOf(o));
-  if (parallel) return renderParallelLocal(o, scene, settings);
-  if (!o.checkpointPath.empty()) return renderSerialWithCheckpoint(o, scene, settings);
-  if (o.resume) throw InputError("--resume needs --checkpoint FILE: the checkpoint to resume");
-  return renderSerial(o, scene, settings);
+  // A serial sequence writes each frame as it is done; it keeps a checkpoint when asked.
+  const bool serialSequence = !parallel && framesOf(o).count() > 1;
+  const RenderOptions planned =
+      serialSequence && o.checkpointPath.empty() && !o.resume ? o : withCheckpointPlan(o, scene);
+  if (parallel) return renderParallelLocal(planned, scene, settings);
+  if (!planned.checkpointPath.empty() && (!planned.checkpointAutomatic || planned.resume)) {
+    return renderSerialWithCheckpoint(planned, scene, settings);
+  }
+  if (planned.resume) {
+    throw InputError("--resume continues from a checkpoint, and --no-checkpoint keeps none: "
+                     "drop one of them (or name the file with --checkpoint FILE)");
+  }
+  return renderSerial(planned, scene, settings);
 }
 
 }  // namespace

@@ -46,7 +46,10 @@ struct RenderOptions {
   double batchSeconds = 0.03;              // batches grow to this much work
   double workerTimeoutSeconds = 5;         // the lease: silence before a worker is lost
   std::string endgame = "off";             // on | off: copies of the last tasks
-  std::string checkpointPath;              // --checkpoint FILE
+  std::string checkpointPath;              // --checkpoint FILE (or, resolved, OUTPUT.ckpt)
+  bool noCheckpoint = false;               // --no-checkpoint: no automatic checkpoint
+  bool checkpointAutomatic = false;        // resolved: the path is the automatic one, kept
+                                           // only once the render proves long (or is stopped)
   double checkpointEverySeconds = 10;      // --checkpoint-every SECONDS
   bool resume = false;                     // --resume: start from the checkpoint
   std::optional<double> serialSeconds;     // serial time for speed-up

@@ -42,9 +42,13 @@ ParallelRun runMasterSide(Transport& net, const RunRequest& request, const std::
     if (!frameInfo.empty()) frameInfo[ordinal].doneSeconds = net.now() - startTime;
     if (request.frameDone) request.frameDone(ordinal, assembler.frame(ordinal));
   };
+  // Progress is kept for the board, and for the automatic checkpoint's estimate of the
+  // run's length.
+  ProgressBoard ownBoard;
   std::optional<RunProgress> progress;
-  if (request.progress) {
-    progress.emplace(*request.progress, scene.image.width, scene.image.height, frames.count());
+  if (request.progress || options.checkpointAutomatic) {
+    progress.emplace(request.progress ? *request.progress : ownBoard, scene.image.width,
+                     scene.image.height, frames.count());
   }
   MasterOptions masterOptions;
   masterOptions.endgame = options.endgame;
@@ -71,7 +75,7 @@ ParallelRun runMasterSide(Transport& net, const RunRequest& request, const std::
                       f.pixels += px.size();
                     });
                   }
-                  if (progress) progress->finished(t, w);
+                  if (progress) progress->finished(t);
                   assembler.add(w, t, rgb, frames.count() > 1
                                                ? std::function<void(uint64_t)>(frameCompleted)
                                                : std::function<void(uint64_t)>());
@@ -84,15 +88,36 @@ ParallelRun runMasterSide(Transport& net, const RunRequest& request, const std::
   loop.checkpointEverySeconds = options.checkpointEverySeconds;
   loop.interrupted = request.interrupted;
   loop.abandoned = std::move(abandoned);
+  // The automatic checkpoint: armed once the run is expected to be long.
+  bool armed = !options.checkpointAutomatic;
+  const auto arm = [&](double now) {
+    if (armed) return;
+    const std::optional<double> total = progress->expectedTotal(now);
+    if ((total && *total > kAutomaticCheckpointSeconds) ||
+        now - startTime > kAutomaticCheckpointSeconds) {
+      armed = true;
+      std::fprintf(stderr,
+                   "prt: this render is expected to take %.0f s: its finished pixels are kept "
+                   "in '%s' (--no-checkpoint: not kept)\n",
+                   total ? *total : now - startTime, options.checkpointPath.c_str());
+    }
+  };
   if (progress) {
     loop.results = [&](int, const ResultsMsg& r, double now) {
       progress->measured(r.tasks, r.computeSeconds, now);
     };
-    loop.tick = [&](double now) { progress->tick(now, assembler.image(), &master); };
+    loop.tick = [&](double now) {
+      progress->tick(now, assembler.image(), &master, false, 0, &assembler.owner());
+      arm(now);
+    };
   }
   const CheckpointKey key = checkpointKey(scene, request.settings, frames);
   bool warned = false;
   auto saveCheckpoint = [&](const std::string& why) {
+    // Unarmed, only a stop saves the pixels done: a short run is cheap to render again.
+    const bool periodic = why == "periodic" || why == "a worker was lost";
+    if (!armed && (periodic || master.doneCount() == master.resumedCount())) return;
+    armed = true;
     try {
       writeCheckpoint(options.checkpointPath, key, master.ledger().doneSet(), assembler.image(),
                       assembler.owner());
@@ -105,7 +130,9 @@ ParallelRun runMasterSide(Transport& net, const RunRequest& request, const std::
       warned = true;
     }
   };
-  if (!options.checkpointPath.empty()) {
+  if (!options.checkpointPath.empty() && options.checkpointAutomatic) {
+    loop.checkpoint = saveCheckpoint;
+  } else if (!options.checkpointPath.empty()) {
     // Written before any rendering: a path that cannot take it fails now, not hours later.
     writeCheckpoint(options.checkpointPath, key, master.ledger().doneSet(), assembler.image(),
                     assembler.owner());
@@ -113,11 +140,11 @@ ParallelRun runMasterSide(Transport& net, const RunRequest& request, const std::
   }
 
   startTime = net.now();
-  if (progress) progress->tick(startTime, assembler.image(), &master, true);
+  if (progress) progress->tick(startTime, assembler.image(), &master, true, 0, &assembler.owner());
   MasterLoopResult result = runMasterLoop(net, master, loop);
   if (progress) {
     progress->end(net.now(), assembler.image(), &master, result.failure.empty(),
-                  result.failure);
+                  result.failure, 0, &assembler.owner());
   }
   if (!result.failure.empty()) {
     std::string message = result.failure;
@@ -127,7 +154,7 @@ ParallelRun runMasterSide(Transport& net, const RunRequest& request, const std::
       message += " (the run does not wait for the " + std::to_string(due) +
                  (due == 1 ? " worker" : " workers") + " still due to join (--join-at))";
     }
-    if (!options.checkpointPath.empty()) {
+    if (!options.checkpointPath.empty() && armed) {
       message += "; " + std::to_string(master.doneCount()) + " of " + std::to_string(pixels) +
                  " pixels (" + percent(master.doneCount(), pixels) + ") are saved in '" +
                  options.checkpointPath +

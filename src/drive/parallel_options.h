@@ -20,6 +20,10 @@ struct FaultInjection {
   Kind kind = Kind::Crash;   // Crash: the connection drops; Hang: it goes silent
 };
 
+// A render expected to take longer than this (elapsed + ETA) keeps a checkpoint beside its
+// output without being asked (--no-checkpoint: never).
+inline constexpr double kAutomaticCheckpointSeconds = 30;
+
 struct ParallelOptions {
   int workers = 4;                     // local driver: worker threads; MPI: ranks - 1
   std::string strategy = kDefaultStrategy;  // see strategyNames()
@@ -37,6 +41,9 @@ struct ParallelOptions {
   std::vector<FaultInjection> faults;  // worker W is rank W+1 under MPI
   bool endgame = false;                // copies of the last tasks for workers left idle
   std::string checkpointPath;          // empty: no checkpoints
+  // The path is the automatic one: nothing is written until the run is expected to take
+  // more than kAutomaticCheckpointSeconds, or is stopped with pixels done.
+  bool checkpointAutomatic = false;
   double checkpointEverySeconds = 10;  // between periodic checkpoints
   std::string acceptWorkersPath;       // MPI: open a port for `prt join`, its name in this file
   std::vector<JoinWave> joins;         // threads: workers that join mid-render, numbered

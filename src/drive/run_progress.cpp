@@ -19,14 +19,12 @@ RunProgress::RunProgress(ProgressBoard& board, int width, int height, uint64_t f
       done_(perFrame_ * frames_, false),
       frameDone_(frames_, 0) {}
 
-void RunProgress::finished(const TaskSet& tasks, int worker) {
+void RunProgress::finished(const TaskSet& tasks) {
   cost_.finished(tasks);
-  if (worker >= 0 && owner_.empty()) owner_.assign(done_.size(), -1);
   tasks.forEach([&](uint64_t t) {
     if (t >= done_.size() || done_[t]) return;
     done_[t] = true;
     ++frameDone_[t / perFrame_];
-    if (worker >= 0) owner_[t] = static_cast<int16_t>(worker);
   });
 }
 
@@ -92,7 +90,8 @@ ProgressSnapshot RunProgress::build(double now, const Master* master) {
   return s;
 }
 
-void RunProgress::copyImage(const Image& image, uint64_t imageFirstTask) {
+void RunProgress::copyImage(const Image& image, uint64_t imageFirstTask,
+                            const std::vector<int16_t>* owner) {
   // The earliest frame still being rendered (the last one once all are done).
   uint64_t frame = 0;
   while (frame + 1 < frames_ && frameDone_[frame] == perFrame_) ++frame;
@@ -112,22 +111,23 @@ void RunProgress::copyImage(const Image& image, uint64_t imageFirstTask) {
     partial.done[i] = 1;
     std::copy_n(from.begin() + static_cast<std::ptrdiff_t>(3 * i), 3,
                 to.begin() + static_cast<std::ptrdiff_t>(3 * i));
-    if (!owner_.empty()) partial.owner[i] = owner_[offset + i];
+    if (owner != nullptr && offset + i < owner->size()) partial.owner[i] = (*owner)[offset + i];
   }
   partial.version = board_.snapshot().version;
   board_.publishImage(std::move(partial));
 }
 
 void RunProgress::tick(double now, const Image& image, const Master* master, bool force,
-                       uint64_t imageFirstTask) {
+                       uint64_t imageFirstTask, const std::vector<int16_t>* owner) {
   if (!force && now - lastPublish_ < kPublishSeconds) return;
   lastPublish_ = now;
   board_.publish(build(now, master));
-  if (board_.imageWanted()) copyImage(image, imageFirstTask);
+  if (board_.imageWanted()) copyImage(image, imageFirstTask, owner);
 }
 
 void RunProgress::end(double now, const Image& image, const Master* master, bool finished,
-                      const std::string& message, uint64_t imageFirstTask) {
+                      const std::string& message, uint64_t imageFirstTask,
+                      const std::vector<int16_t>* owner) {
   ProgressSnapshot s = build(now, master);
   s.phase = finished ? ProgressSnapshot::Phase::Finished : ProgressSnapshot::Phase::Failed;
   if (finished) {
@@ -138,7 +138,7 @@ void RunProgress::end(double now, const Image& image, const Master* master, bool
   }
   s.message = message;
   board_.publish(std::move(s));
-  copyImage(image, imageFirstTask);
+  copyImage(image, imageFirstTask, owner);
 }
 
 }  // namespace prt

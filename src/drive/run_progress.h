@@ -28,19 +28,21 @@ class RunProgress {
   void measured(const TaskSet& tasks, double seconds, double now) {
     cost_.measured(tasks, seconds, now);
   }
-  // Pixels in for the first time, from `worker` (-1: serial, or a checkpoint's).
-  void finished(const TaskSet& tasks, int worker = -1);
+  // Pixels in for the first time.
+  void finished(const TaskSet& tasks);
   void resumed(const TaskSet& tasks);  // a checkpoint's pixels, before the run starts
 
   // Publishes if a publish is due (or `force`). `image` holds the pixels of the tasks from
   // `imageFirstTask` on (a parallel render's: every task, a sequence's frames stacked; a
   // serial sequence's: the frame being rendered); `master` gives the worker rows, null for a
   // serial render.
+  // `owner` (optional) holds who rendered each task, as the ImageAssembler keeps it.
   void tick(double now, const Image& image, const Master* master, bool force = false,
-            uint64_t imageFirstTask = 0);
+            uint64_t imageFirstTask = 0, const std::vector<int16_t>* owner = nullptr);
   // The run ended: a last snapshot with what happened.
   void end(double now, const Image& image, const Master* master, bool finished,
-           const std::string& message, uint64_t imageFirstTask = 0);
+           const std::string& message, uint64_t imageFirstTask = 0,
+           const std::vector<int16_t>* owner = nullptr);
 
   const RemainingCost& cost() const { return cost_; }
   // The whole run's expected seconds (elapsed + ETA), once known.
@@ -48,14 +50,13 @@ class RunProgress {
 
  private:
   ProgressSnapshot build(double now, const Master* master);
-  void copyImage(const Image& image, uint64_t imageFirstTask);
+  void copyImage(const Image& image, uint64_t imageFirstTask, const std::vector<int16_t>* owner);
 
   ProgressBoard& board_;
   int width_, height_;
   uint64_t frames_, perFrame_;
   RemainingCost cost_;
   std::vector<bool> done_;
-  std::vector<int16_t> owner_;  // of the tasks, or empty for a serial render
   std::vector<uint64_t> frameDone_;
   uint64_t resumed_ = 0;
   double start_ = 0;

@@ -263,18 +263,58 @@ std::string RunReport::toJson() const {
 std::string RunReport::toTable() const {
   std::string out;
   char line[256];
-  std::snprintf(line, sizeof line, "%-7s %9s %8s %6s %9s %9s %9s %7s %10s\n", "worker", "speed_s",
-                "slowdown", "tasks", "pixels", "busy_s", "idle_s", "msgs", "bytes");
+  std::snprintf(line, sizeof line, "%-11s %9s %8s %6s %9s %9s %9s %7s %10s\n", "worker",
+                "speed_s", "slowdown", "tasks", "pixels", "busy_s", "idle_s", "msgs", "bytes");
   out += line;
-  for (const WorkerReport& w : workers) {
-    std::snprintf(line, sizeof line, "%-7s %9.4f %8.2f %6llu %9llu %9.3f %9.3f %7llu %10llu\n",
-                  (std::to_string(w.worker) + (w.lost ? "!" : "")).c_str(), w.speedIndexSeconds,
-                  w.slowdown, static_cast<unsigned long long>(w.tasks),
-                  static_cast<unsigned long long>(w.pixels), w.busySeconds, w.idleSeconds,
-                  static_cast<unsigned long long>(w.messagesSent + w.messagesReceived),
-                  static_cast<unsigned long long>(w.bytesSent + w.bytesReceived));
+  // A speed index that was not run is shown as not measured, never as a number.
+  const auto speed = [&](double seconds) {
+    if (!info.speedIndexRun || seconds <= 0) return std::string("-");
+    char b[32];
+    std::snprintf(b, sizeof b, "%.4f", seconds);
+    return std::string(b);
+  };
+  // Past kTableWorkers workers, rows of groups: sums of counts, means of the rest.
+  const size_t n = workers.size();
+  const size_t group = n > kTableWorkers ? (n + kTableGroups - 1) / kTableGroups : 1;
+  for (size_t first = 0; first < n; first += group) {
+    const size_t last = std::min(n, first + group) - 1;
+    WorkerReport sum;
+    std::vector<double> speeds;
+    bool lost = false;
+    for (size_t i = first; i <= last; ++i) {
+      const WorkerReport& w = workers[i];
+      speeds.push_back(w.speedIndexSeconds);
+      sum.slowdown += w.slowdown;
+      sum.tasks += w.tasks;
+      sum.pixels += w.pixels;
+      sum.busySeconds += w.busySeconds;
+      sum.idleSeconds += w.idleSeconds;
+      sum.messagesSent += w.messagesSent + w.messagesReceived;
+      sum.bytesSent += w.bytesSent + w.bytesReceived;
+      lost = lost || w.lost;
+    }
+    sum.slowdown -= 1;  // the default 1 the sum started from
+    const auto count = static_cast<double>(last - first + 1);
+    std::sort(speeds.begin(), speeds.end());
+    const std::string name =
+        (group == 1 ? std::to_string(workers[first].worker)
+                    : std::to_string(workers[first].worker) + "-" +
+                          std::to_string(workers[last].worker)) +
+        (lost ? "!" : "");
+    std::snprintf(line, sizeof line, "%-11s %9s %8.2f %6llu %9llu %9.3f %9.3f %7llu %10llu\n",
+                  name.c_str(), speed(speeds[speeds.size() / 2]).c_str(), sum.slowdown / count,
+                  static_cast<unsigned long long>(sum.tasks),
+                  static_cast<unsigned long long>(sum.pixels), sum.busySeconds / count,
+                  sum.idleSeconds / count, static_cast<unsigned long long>(sum.messagesSent),
+                  static_cast<unsigned long long>(sum.bytesSent));
     out += line;
   }
+  if (group > 1) {
+    out += "(" + std::to_string(n) + " workers in groups of " + std::to_string(group) +
+           ": tasks, pixels, messages and bytes summed; speed_s the median; slowdown, busy_s "
+           "and idle_s the means; ! a group with a lost worker)\n";
+  }
+  if (!info.speedIndexRun) out += "(speed_s: no speed index was run, so none is shown)\n";
   auto opt = [](const std::optional<double>& v, const char* fmt) {
     if (!v) return std::string("n/a");
     char b[32];
@@ -283,9 +323,10 @@ std::string RunReport::toTable() const {
   };
   std::snprintf(line, sizeof line,
                 "strategy %s (%s), %zu workers: elapsed %.3f s, speed-up %s, efficiency %.1f%%, "
-                "MASU %.2f, ASU %s, %llu messages, %llu bytes\n",
+                "MASU %s, ASU %s, %llu messages, %llu bytes\n",
                 info.strategy.c_str(), info.driver.c_str(), workers.size(), elapsedSeconds,
-                opt(speedup, "%.2f").c_str(), 100 * efficiency, masu,
+                opt(speedup, "%.2f").c_str(), 100 * efficiency,
+                masu > 0 ? opt(masu, "%.2f").c_str() : "n/a",
                 asu ? opt(std::optional<double>(100 * *asu), "%.1f%%").c_str() : "n/a",
                 static_cast<unsigned long long>(messages), static_cast<unsigned long long>(bytes));
   out += line;
@@ -311,7 +352,10 @@ std::string RunReport::toTable() const {
                   spans.empty() ? "n/a" : opt(spans[spans.size() / 2], "%.2f s").c_str());
     out += line;
   }
-  if (!speedup) out += "(speed-up and ASU need --serial-seconds T or --measure-serial)\n";
+  if (!speedup) {
+    out += masu > 0 ? "(speed-up and ASU need --serial-seconds T or --measure-serial)\n"
+                    : "(speed-up, MASU and ASU need --serial-seconds T or --measure-serial)\n";
+  }
   if (masuBasis != "speed_index") {
     out += "(no speed index was run: MASU and ASU are from the measured throughput)\n";
   }

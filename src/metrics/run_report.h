@@ -32,6 +32,11 @@
 
 namespace prt {
 
+// The text table shows one row per worker up to kTableWorkers of them, and past that rows
+// for about kTableGroups groups of neighbouring workers.
+inline constexpr size_t kTableWorkers = 64;
+inline constexpr size_t kTableGroups = 32;
+
 struct WorkerReport {
   int worker = 0;
   double speedIndexSeconds = 0;

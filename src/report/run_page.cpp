@@ -223,8 +223,11 @@ std::string measures(const json& r) {
           (number(r, "serial_s") ? formatSeconds(*number(r, "serial_s")) : std::string("unknown")) +
           " / elapsed",
       r.value("speedup", json()));
-  s += card("masu", formatNumber(numberOr(r, "masu", 0)), "MASU",
-            "most the speeds allow: sum over workers of serial speed index / worker's",
+  const double masu = numberOr(r, "masu", 0);
+  s += card("masu", masu > 0 ? formatNumber(masu) : "n/a", "MASU",
+            masu > 0 ? "most the speeds allow: sum over workers of serial speed index / worker's"
+                     : "needs the serial time (--serial-seconds or --measure-serial) or a speed "
+                       "index",
             r.value("masu", json()));
   s += card("asu", asu ? formatPercent(*asu) : "n/a", "ASU",
             "speed-up / MASU: how close the run came to that ideal", r.value("asu", json()));
@@ -235,23 +238,69 @@ std::string measures(const json& r) {
   s += card("bytes", formatBytes(count(r, "bytes")), "bytes", "their encoded size",
             r.value("bytes", json()));
   s += "</div>\n";
-  // Fault and recovery counts and any measure added after this page was written.
-  static const std::map<std::string, std::pair<std::string, std::string>> kLabels = {
-      {"lost_workers", {"lost workers", "declared lost by the master; their tasks went to others"}},
-      {"reissued_tasks", {"reissued tasks", "handed out again after a loss or as duplicates"}},
-      {"resumed_pixels", {"resumed pixels", "taken from a checkpoint instead of rendered"}},
-      {"joined_workers", {"joined workers", "arrived mid-render"}}};
+  // Every other measure, labelled and grouped; raw keys only in "all report fields".
+  struct Label {
+    const char* group;
+    const char* label;
+    const char* meaning;
+  };
+  static const char* kFaults = "Faults and recovery";
+  static const char* kNetwork = "Network";
+  static const char* kBalance = "How the ideal was measured";
+  static const char* kFrames = "Animation";
+  static const std::map<std::string, Label> kLabels = {
+      {"lost_workers", {kFaults, "lost workers", "declared lost by the master; their tasks went to others"}},
+      {"reissued_tasks", {kFaults, "reissued tasks", "handed out again after a loss"}},
+      {"duplicate_pixels", {kFaults, "duplicate pixels", "results that came twice; the first was kept"}},
+      {"endgame_copies", {kFaults, "endgame copies", "tasks copied to idle workers at the end (--endgame)"}},
+      {"missing_summaries", {kFaults, "missing summaries", "live workers whose times never came: their rows lack busy and idle times"}},
+      {"resumed_pixels", {kFaults, "resumed pixels", "taken from a checkpoint instead of rendered"}},
+      {"joined_workers", {kFaults, "joined workers", "arrived mid-render"}},
+      {"worker_timeout_s", {kFaults, "worker lease", "silence after which a worker is lost (--worker-timeout)"}},
+      {"heartbeat_s", {kNetwork, "heartbeat", "how often the master and the workers say they are alive"}},
+      {"scene_bytes", {kNetwork, "scene size", "the scene as sent to each worker"}},
+      {"scene_transfer_s", {kNetwork, "scene transfer", "until every worker had the scene"}},
+      {"masu_basis", {kBalance, "MASU from", "the workers' speed indices, or their measured throughput when none ran"}},
+      {"measured_masu", {kBalance, "MASU by throughput", "sum of the workers' measured rates / the serial rate"}},
+      {"measured_asu", {kBalance, "ASU by throughput", "speed-up / MASU by throughput"}},
+      {"speed_index_masu", {kBalance, "MASU by speed index", "the paper's: sum of serial speed index / worker's"}},
+      {"speed_index_asu", {kBalance, "ASU by speed index", "speed-up / MASU by speed index"}},
+      {"ideal_basis", {kBalance, "ideal from", "the speeds the ideal time assumes"}},
+      {"frame_count", {kFrames, "frames", "in the sequence, rendered as one job"}},
+      {"fps", {kFrames, "frames per second", "the animation's speed (--fps)"}},
+      {"seconds_per_frame", {kFrames, "per frame", "the job's time over its frames"}}};
   static const std::set<std::string> kFaultKeys = {"lost_workers", "reissued_tasks",
-                                                   "resumed_pixels"};
-  std::string extra;
+                                                   "missing_summaries", "duplicate_pixels"};
+  const auto humanValue = [](const std::string& key, const json& value) {
+    if (value.is_string()) {
+      const std::string v = value.get<std::string>();
+      if (v == "measured_throughput") return std::string("measured throughput");
+      if (v == "speed_index") return std::string("speed indices");
+      if (v == "slowdown") return std::string("--slowdown factors");
+      return v;
+    }
+    if (value.is_number() && key.size() > 2 && key.substr(key.size() - 2) == "_s") {
+      return formatSeconds(value.get<double>());
+    }
+    if (key == "scene_bytes" && value.is_number()) return formatBytes(value.get<uint64_t>());
+    return genericValue(value);
+  };
+  std::map<std::string, std::string> groups;  // group -> its cards
+  std::string raw;
   for (const auto& [key, value] : r.items()) {
+    if (!value.is_object() && !(value.is_array() && key == "workers")) {
+      raw += "<tr><th>" + escapeHtml(key) + "</th><td>" +
+             escapeHtml(value.is_null() ? std::string("(none)") : value.dump().substr(0, 200)) +
+             "</td></tr>";
+    }
     if (kKnownKeys.count(key) || value.is_object() || value.is_null()) continue;
     const auto known = kLabels.find(key);
-    const std::string label = known != kLabels.end() ? known->second.first : humanKey(key);
-    const std::string tip = known != kLabels.end() ? known->second.second : "from the report";
+    const std::string group = known != kLabels.end() ? known->second.group : "Other measures";
+    const std::string label = known != kLabels.end() ? known->second.label : humanKey(key);
+    const std::string tip = known != kLabels.end() ? known->second.meaning : "from the report";
     const bool fault = kFaultKeys.count(key) && ((value.is_array() && !value.empty()) ||
                                                  (value.is_number() && value.get<double>() > 0));
-    std::string shown = genericValue(value), detail = tip;
+    std::string shown = humanValue(key, value), detail = tip;
     if (key == "joined_workers" && value.is_array()) {
       shown = formatCount(value.size());
       for (const json& j : value) {
@@ -265,10 +314,15 @@ std::string measures(const json& r) {
       shown = formatCount(value.size());
       if (!value.empty()) detail += ": " + value.dump().substr(0, 120);
     }
-    extra += card(key, shown, label, detail, value, fault ? "fault" : "");
+    groups[group] += card(key, shown, label, detail, value, fault ? "fault" : "");
   }
-  if (!extra.empty())
-    s += "<h3>Faults, recovery and other measures</h3><div class=\"cards\">\n" + extra + "</div>\n";
+  for (const char* group : {kFaults, kNetwork, kBalance, kFrames, "Other measures"}) {
+    const auto g = groups.find(group);
+    if (g == groups.end()) continue;
+    s += "<h3>" + std::string(group) + "</h3><div class=\"cards\">\n" + g->second + "</div>\n";
+  }
+  s += "<details class=\"raw\"><summary>All report fields</summary><table class=\"raw\">" +
+       raw + "</table></details>\n";
   s += "</section>\n";
   return s;
 }
@@ -389,7 +443,11 @@ std::string detailsSection(const json& r) {
                            : driver == "simulated" ? "simulated: virtual time over a cost map"
                                                    : driver));
   if (const auto serial = number(r, "serial_s")) row("serial time", formatSeconds(*serial));
-  row("serial machine's speed index", formatSeconds(numberOr(r, "master_speed_index_s", 0)));
+  const double masterIndex = numberOr(r, "master_speed_index_s", 0);
+  row("serial machine's speed index",
+      masterIndex > 0 && text(r, "masu_basis") != "measured_throughput"
+          ? formatSeconds(masterIndex)
+          : std::string("not measured (no speed index was run)"));
   if (!text(context, "command_line").empty()) {
     row("command line",
         "<code class=\"command\">" + escapeHtml(text(context, "command_line")) + "</code>");

@@ -13,6 +13,13 @@ const std::set<std::string> kKnownWorkerKeys = {
     "worker", "speed_index_s", "slowdown",          "tasks",      "pixels",         "busy_s",
     "idle_s", "messages_sent", "messages_received", "bytes_sent", "bytes_received", "lost"};
 
+// Whether the workers ran a speed index: the report's MASU comes from it when they did.
+bool speedIndexMeasured(const json& r) { return text(r, "masu_basis") != "measured_throughput"; }
+
+std::string speedIndexText(const json& r, double seconds) {
+  return speedIndexMeasured(r) && seconds > 0 ? formatSeconds(seconds) : "not measured";
+}
+
 std::string workerRow(const json& w, const json& r, double totalPixels, double elapsed,
                       const std::vector<std::string>& extraKeys, const std::string& colour) {
   const int id = w.value("worker", 0);
@@ -27,9 +34,10 @@ std::string workerRow(const json& w, const json& r, double totalPixels, double e
          "\">" + shown + "</td>";
   };
   cell(chip(colour) + std::to_string(id), w.value("worker", json()), "worker");
-  cell(escapeHtml(formatSeconds(index)), w.value("speed_index_s", json()), "speed_index_s");
-  cell(masterIndex > 0 && index > 0 ? formatNumber(masterIndex / index) : "n/a",
-       masterIndex > 0 && index > 0 ? json(masterIndex / index) : json(), "relative_speed");
+  const bool indexed = speedIndexMeasured(r) && masterIndex > 0 && index > 0;
+  cell(escapeHtml(speedIndexText(r, index)), w.value("speed_index_s", json()), "speed_index_s");
+  cell(indexed ? formatNumber(masterIndex / index) : "n/a",
+       indexed ? json(masterIndex / index) : json(), "relative_speed");
   cell(formatNumber(numberOr(w, "slowdown", 1)) + "×", w.value("slowdown", json()), "slowdown");
   cell(formatCount(count(w, "tasks")), w.value("tasks", json()), "tasks");
   cell(formatCount(count(w, "pixels")) + " <small>" +
@@ -122,7 +130,7 @@ std::string speedClasses(const json& r, double totalPixels) {
     }
     const double m = static_cast<double>(ws.size());
     s += "<tr><td>" + formatCount(ws.size()) + "</td><td>" + formatNumber(lo) +
-         (hi > lo ? "–" + formatNumber(hi) : "") + "×</td><td>" + formatSeconds(index / m) +
+         (hi > lo ? "–" + formatNumber(hi) : "") + "×</td><td>" + speedIndexText(r, index / m) +
          "</td><td>" + formatCount(static_cast<uint64_t>(pixels)) + " <small>" +
          formatPercent(totalPixels > 0 ? pixels / totalPixels : 0) + "</small></td><td>" +
          formatPercent(elapsed > 0 ? busy / m / elapsed : 0) + "</td><td>" +
@@ -159,7 +167,8 @@ std::string workerInfo(const json& w, const json& r, double totalPixels) {
       "worker " + std::to_string(id) + ": " + formatCount(count(w, "pixels")) + " pixels (" +
       formatPercent(totalPixels > 0 ? numberOr(w, "pixels", 0) / totalPixels : 0) +
       "), rendering " + formatPercent(elapsed > 0 ? numberOr(w, "busy_s", 0) / elapsed : 0) +
-      " of the run, speed index " + formatSeconds(numberOr(w, "speed_index_s", 0)) + ", slowdown " +
+      " of the run, speed index " + speedIndexText(r, numberOr(w, "speed_index_s", 0)) +
+      ", slowdown " +
       formatNumber(numberOr(w, "slowdown", 1)) + "×";
   if (w.value("lost", false)) s += ", lost";
   return s;

@@ -121,7 +121,9 @@ Image renderImage(const Renderer& renderer, int threads, RenderStats* stats,
   if (pixelSeconds) pixelSeconds->assign(renderer.pixelCount(), 0.0f);
   const uint64_t tileCount = static_cast<uint64_t>(tilesX) * static_cast<uint64_t>(tilesY);
   const uint64_t step = spreadingStep(tileCount);
+  std::atomic<bool> stopped{false};
   parallelFor(tileCount, threads, [&](uint64_t i) {
+    if (stopped.load(std::memory_order_relaxed)) return;
     const uint64_t tile = (i * step) % tileCount;
     const auto tileStart = std::chrono::steady_clock::now();
     const int tx = static_cast<int>(tile % static_cast<uint64_t>(tilesX)) * kTileSize;
@@ -144,7 +146,9 @@ Image renderImage(const Renderer& renderer, int threads, RenderStats* stats,
           std::chrono::duration<double>(std::chrono::steady_clock::now() - tileStart).count();
       std::lock_guard lock(progressMutex);
       done += static_cast<uint64_t>(x1 - tx) * (y1 - ty);
-      progress(TileDone{tx, ty, x1, y1, seconds, image, done, renderer.pixelCount()});
+      if (!progress(TileDone{tx, ty, x1, y1, seconds, image, done, renderer.pixelCount()})) {
+        stopped.store(true, std::memory_order_relaxed);
+      }
     }
   });
   if (stats) {

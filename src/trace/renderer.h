@@ -49,8 +49,9 @@ struct TileDone {
   uint64_t pixelsDone, pixelsTotal;
 };
 // Called after each tile; may be called from any rendering thread, but never concurrently
-// with itself (calls are ordered after the tiles they report).
-using ProgressFn = std::function<void(const TileDone&)>;
+// with itself (calls are ordered after the tiles they report). Returning false stops the
+// render: tiles not started are left black (a render stopped by a signal).
+using ProgressFn = std::function<bool(const TileDone&)>;
 
 struct RenderStats {
   uint64_t rays = 0;

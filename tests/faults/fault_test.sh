@@ -161,9 +161,10 @@ PY
     grep -q "belongs to another render" err.txt || fail "no reason given: $(cat err.txt)"
     run $slow -o out.pfm --checkpoint ck
     [ "$status" -eq 2 ] || fail "an existing checkpoint without --resume: exit $status, not 2"
-    grep -q "add --resume" err.txt || fail "no hint: $(cat err.txt)"
-    run $slow -o out.pfm --resume
-    [ "$status" -eq 2 ] || fail "--resume without --checkpoint: exit $status"
+    grep -q "to continue it, run" err.txt || fail "no hint: $(cat err.txt)"
+    grep -q -- "--checkpoint ck --resume" err.txt || fail "no resume command: $(cat err.txt)"
+    run $slow -o out.pfm --resume --no-checkpoint
+    [ "$status" -eq 2 ] || fail "--resume with --no-checkpoint: exit $status"
     [ ! -f out.pfm ] || fail "a refused run wrote an image"
     ;;
   *)
