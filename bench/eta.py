@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """How honest the ETA is: its error over a run on the complex scene.
 
-    bench/eta.py [PRT] [--runs 5] [--size 320x240] [--case D]
+    bench/eta.py [PRT] [--runs 5] [--size 640x480] [--case D]
 
 Renders scenes/complex.scene with --serve on a free loopback port and polls /status.json
 five times a second. Once the run is over its true length T is known, and at each tenth of
@@ -13,8 +13,9 @@ self-scheduling (scan-line chunks, the order a naive estimate suffers from most)
 workers. Prints, per way and per tenth, the median error of --runs runs and its range; the
 target is an error within 25 % after 20 % of the run.
 
-The workers are emulated at a 6x slowdown (2 x 1/6 of a core: faithful on a 2-core machine
-even when it is busy) so that a run lasts long enough for its estimate to matter.
+The workers are emulated at a 4x slowdown (2 x 1/4 of a core: faithful on a 2-core machine
+even when it is half busy) so that a run lasts long enough for its estimate to matter; the
+serial render runs on one thread.
 """
 import argparse
 import json
@@ -30,9 +31,9 @@ here = os.path.dirname(os.path.abspath(__file__))
 root = os.path.dirname(here)
 
 WAYS = {
-    "serial": [],
-    "adaptive (default), 2 workers": ["--workers", "2", "--slowdown", "6,6"],
-    "self (scan-line chunks), 2 workers": ["--workers", "2", "--slowdown", "6,6", "--strategy", "self"],
+    "serial, 1 thread": ["--threads", "1"],
+    "adaptive (default), 2 workers": ["--workers", "2", "--slowdown", "4,4"],
+    "self (scan-line chunks), 2 workers": ["--workers", "2", "--slowdown", "4,4", "--strategy", "self"],
 }
 
 
@@ -43,7 +44,7 @@ def one_run(prt, way, size, case, work):
         proc = subprocess.Popen(
             [prt, "render", os.path.join(root, "scenes", "complex.scene"), "--case", case,
              "--width", width, "--height", height, "--serve", "127.0.0.1:0",
-             "-o", os.path.join(work, "eta.pfm"), "-q"] + WAYS[way],
+             "-o", os.path.join(work, "eta.pfm"), "-q", "--no-checkpoint"] + WAYS[way],
             stdout=subprocess.DEVNULL, stderr=err)
     url = None
     while url is None and proc.poll() is None:
@@ -89,7 +90,7 @@ def main():
     p = argparse.ArgumentParser()
     p.add_argument("prt", nargs="?", default=os.path.join(root, "build", "prt"))
     p.add_argument("--runs", type=int, default=5)
-    p.add_argument("--size", default="320x240")
+    p.add_argument("--size", default="640x480")
     p.add_argument("--case", default="D")
     a = p.parse_args()
     with tempfile.TemporaryDirectory() as work:

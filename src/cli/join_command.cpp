@@ -1,5 +1,5 @@
 // prt join FILE: under mpirun, adds this job's ranks as workers to a running render that was
-// started with --accept-workers FILE (see the README's "Machines that join").
+// started with --accept-workers FILE (see docs/running.md, "Machines that join a running render").
 
 #include "cli/commands.h"
 #include "cli/parallel_render.h"

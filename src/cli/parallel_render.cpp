@@ -110,7 +110,7 @@ void addParallelOptions(CLI::App& cmd, RenderOptions& o) {
   cmd.add_option("--accept-workers", o.acceptWorkersPath,
                  "Under mpirun: open an MPI port and write its name to FILE, so that "
                  "`mpirun -np K prt join FILE` adds K workers to the running render (both "
-                 "jobs need the same --ompi-server; see the README)")
+                 "jobs need the same --ompi-server; see docs/running.md)")
       ->group(parallel);
   cmd.add_option("--speed-index", o.speedIndex,
                  "Speed index the workers measure: hanoi (the paper's Towers of Hanoi run), "

@@ -49,6 +49,9 @@ ParallelRun runMasterSide(Transport& net, const RunRequest& request, const std::
   if (request.progress || options.checkpointAutomatic) {
     progress.emplace(request.progress ? *request.progress : ownBoard, scene.image.width,
                      scene.image.height, frames.count());
+    // The cost of each part of the image, from a few pixels of frame 0 rendered here.
+    FrameRenderer probe(scene, request.settings, frames);
+    progress->probeCosts(probe.frame(0));
   }
   MasterOptions masterOptions;
   masterOptions.endgame = options.endgame;

@@ -2,7 +2,10 @@
 
 #include <algorithm>
 
+#include <chrono>
+
 #include "cluster/master.h"
+#include "trace/renderer.h"
 
 namespace prt {
 namespace {
@@ -18,6 +21,48 @@ RunProgress::RunProgress(ProgressBoard& board, int width, int height, uint64_t f
       cost_(width, height, frames_),
       done_(perFrame_ * frames_, false),
       frameDone_(frames_, 0) {}
+
+double RunProgress::probeCosts(const Renderer& renderer, double budgetSeconds) {
+  using Clock = std::chrono::steady_clock;
+  const auto start = Clock::now();
+  const auto seconds = [](Clock::duration d) { return std::chrono::duration<double>(d).count(); };
+  const int cx = cost_.cellsX(), cy = cost_.cellsY();
+  const int cw = cost_.cellWidth(), ch = cost_.cellHeight();
+  std::vector<double> prior(static_cast<size_t>(cx) * static_cast<size_t>(cy), 0.0);
+  uint64_t rays = 0;
+  for (int y = 0; y < cy; ++y) {
+    for (int x = 0; x < cx; ++x) {
+      // 2 x 2 pixels spread over the cell.
+      const int x0 = x * cw, y0 = y * ch;
+      double spent = 0;
+      int samples = 0;
+      for (const auto& [fx, fy] : {std::pair{1, 1}, std::pair{3, 1}, std::pair{1, 3}, std::pair{3, 3}}) {
+        const int px = x0 + fx * cw / 4, py = y0 + fy * ch / 4;
+        if (px >= width_ || py >= height_) continue;
+        const auto t0 = Clock::now();
+        (void)renderer.renderPixel(static_cast<uint64_t>(py) * static_cast<uint64_t>(width_) +
+                                       static_cast<uint64_t>(px),
+                                   rays);
+        spent += seconds(Clock::now() - t0);
+        ++samples;
+      }
+      prior[static_cast<size_t>(y) * static_cast<size_t>(cx) + static_cast<size_t>(x)] =
+          samples > 0 ? spent / samples : 0.0;
+      if (seconds(Clock::now() - start) > budgetSeconds) return seconds(Clock::now() - start);
+    }
+  }
+  // Cells past the image (none measured) and too-cheap-to-time ones get the smallest cost
+  // measured, so every prior is positive.
+  double least = 0;
+  for (double v : prior) {
+    if (v > 0 && (least == 0 || v < least)) least = v;
+  }
+  if (least > 0) {
+    for (double& v : prior) v = std::max(v, least);
+    cost_.setPrior(std::move(prior));
+  }
+  return seconds(Clock::now() - start);
+}
 
 void RunProgress::finished(const TaskSet& tasks) {
   cost_.finished(tasks);

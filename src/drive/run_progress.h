@@ -17,6 +17,7 @@
 namespace prt {
 
 class Master;
+class Renderer;
 
 class RunProgress {
  public:
@@ -24,6 +25,12 @@ class RunProgress {
 
   // A sequence's tasks are its frames' pixels one frame after another.
   RunProgress(ProgressBoard& board, int width, int height, uint64_t frames = 1);
+
+  // Before the run: renders a few pixels of every cell of the estimate's grid on this
+  // thread (frame 0, at most `budgetSeconds`), so that the estimate knows from the start
+  // which parts of the image cost more, whatever order the strategy renders them in.
+  // Costs about 1,000 pixels; returns the seconds it took.
+  double probeCosts(const Renderer& renderer, double budgetSeconds = 0.5);
 
   void measured(const TaskSet& tasks, double seconds, double now) {
     cost_.measured(tasks, seconds, now);

@@ -9,6 +9,7 @@ namespace prt {
 namespace {
 constexpr int kCellsAcross = 16;  // per side of a frame
 constexpr double kMinWindow = 2, kMaxWindow = 30, kWindowShare = 0.25;
+constexpr double kShrinkPixels = 64;
 }  // namespace
 
 RemainingCost::RemainingCost(int width, int height, uint64_t frames)
@@ -49,6 +50,14 @@ size_t RemainingCost::cellOf(uint64_t task) const {
          static_cast<size_t>(x / cellW_);
 }
 
+void RemainingCost::setPrior(std::vector<double> perCell) {
+  if (perCell.size() != acrossFrames_.size() || measuredSamples_ > 0) return;
+  for (double v : perCell) {
+    if (!(v > 0) || !std::isfinite(v)) return;
+  }
+  prior_ = std::move(perCell);
+}
+
 void RemainingCost::measured(const TaskSet& tasks, double seconds, double now) {
   if (tasks.empty() || !std::isfinite(seconds) || seconds < 0) return;
   const double each = seconds / static_cast<double>(tasks.size());
@@ -60,6 +69,7 @@ void RemainingCost::measured(const TaskSet& tasks, double seconds, double now) {
     ++cells_[c].samples;
     acrossFrames_[c % perFrameCells].seconds += each;
     ++acrossFrames_[c % perFrameCells].samples;
+    if (!prior_.empty()) measuredPrior_ += prior_[c % perFrameCells];
   });
   measuredSeconds_ += seconds;
   measuredSamples_ += tasks.size();
@@ -87,9 +97,7 @@ std::optional<double> RemainingCost::remainingWork() const {
     const uint64_t left = cell.pixels - std::min(cell.pixels, cell.finished);
     if (left == 0) continue;
     const Cell& across = acrossFrames_[c % perFrameCells];
-    const double mean = cell.samples > 0     ? cell.seconds / static_cast<double>(cell.samples)
-                        : across.samples > 0 ? across.seconds / static_cast<double>(across.samples)
-                                             : overall;
+    const double mean = cellMean(cell, across, unmeasured(c % perFrameCells, overall));
     work += static_cast<double>(left) * mean;
   }
   return work;
@@ -106,12 +114,27 @@ std::optional<double> RemainingCost::doneFraction() const {
     const Cell& cell = cells_[c];
     if (cell.finished == 0) continue;
     const Cell& across = acrossFrames_[c % perFrameCells];
-    const double mean = cell.samples > 0     ? cell.seconds / static_cast<double>(cell.samples)
-                        : across.samples > 0 ? across.seconds / static_cast<double>(across.samples)
-                                             : overall;
+    const double mean = cellMean(cell, across, unmeasured(c % perFrameCells, overall));
     done += static_cast<double>(std::min(cell.finished, cell.pixels)) * mean;
   }
   return done + *left > 0 ? done / (done + *left) : 1.0;
+}
+
+// A cell's mean, shrunk towards what it would be without its own samples by the weight of
+// kShrinkPixels pixels: a cell seen through one tile is not trusted as much as one seen whole.
+double RemainingCost::cellMean(const Cell& cell, const Cell& across, double fallback) {
+  const double prior = across.samples > cell.samples
+                           ? (across.seconds - cell.seconds) /
+                                 static_cast<double>(across.samples - cell.samples)
+                           : fallback;
+  const auto n = static_cast<double>(cell.samples);
+  return (cell.seconds + kShrinkPixels * prior) / (n + kShrinkPixels);
+}
+
+double RemainingCost::unmeasured(size_t frameCell, double overall) const {
+  if (prior_.empty() || measuredPrior_ <= 0) return overall;
+  const double meanPrior = measuredPrior_ / static_cast<double>(measuredSamples_);
+  return overall * prior_[frameCell] / meanPrior;
 }
 
 double RemainingCost::rate(double now) const {

@@ -39,6 +39,18 @@ class RemainingCost {
   // Pixels finished for the first time (each exactly once), measured or not (a checkpoint's).
   void finished(const TaskSet& tasks);
 
+  // The grid of cells of a frame, for a prior (setPrior).
+  int cellsX() const { return cellsX_; }
+  int cellsY() const { return cellsY_; }
+  // The first pixel (x, y) of cell (cx, cy) and its size; a cell past the image is empty.
+  int cellWidth() const { return cellW_; }
+  int cellHeight() const { return cellH_; }
+  // Relative costs of the cells of a frame (cellsY() x cellsX(), row-major; > 0), from a
+  // sample rendered before the run: a cell nobody has measured yet is expected to cost the
+  // measured mean scaled by its prior over the measured pixels' mean prior, not the plain
+  // mean. Without one, every cell's prior is the same.
+  void setPrior(std::vector<double> perCell);
+
   uint64_t taskCount() const { return taskCount_; }
   uint64_t finishedCount() const { return finished_; }
   // Expected seconds of work still to do; nothing before the first measurement.
@@ -58,6 +70,8 @@ class RemainingCost {
   };
   size_t cellOf(uint64_t task) const;
   double rate(double now) const;
+  double unmeasured(size_t frameCell, double overall) const;
+  static double cellMean(const Cell& cell, const Cell& across, double fallback);
 
   int width_, height_;
   uint64_t frames_, perFrame_, taskCount_;
@@ -69,6 +83,8 @@ class RemainingCost {
   uint64_t measuredSamples_ = 0;
   uint64_t finished_ = 0;
   std::deque<std::pair<double, double>> history_;  // (time, measured seconds so far)
+  std::vector<double> prior_;      // per frame cell, or empty
+  double measuredPrior_ = 0;       // sum of the prior over the measured pixels
 };
 
 }  // namespace prt

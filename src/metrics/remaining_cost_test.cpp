@@ -69,5 +69,22 @@ TEST(RemainingCost, FinishedIsZeroAndBadMeasurementsAreIgnored) {
   cost.measured(TaskSet::range(1000, 5), 1, 3);  // outside the image: ignored
 }
 
+// Scan lines from the top, the bottom half 9 times dearer: without a prior the bottom is
+// expected at the top's cost; with the relative costs of a probe, at its own.
+TEST(RemainingCost, APriorScalesCellsNobodyMeasuredYet) {
+  for (const bool withPrior : {false, true}) {
+    RemainingCost cost(16, 16);  // cells of one pixel
+    if (withPrior) {
+      std::vector<double> prior(256, 1.0);
+      for (size_t c = 128; c < 256; ++c) prior[c] = 9.0;
+      cost.setPrior(prior);
+    }
+    cost.measured(TaskSet::range(0, 64), 64 * 0.001, 1);  // the first 4 rows
+    cost.finished(TaskSet::range(0, 64));
+    const double truth = 64 * 0.001 + 128 * 0.009;
+    EXPECT_NEAR(*cost.remainingWork(), withPrior ? truth : 192 * 0.001, 1e-9) << withPrior;
+  }
+}
+
 }  // namespace
 }  // namespace prt

@@ -158,7 +158,7 @@ ParallelRun renderMpiMaster(MpiSession& session, const RunRequest& request) {
       comm.acceptor = std::make_unique<MpiAcceptor>(options.acceptWorkersPath);
     } catch (const MpiError& e) {
       throw InputError(std::string("--accept-workers: ") + e.what() +
-                       " (run both mpiruns with the same --ompi-server; see the README)");
+                       " (run both mpiruns with the same --ompi-server; see docs/running.md)");
     }
     MpiAcceptor* acceptor = comm.acceptor.get();
     comm.link->setAcceptSource([acceptor] { return acceptor->take(); }, encodeWelcome(options));

@@ -7,7 +7,7 @@
 //   rank 0        the master: sends the scene, runs the strategy, assembles the image
 //   rank r >= 1   worker r - 1: never reads the scene file; it gets the scene text from rank 0
 //
-// Faults (see the README's "Faults"): a worker rank that dies, hangs or is cut off is lost
+// Faults (see docs/running.md, "Faults"): a worker rank that dies, hangs or is cut off is lost
 // when its lease runs out, and the master finishes the image with the live ranks. For a rank
 // that dies to leave the job alive, run `mpirun --enable-recovery`; without it mpirun ends the
 // whole job, and the checkpoint (--checkpoint) keeps the finished pixels for --resume. After
