@@ -217,6 +217,7 @@ ParallelOptions toParallelOptions(const RenderOptions& o, int workers) {
   p.endgame = o.endgame == "on";
   p.checkpointPath = o.checkpointPath;
   p.checkpointAutomatic = o.checkpointAutomatic;
+  p.announceCheckpoint = !o.quiet;
   p.checkpointEverySeconds = o.checkpointEverySeconds;
   p.faults = parseFaults(o.faults);
   return p;

@@ -266,7 +266,7 @@ int renderSerial(const RenderOptions& o, const Scene& scene, const RenderSetting
           const std::optional<double> total = progress.expectedTotal(now);
           armed = (total && *total > kAutomaticCheckpointSeconds) ||
                   now - start > kAutomaticCheckpointSeconds;
-          if (armed) {
+          if (armed && !o.quiet) {
             std::fprintf(stderr,
                          "prt: this render is expected to take %.0f s: its finished pixels are "
                          "kept in '%s' (--no-checkpoint: not kept)\n",

@@ -99,10 +99,12 @@ ParallelRun runMasterSide(Transport& net, const RunRequest& request, const std::
     if ((total && *total > kAutomaticCheckpointSeconds) ||
         now - startTime > kAutomaticCheckpointSeconds) {
       armed = true;
-      std::fprintf(stderr,
+      if (options.announceCheckpoint) {
+        std::fprintf(stderr,
                    "prt: this render is expected to take %.0f s: its finished pixels are kept "
                    "in '%s' (--no-checkpoint: not kept)\n",
-                   total ? *total : now - startTime, options.checkpointPath.c_str());
+                     total ? *total : now - startTime, options.checkpointPath.c_str());
+      }
     }
   };
   if (progress) {

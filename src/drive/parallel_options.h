@@ -44,6 +44,7 @@ struct ParallelOptions {
   // The path is the automatic one: nothing is written until the run is expected to take
   // more than kAutomaticCheckpointSeconds, or is stopped with pixels done.
   bool checkpointAutomatic = false;
+  bool announceCheckpoint = true;      // say on stderr when the automatic one starts
   double checkpointEverySeconds = 10;  // between periodic checkpoints
   std::string acceptWorkersPath;       // MPI: open a port for `prt join`, its name in this file
   std::vector<JoinWave> joins;         // threads: workers that join mid-render, numbered

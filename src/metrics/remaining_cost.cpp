@@ -10,6 +10,7 @@ namespace {
 constexpr int kCellsAcross = 16;  // per side of a frame
 constexpr double kMinWindow = 2, kMaxWindow = 30, kWindowShare = 0.25;
 constexpr double kShrinkPixels = 64;
+constexpr double kMinRateSpan = 1;
 }  // namespace
 
 RemainingCost::RemainingCost(int width, int height, uint64_t frames)
@@ -140,6 +141,9 @@ double RemainingCost::unmeasured(size_t frameCell, double overall) const {
 double RemainingCost::rate(double now) const {
   if (history_.size() < 2) return 0;
   const double first = history_.front().first;
+  // Less than a second of measurements says little about the rate (a strategy's first
+  // batches, a speed index still running elsewhere): no estimate yet.
+  if (now - first < kMinRateSpan) return 0;
   const double window =
       std::clamp(kWindowShare * (now - first), kMinWindow, kMaxWindow);
   const double from = now - window;

@@ -6,9 +6,10 @@
 //
 // The image (each frame of a sequence) is cut into a grid of cells. Every measured batch
 // spreads its seconds evenly over its pixels and adds them to their cells. A pixel still to
-// render is expected to cost the mean of the measured pixels of its cell; of the same cell
-// in the other frames when its own has none yet; of every measured pixel when none of those
-// has any. The remaining work is the sum of those expectations, in the same seconds the
+// render is expected to cost the mean of the measured pixels of its cell, shrunk towards the
+// same cell in the other frames (or the fallback below) by the weight of kShrinkPixels
+// pixels; of the same cell in the other frames when its own has none yet; of every measured
+// pixel, scaled by the cell's prior (setPrior) when there is one, when none of those has any. The remaining work is the sum of those expectations, in the same seconds the
 // batches were measured in, and the time left is that work over the rate at which measured
 // seconds came in over the recent past (a window of a quarter of the elapsed time, between 2
 // and 30 s), so workers that join or are lost move the estimate within that window.
@@ -55,8 +56,8 @@ class RemainingCost {
   uint64_t finishedCount() const { return finished_; }
   // Expected seconds of work still to do; nothing before the first measurement.
   std::optional<double> remainingWork() const;
-  // Expected seconds until the last pixel is in, at `now`; nothing before two measurements
-  // a moment apart. 0 once every pixel is finished.
+  // Expected seconds until the last pixel is in, at `now`; nothing before a second of
+  // measurements. 0 once every pixel is finished.
   std::optional<double> etaSeconds(double now) const;
   // Of the whole render's expected work, the part done (0..1); nothing before a measurement.
   std::optional<double> doneFraction() const;

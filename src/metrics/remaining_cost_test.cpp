@@ -59,6 +59,16 @@ TEST(RemainingCost, RateFollowsTheRecentWindow) {
   EXPECT_NEAR(*cost.etaSeconds(now), 880.0, 1.0);
 }
 
+TEST(RemainingCost, NoEtaBeforeASecondOfMeasurements) {
+  RemainingCost cost(10, 10);
+  cost.measured(TaskSet::range(0, 10), 0.01, 5.0);
+  cost.finished(TaskSet::range(0, 10));
+  cost.measured(TaskSet::range(10, 10), 0.01, 5.01);
+  cost.finished(TaskSet::range(10, 10));
+  EXPECT_FALSE(cost.etaSeconds(5.02));  // a rate from 10 ms would say anything
+  EXPECT_TRUE(cost.etaSeconds(6.1));
+}
+
 TEST(RemainingCost, FinishedIsZeroAndBadMeasurementsAreIgnored) {
   RemainingCost cost(4, 4);
   cost.measured(TaskSet::range(0, 16), -1, 1);
