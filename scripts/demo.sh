@@ -15,8 +15,10 @@ if [[ -f build/CMakeCache.txt ]]; then
 else
   # No tests, no benchmarks, and the trace kernels in their baseline build only (the
   # x86-64-v3 one is some 5 % faster, and scripts/test.sh builds it).
-  PRT_CMAKE_ARGS="-DPRT_BUILD_TESTS=OFF -DPRT_BUILD_BENCH=OFF -DPRT_ISA_LEVELS=" \
-    bash scripts/build.sh release prt
+  # -O2 instead of -O3: a quicker build of the same pixels (no fast-math either way), a few
+  # per cent slower to render.
+  PRT_CMAKE_ARGS="-DPRT_BUILD_TESTS=OFF -DPRT_BUILD_BENCH=OFF -DPRT_ISA_LEVELS=
+    -DCMAKE_CXX_FLAGS_RELEASE=-O2 -DCMAKE_CXX_FLAGS=-DNDEBUG" bash scripts/build.sh release prt
 fi
 mkdir -p out
 build/prt render scenes/complex.scene --case A --workers 4 --slowdown 2,2,4,4 --measure-serial \
