@@ -334,14 +334,8 @@ TEST_F(AnimationCliTest, CtrlCWhileTheVideoIsMadeLeavesNothingBehind) {
                               " render " + kScene + " --width 16 --height 12 --spp 1 -q "
                               "--frames 0-2 -o " + path("f_#.png") + " --video " +
                               path("v.mp4") + " >/dev/null 2>&1";
-  const pid_t child = fork();
+  const pid_t child = prt::e2e::spawnShellGroup(command);
   ASSERT_GE(child, 0);
-  if (child == 0) {
-    setpgid(0, 0);
-    execl("/bin/sh", "sh", "-c", command.c_str(), nullptr);
-    _exit(127);
-  }
-  setpgid(child, child);
   // Until ffmpeg has written into the temporary video.
   bool started = false;
   for (int i = 0; i < 400 && !started; ++i) {

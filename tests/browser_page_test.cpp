@@ -158,14 +158,8 @@ TEST_F(BrowserPageTest, LivePageOfARunningRenderUpdatesAndShowsTheWorkers) {
                               "/scenes/complex.scene --case D --width 160 --height 120 "
                               "--workers 2 --slowdown 80,80 --no-checkpoint --serve 127.0.0.1:0 -o " +
                               path("live.png") + " >/dev/null 2>" + errors;
-  const pid_t child = fork();
+  const pid_t child = e2e::spawnShellGroup(command);
   ASSERT_GE(child, 0);
-  if (child == 0) {
-    setpgid(0, 0);
-    execl("/bin/sh", "sh", "-c", command.c_str(), nullptr);
-    _exit(127);
-  }
-  setpgid(child, child);
   std::string url;
   const std::regex address("live page at (http://127\\.0\\.0\\.1:[0-9]+/)");
   for (int i = 0; i < 400 && url.empty(); ++i) {

@@ -40,6 +40,19 @@ inline Result run(const std::string& args, const std::string& environment = "") 
   return r;
 }
 
+// Starts `command` under /bin/sh in a process group of its own, without waiting: the pid,
+// which is also the group's (kill(-pid, SIG) signals the command and all it started), or -1.
+inline pid_t spawnShellGroup(const std::string& command) {
+  const pid_t child = fork();
+  if (child == 0) {
+    setpgid(0, 0);
+    execl("/bin/sh", "sh", "-c", command.c_str(), nullptr);
+    _exit(127);
+  }
+  if (child > 0) setpgid(child, child);
+  return child;
+}
+
 // A test fixture with a fresh scratch folder per test.
 class ScratchDirTest : public ::testing::Test {
  protected:
