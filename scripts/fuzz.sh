@@ -18,12 +18,13 @@ cmake --preset fuzz >/dev/null
 cmake --build --preset fuzz -- -j"$(nproc)" >/dev/null
 
 corpus=build-fuzz/corpus
-mkdir -p "$corpus/scene" "$corpus/message" "$corpus/model" "$corpus/pack"
+mkdir -p "$corpus/scene" "$corpus/message" "$corpus/model" "$corpus/pack" "$corpus/checkpoint"
 cp scenes/*.scene tests/malformed/*.scene "$corpus/scene/"
 build-fuzz/fuzz/prt_fuzz_message_seeds "$corpus/message" scenes/fig08-basic-features.scene
 cp tests/models/*.glb tests/models/*.gltf scenes/models/*.glb scenes/models/*.gltf \
    scenes/models/street/*.glb "$corpus/model/"
 build-fuzz/fuzz/prt_fuzz_pack_seeds "$corpus/pack" scenes/chess.scene scenes/street.scene
+build-fuzz/fuzz/prt_fuzz_checkpoint_seeds "$corpus/checkpoint"
 
 # -rss_limit_mb and -malloc_limit_mb: an input must not make the code take gigabytes;
 # -max_len: inputs of up to 64 kB (the parser's cost is linear; longer inputs only slow it),
@@ -45,4 +46,5 @@ run prt_fuzz_scene_parser "$corpus/scene" || status=1
 run prt_fuzz_message_decoder "$corpus/message" || status=1
 run prt_fuzz_model_reader "$corpus/model" 131072 || status=1
 run prt_fuzz_asset_pack "$corpus/pack" 1048576 || status=1
+run prt_fuzz_checkpoint "$corpus/checkpoint" || status=1
 exit $status

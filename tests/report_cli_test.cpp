@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -95,7 +97,13 @@ TEST_F(ReportCliTest, BadInputIsExitCodeTwoAndWritesNothing) {
 
   r = run("report " + path("missing.json") + " -o " + path("page.html"));
   EXPECT_EQ(r.exitCode, 2);
-  EXPECT_NE(r.output.find("cannot read the report"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("does not exist"), std::string::npos) << r.output;
+  for (const char* special : {"/dev/zero", "/dev/null"}) {
+    r = run(std::string("report ") + special + " -o " + path("page.html"));
+    EXPECT_EQ(r.exitCode, 2) << r.output;
+    EXPECT_NE(r.output.find("is a character device, not a regular file"), std::string::npos)
+        << r.output;
+  }
 
   const std::string bad =
       write("bad.json", "{\n  \"strategy\": \"reservoir\",\n  \"elapsed_s\": ,\n}\n");
@@ -109,6 +117,54 @@ TEST_F(ReportCliTest, BadInputIsExitCodeTwoAndWritesNothing) {
   EXPECT_EQ(r.exitCode, 2);
   EXPECT_NE(r.output.find("not a run report"), std::string::npos) << r.output;
   EXPECT_FALSE(fs::exists(path("page.html")));
+}
+
+// A saved report that was edited: a field of another type is named, exit 2, no page; a huge
+// one gives a page of bounded size that says what it left out.
+TEST_F(ReportCliTest, AnEditedReportIsRefusedByItsFieldAndAHugeOneMakesABoundedPage) {
+  Result r = run("render " + kScene + " --width 24 --height 16 --workers 2 --report " +
+                 path("run.json") + " -o " + path("run.png") + " -q");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  const nlohmann::json saved = nlohmann::json::parse(readWholeFile(path("run.json")));
+  const auto edited = [&](const std::string& name, const auto& change) {
+    nlohmann::json doc = saved;
+    change(doc);
+    std::ofstream(path(name)) << doc.dump();
+    return path(name);
+  };
+  const struct {
+    const char* name;
+    std::function<void(nlohmann::json&)> change;
+    const char* said;
+  } cases[] = {
+      {"pixels.json", [](nlohmann::json& d) { d["workers"][1]["pixels"] = "many"; },
+       "the field \"workers[1].pixels\" must be a number or null, not a string"},
+      {"width.json", [](nlohmann::json& d) { d["width"] = "wide"; },
+       "the field \"width\" must be a number, not a string"},
+      {"context.json", [](nlohmann::json& d) { d["context"] = 5; },
+       "the field \"context\" must be an object, not a number"},
+      {"span.json", [](nlohmann::json& d) { d["timeline"]["rows"][0]["rendering"] = {{0.5}}; },
+       "the field \"timeline.rows[0].rendering[0]\" must be a pair of numbers"},
+  };
+  for (const auto& c : cases) {
+    r = run("report " + edited(c.name, c.change) + " -o " + path("page.html"));
+    EXPECT_EQ(r.exitCode, 2) << c.name << ": " << r.output;
+    EXPECT_NE(r.output.find(c.said), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find(c.name), std::string::npos) << r.output;
+    EXPECT_FALSE(fs::exists(path("page.html")));
+  }
+  const std::string huge = edited("huge.json", [](nlohmann::json& d) {
+    d["notes"] = std::string(size_t{24} << 20, 'x');
+    d["workers"][0]["comment"] = std::string(size_t{1} << 20, 'y');
+  });
+  r = run("report " + huge + " -o " + path("page.html"));
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  const std::string page = readWholeFile(path("page.html"));
+  EXPECT_LT(page.size(), size_t{20} << 20);
+  EXPECT_NE(page.find("left out of this page's copy: notes"), std::string::npos);
+  const nlohmann::json embedded = embeddedReport(page);
+  EXPECT_EQ(embedded["notes"]["left_out_bytes"], (size_t{24} << 20) + 2);
+  EXPECT_TRUE(embedded.contains("ownership_map"));
 }
 
 TEST_F(ReportCliTest, ExperimentIndexGathersEverySummaryInTheFolder) {

@@ -9,6 +9,7 @@
 
 #include "cli/commands.h"
 #include "core/input_error.h"
+#include "core/memory_budget.h"
 #include "core/thread_failures.h"
 #include "image/atomic_file.h"
 #include "trace/isa_level.h"
@@ -33,6 +34,20 @@ int main(int argc, char** argv) {
     for (const char c : arg) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
     commandLine += " " + (plain ? arg : quoted + "'");
   }
+  // Given before or after the command's name (fallthrough): `prt render --max-memory 4G ...`.
+  app.fallthrough();
+  std::string maxMemory;
+  app.add_option("--max-memory", maxMemory,
+                 "What the files a run reads may make it allocate, e.g. 4G or 512M (default: "
+                 "3/4 of physical memory or of ulimit -v); a larger file or a model declaring "
+                 "more is refused with a message")
+      ->check(CLI::Validator(
+          [](std::string& text) -> std::string {
+            return prt::parseByteSize(text) ? std::string()
+                                            : "must be a size such as 512M, 4G or 1.5GiB; "
+                                              "found '" + text + "'";
+          },
+          "SIZE"));
   const prt::cli::Action render = prt::cli::addRenderCommand(app, commandLine);
   const prt::cli::Action speedIndex = prt::cli::addSpeedIndexCommand(app);
   const prt::cli::Action join = prt::cli::addJoinCommand(app);
@@ -47,6 +62,7 @@ int main(int argc, char** argv) {
     const int code = app.exit(e);
     return code == 0 ? 0 : 2;
   }
+  if (!maxMemory.empty()) prt::setMemoryBudgetBytes(*prt::parseByteSize(maxMemory));
   try {
     for (CLI::App* sub : app.get_subcommands()) {
       if (sub->get_name() == "render") return render();

@@ -73,10 +73,29 @@ PagePicture picture(const ReportOptions& o, const nlohmann::json& doc) {
                                          "--image FILE."};
 }
 
+// "[json.exception.type_error.302] (/workers/0/pixels) type must be number, but is string"
+// as "the field /workers/0/pixels: type must be number, but is string".
+std::string fieldProblem(const nlohmann::json::exception& e) {
+  std::string what = e.what();
+  if (const size_t end = what.find("] "); end != std::string::npos) what.erase(0, end + 2);
+  if (what.size() > 1 && what[0] == '(') {
+    const size_t close = what.find(") ");
+    if (close != std::string::npos) {
+      return "the field " + what.substr(1, close - 1) + ": " + what.substr(close + 2);
+    }
+  }
+  return "a field of the wrong type: " + what;
+}
+
 int runReport(const ReportOptions& o) {
   checkHtmlPath(o.htmlPath);
   const nlohmann::json doc = readReportDocument(o.reportPath);
-  writeReportAndPage("", o.htmlPath, doc, picture(o, doc));
+  try {
+    writeReportAndPage("", o.htmlPath, doc, picture(o, doc));
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError("report '" + o.reportPath + "' holds " + fieldProblem(e) +
+                     "; is it a report prt wrote?");
+  }
   return 0;
 }
 

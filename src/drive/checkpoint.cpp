@@ -1,6 +1,7 @@
 #include "drive/checkpoint.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -9,6 +10,7 @@
 #include <stdexcept>
 
 #include "core/byte_codec.h"
+#include "core/input_file.h"
 #include "core/input_error.h"
 #include "image/atomic_file.h"
 #include "scene/number_text.h"
@@ -97,16 +99,16 @@ void writeCheckpoint(const std::string& path, const CheckpointKey& key, const Ta
                                              w.out.size()));
 }
 
-std::optional<Checkpoint> readCheckpoint(const std::string& path, const CheckpointKey& key) {
-  std::error_code ec;
-  if (!std::filesystem::exists(path, ec)) return std::nullopt;
-  if (!std::filesystem::is_regular_file(path, ec)) {
-    throw InputError("checkpoint '" + path + "' is not a regular file");
-  }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError("cannot read checkpoint '" + path + "'");
-  const std::vector<uint8_t> bytes((std::istreambuf_iterator<char>(in)),
-                                   std::istreambuf_iterator<char>());
+uint64_t maxCheckpointBytes(const CheckpointKey& key) {
+  // Header and description (at most 64 KiB, a u16 length), then at worst one run of 24 bytes,
+  // 12 bytes of colour and 2 of owner per pixel, and the checksum.
+  const uint64_t pixels = static_cast<uint64_t>(std::max(key.width, 0)) *
+                          static_cast<uint64_t>(std::max(key.height, 0));
+  return sizeof kMagic + 8 + 2 + 65535 + 8 + 8 + pixels * (24 + 12 + 2) + 8;
+}
+
+Checkpoint parseCheckpoint(const std::vector<uint8_t>& bytes, const CheckpointKey& key,
+                           const std::string& path) {
   auto damaged = [&](const std::string& why) {
     return InputError("checkpoint '" + path + "' is damaged (" + why +
                       "); remove it to render from the start");
@@ -129,27 +131,44 @@ std::optional<Checkpoint> readCheckpoint(const std::string& path, const Checkpoi
     }
     const auto width = r.pod<int32_t>();
     const auto height = r.pod<int32_t>();
-    if (width != key.width || height != key.height) throw damaged("size mismatch");
+    if (width != key.width || height != key.height || width <= 0 || height <= 0) {
+      throw damaged("size mismatch");
+    }
     Checkpoint c;
     c.image = Image(width, height);
-    c.owner.assign(c.image.pixelCount(), -1);
+    const uint64_t pixels = c.image.pixelCount();
+    c.owner.assign(pixels, -1);
     const auto runs = r.pod<uint64_t>();
     r.needItems(runs, 24);
+    // Runs as the ledger writes them: ascending and disjoint, every pixel inside the image.
+    // Checked without overflow whatever the fields hold (a file made by hand).
+    uint64_t next = 0;  // the first pixel the next run may start at
     for (uint64_t i = 0; i < runs; ++i) {
       TaskRun run;
       run.first = r.pod<uint64_t>();
       run.count = r.pod<uint64_t>();
       run.stride = r.pod<uint64_t>();
-      if (run.count == 0 || run.stride == 0 || run.last() >= c.image.pixelCount() ||
-          run.last() < run.first) {
-        throw damaged("a pixel outside the image");
-      }
+      if (run.count == 0 || (run.count > 1 && run.stride == 0)) throw damaged("an empty run");
+      if (!run.endsBefore(pixels)) throw damaged("a pixel outside the image");
+      if (run.first < next) throw damaged("runs out of order or overlapping");
+      next = run.last() + 1;
       c.done.append(run);
     }
     r.needItems(c.done.size(), 3 * sizeof(float) + sizeof(int16_t));
     auto data = c.image.data();
-    c.done.forEach([&](uint64_t p) { r.raw(&data[3 * p], 3 * sizeof(float)); });
-    c.done.forEach([&](uint64_t p) { c.owner[p] = r.pod<int16_t>(); });
+    bool finite = true;
+    c.done.forEach([&](uint64_t p) {
+      r.raw(&data[3 * p], 3 * sizeof(float));
+      finite = finite && std::isfinite(data[3 * p]) && std::isfinite(data[3 * p + 1]) &&
+               std::isfinite(data[3 * p + 2]);
+    });
+    if (!finite) throw damaged("a pixel that is not a finite colour");
+    bool owners = true;
+    c.done.forEach([&](uint64_t p) {
+      c.owner[p] = r.pod<int16_t>();
+      owners = owners && c.owner[p] >= -1;
+    });
+    if (!owners) throw damaged("a pixel owner below -1");
     r.finish();
     return c;
   } catch (const InputError&) {
@@ -157,6 +176,13 @@ std::optional<Checkpoint> readCheckpoint(const std::string& path, const Checkpoi
   } catch (const std::exception& e) {
     throw damaged(e.what());
   }
+}
+
+std::optional<Checkpoint> readCheckpoint(const std::string& path, const CheckpointKey& key) {
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) return std::nullopt;
+  const std::string bytes = readInputFile(path, "checkpoint", maxCheckpointBytes(key));
+  return parseCheckpoint(std::vector<uint8_t>(bytes.begin(), bytes.end()), key, path);
 }
 
 void removeCheckpoint(const std::string& path) {

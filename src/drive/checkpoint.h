@@ -53,6 +53,15 @@ void writeCheckpoint(const std::string& path, const CheckpointKey& key, const Ta
 // another render.
 std::optional<Checkpoint> readCheckpoint(const std::string& path, const CheckpointKey& key);
 
+// The checks of readCheckpoint on a checkpoint's bytes, `path` naming them in messages:
+// every run inside the image, ascending and disjoint, every colour finite, every owner -1 or
+// a worker. Throws InputError as readCheckpoint does.
+Checkpoint parseCheckpoint(const std::vector<uint8_t>& bytes, const CheckpointKey& key,
+                           const std::string& path);
+
+// The largest file a checkpoint of `key` can be: a larger one is refused unread.
+uint64_t maxCheckpointBytes(const CheckpointKey& key);
+
 // Removes the checkpoint once the image it would rebuild is written.
 void removeCheckpoint(const std::string& path);
 

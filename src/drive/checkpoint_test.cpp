@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -113,6 +114,119 @@ TEST(CheckpointTest, AnotherRendersOrADamagedCheckpointIsRefused) {
     f << "P6\n8 4\n255\n";
   }
   EXPECT_THROW(readCheckpoint(path, key), InputError);
+  removeCheckpoint(path);
+}
+
+// A checkpoint made by hand, with a valid checksum: runs and pixels as given.
+struct HandMade {
+  std::vector<TaskRun> runs;
+  std::vector<float> colours;  // 3 per pixel of the runs
+  std::vector<int16_t> owners;
+};
+
+std::vector<uint8_t> handMade(const CheckpointKey& key, const HandMade& made) {
+  std::vector<uint8_t> out;
+  auto put = [&](const void* data, size_t size) {
+    const auto* bytes = static_cast<const uint8_t*>(data);
+    out.insert(out.end(), bytes, bytes + size);
+  };
+  put("PRTCKPT1", 8);
+  put(&key.hash, 8);
+  const auto length = static_cast<uint16_t>(key.description.size());
+  put(&length, 2);
+  put(key.description.data(), key.description.size());
+  const int32_t size[] = {key.width, key.height};
+  put(size, sizeof size);
+  const uint64_t runs = made.runs.size();
+  put(&runs, 8);
+  for (const TaskRun& r : made.runs) {
+    put(&r.first, 8);
+    put(&r.count, 8);
+    put(&r.stride, 8);
+  }
+  put(made.colours.data(), made.colours.size() * sizeof(float));
+  put(made.owners.data(), made.owners.size() * sizeof(int16_t));
+  uint64_t hash = 14695981039346656037ull;
+  for (const uint8_t b : out) {
+    hash ^= b;
+    hash *= 1099511628211ull;
+  }
+  put(&hash, 8);
+  return out;
+}
+
+std::string refusal(const CheckpointKey& key, const HandMade& made) {
+  try {
+    parseCheckpoint(handMade(key, made), key, "hand.ckpt");
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "(accepted)";
+}
+
+// Runs whose last pixel overflows 64 bits, and the like: refused, never written outside the
+// image.
+TEST(CheckpointTest, HandMadeRunsOutsideTheImageAreRefusedWithoutOverflow) {
+  const CheckpointKey key = checkpointKey(scene(8, 4), RenderSettings{1, 1});
+  const HandMade good{{{0, 2, 1}, {5, 2, 3}}, std::vector<float>(12, 0.5f), {0, 1, 0, -1}};
+  const Checkpoint c = parseCheckpoint(handMade(key, good), key, "hand.ckpt");
+  EXPECT_EQ(c.done.toVector(), (std::vector<uint64_t>{0, 1, 5, 8}));
+  EXPECT_EQ(c.owner[1], 1);
+  // 1 + 2^63 * 2 wraps to 1: inside the image by naive arithmetic.
+  const HandMade wraps{{{1, 3, uint64_t{1} << 63}}, std::vector<float>(9, 0.5f), {0, 0, 0}};
+  EXPECT_NE(refusal(key, wraps).find("a pixel outside the image"), std::string::npos);
+  const HandMade huge{{{0, 2, ~uint64_t{0}}}, std::vector<float>(6, 0.5f), {0, 0}};
+  EXPECT_NE(refusal(key, huge).find("a pixel outside the image"), std::string::npos);
+  const HandMade past{{{31, 2, 1}}, std::vector<float>(6, 0.5f), {0, 0}};
+  EXPECT_NE(refusal(key, past).find("a pixel outside the image"), std::string::npos);
+  const HandMade empty{{{3, 0, 1}}, {}, {}};
+  EXPECT_NE(refusal(key, empty).find("an empty run"), std::string::npos);
+  const HandMade still{{{3, 2, 0}}, std::vector<float>(6, 0.5f), {0, 0}};
+  EXPECT_NE(refusal(key, still).find("an empty run"), std::string::npos);
+}
+
+TEST(CheckpointTest, HandMadeRunsOutOfOrderOrOverlappingAreRefused) {
+  const CheckpointKey key = checkpointKey(scene(8, 4), RenderSettings{1, 1});
+  const HandMade backwards{{{10, 2, 1}, {3, 2, 1}}, std::vector<float>(12, 0.5f), {0, 0, 0, 0}};
+  EXPECT_NE(refusal(key, backwards).find("runs out of order or overlapping"), std::string::npos);
+  const HandMade overlapping{{{3, 4, 1}, {5, 2, 1}}, std::vector<float>(18, 0.5f),
+                             {0, 0, 0, 0, 0, 0}};
+  EXPECT_NE(refusal(key, overlapping).find("runs out of order or overlapping"),
+            std::string::npos);
+  const HandMade twice{{{3, 1, 1}, {3, 1, 1}}, std::vector<float>(6, 0.5f), {0, 0}};
+  EXPECT_NE(refusal(key, twice).find("runs out of order or overlapping"), std::string::npos);
+}
+
+TEST(CheckpointTest, HandMadePixelsThatAreNotColoursAreRefused) {
+  const CheckpointKey key = checkpointKey(scene(8, 4), RenderSettings{1, 1});
+  for (const float bad : {std::nanf(""), INFINITY, -INFINITY}) {
+    HandMade made{{{0, 2, 1}}, std::vector<float>(6, 0.5f), {0, 0}};
+    made.colours[4] = bad;
+    EXPECT_NE(refusal(key, made).find("a pixel that is not a finite colour"), std::string::npos);
+  }
+  const HandMade owner{{{0, 2, 1}}, std::vector<float>(6, 0.5f), {0, -7}};
+  EXPECT_NE(refusal(key, owner).find("a pixel owner below -1"), std::string::npos);
+  // Pixels promised and not there, and bytes beyond them.
+  const HandMade shortOf{{{0, 2, 1}}, std::vector<float>(3, 0.5f), {0}};
+  EXPECT_NE(refusal(key, shortOf).find("truncated"), std::string::npos);
+  const HandMade beyond{{{0, 1, 1}}, std::vector<float>(3, 0.5f), {0, 0}};
+  EXPECT_NE(refusal(key, beyond).find("trailing bytes"), std::string::npos);
+}
+
+// A checkpoint larger than any of this render's could be is refused before it is read.
+TEST(CheckpointTest, AFileLargerThanTheRendersCheckpointIsRefusedUnread) {
+  const CheckpointKey key = checkpointKey(scene(8, 4), RenderSettings{1, 1});
+  const std::string path = tempPath("large");
+  {
+    std::ofstream f(path, std::ios::binary);
+    f << "PRTCKPT1" << std::string(maxCheckpointBytes(key), '\0');
+  }
+  try {
+    readCheckpoint(path, key);
+    ADD_FAILURE() << "read";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("more than the"), std::string::npos) << e.what();
+  }
   removeCheckpoint(path);
 }
 

@@ -8,6 +8,7 @@
 #include <system_error>
 
 #include "core/input_error.h"
+#include "core/input_file.h"
 #include "image/atomic_file.h"
 #include "image/image_formats.h"
 
@@ -61,6 +62,7 @@ const ImageFormat& requireFormat(const std::string& path) {
 }
 
 std::vector<unsigned char> readFileBytes(const std::string& path) {
+  checkInputFile(path, "image");
   std::FILE* file = std::fopen(path.c_str(), "rb");
   if (file == nullptr) throwCannotRead(path, errno);
   std::vector<unsigned char> bytes;

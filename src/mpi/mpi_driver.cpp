@@ -6,17 +6,20 @@
 #include <signal.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <condition_variable>
 #include <mutex>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <string>
 #include <thread>
 
 #include "core/check.h"
 #include "core/input_error.h"
+#include "core/input_file.h"
 #include "core/byte_codec.h"
 #include "mpi/mpi_acceptor.h"
 #include "mpi/mpi_comm.h"
@@ -303,14 +306,16 @@ int runMpiWorker(MpiSession& session, const ParallelOptions& options) {
 namespace {
 
 // Rank 0 of the joining job reads the port name; every rank gets it (empty: none).
-std::string sharedPortName(MpiSession& session, const std::string& file) {
+// `problem` says why rank 0 could not read the file (a FIFO, a device, too large).
+std::string sharedPortName(MpiSession& session, const std::string& file, std::string& problem) {
   std::string port;
-  if (session.rank() == 0) {
-    std::FILE* f = std::fopen(file.c_str(), "r");
-    if (f != nullptr) {
-      char line[MPI_MAX_PORT_NAME + 2] = {};
-      if (std::fgets(line, sizeof line, f) != nullptr) port = line;
-      std::fclose(f);
+  std::error_code missing;
+  if (session.rank() == 0 && std::filesystem::exists(file, missing)) {
+    try {
+      port = readInputFile(file, "port file", 1 << 16);
+      port = port.substr(0, std::min<size_t>(port.find('\n'), MPI_MAX_PORT_NAME));
+    } catch (const InputError& e) {
+      problem = e.what();
     }
     while (!port.empty() && (port.back() == '\n' || port.back() == '\r' || port.back() == ' ')) {
       port.pop_back();
@@ -331,9 +336,12 @@ int runJoinedWorkers(MpiSession& session, const JoinRequest& request) {
   if (!session.threadMultiple()) {
     session.abort("prt join needs MPI_THREAD_MULTIPLE, which this MPI does not provide", 1);
   }
-  const std::string port = sharedPortName(session, request.portFile);
+  std::string problem;
+  const std::string port = sharedPortName(session, request.portFile, problem);
   if (port.empty()) {
-    if (session.rank() == 0) {
+    if (session.rank() == 0 && !problem.empty()) {
+      std::fprintf(stderr, "prt: error: %s\n", problem.c_str());
+    } else if (session.rank() == 0) {
       std::fprintf(stderr,
                    "prt: error: '%s' holds no port name: start the render with "
                    "--accept-workers %s under mpirun first (and keep it running)\n",

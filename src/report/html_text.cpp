@@ -66,6 +66,46 @@ std::string pngDataUri(std::string_view pngBytes) {
   return "data:image/png;base64," + base64(pngBytes);
 }
 
+std::string shortText(const std::string& text, size_t max) {
+  if (text.size() <= max) return text;
+  size_t cut = max;
+  while (cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80) --cut;  // UTF-8
+  std::string out(text, 0, cut);
+  out.append("\u2026");
+  return out;
+}
+
+std::string attributeJson(const nlohmann::json& value, size_t max) {
+  const std::string text = value.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+  if (text.size() <= max) return text;
+  std::string note = "\"(";
+  note.append(formatBytes(text.size()));
+  note.append(", left out)\"");
+  return note;
+}
+
+nlohmann::json embeddableReport(const nlohmann::json& report, size_t maxBytes,
+                                std::vector<std::string>& leftOut) {
+  constexpr auto kReplace = nlohmann::json::error_handler_t::replace;
+  size_t total = report.dump(-1, ' ', false, kReplace).size();
+  if (total <= maxBytes || !report.is_object()) return report;
+  std::vector<std::pair<size_t, std::string>> sizes;
+  for (const auto& [key, value] : report.items()) {
+    sizes.emplace_back(value.dump(-1, ' ', false, kReplace).size(), key);
+  }
+  std::sort(sizes.rbegin(), sizes.rend());
+  nlohmann::json kept = report;
+  for (const auto& [size, key] : sizes) {
+    if (total <= maxBytes) break;
+    nlohmann::json note = nlohmann::json::object();
+    note["left_out_bytes"] = size;
+    kept[key] = std::move(note);
+    total -= size;
+    leftOut.push_back(key);
+  }
+  return kept;
+}
+
 std::string jsonForScript(const nlohmann::json& value) {
   const std::string text = value.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
   std::string out;

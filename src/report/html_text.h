@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace prt {
 
@@ -20,6 +21,17 @@ std::string pngDataUri(std::string_view pngBytes);  // "data:image/png;base64,..
 // written as \u003c (it only occurs inside strings), so no "</script>" can end the element;
 // invalid UTF-8 in strings is replaced rather than thrown on.
 std::string jsonForScript(const nlohmann::json& value);
+
+// A page's size is bounded whatever a report holds (a saved report may be edited, or huge):
+// text shown is cut at `max` bytes with "…"; a value in a data- attribute is its JSON, or a
+// JSON string saying how large it was when that is over `max`; the report embedded in a page
+// keeps every top-level value while the whole fits `maxBytes`, the largest ones left out first
+// (each replaced by {"left_out_bytes": N}), their keys added to `leftOut`.
+std::string shortText(const std::string& text, size_t max = 200);
+std::string attributeJson(const nlohmann::json& value, size_t max = 4096);
+nlohmann::json embeddableReport(const nlohmann::json& report, size_t maxBytes,
+                                std::vector<std::string>& leftOut);
+inline constexpr size_t kMaxEmbeddedReportBytes = size_t{16} << 20;
 
 // People's numbers: "1,234,567"; "12.3 s", "456 ms", "78 µs"; "93.4 %"; "1.2 MB"; "3.05".
 std::string formatCount(uint64_t n);

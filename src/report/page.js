@@ -5,7 +5,7 @@
   var run = JSON.parse(document.getElementById('prt-run').textContent);
   var page = JSON.parse(document.getElementById('prt-page').textContent);
   var map = run.ownership_map;
-  var owners = map ? decode(map) : null;
+  var owners = map && map.data ? decode(map) : null;  // left out of a huge report: none
   var colours = page.colours.map(function (hex) {
     return [parseInt(hex.slice(1, 3), 16), parseInt(hex.slice(3, 5), 16),
             parseInt(hex.slice(5, 7), 16)];

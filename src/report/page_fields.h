@@ -36,8 +36,8 @@ inline std::string humanKey(std::string key) {
 // A JSON value of a key nobody told the page about, readably.
 inline std::string genericValue(const json& v) {
   if (v.is_null()) return "\u2014";  // not there (a worker that did not join: no join time)
-  if (v.is_array()) return std::to_string(v.size()) + (v.empty() ? "" : ": " + v.dump());
-  if (v.is_string()) return v.get<std::string>();
+  if (v.is_array()) return std::to_string(v.size()) + (v.empty() ? "" : ": " + shortText(v.dump()));
+  if (v.is_string()) return shortText(v.get<std::string>());
   if (v.is_number_float()) return formatNumber(v.get<double>(), 4);
   return v.dump();
 }

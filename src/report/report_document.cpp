@@ -3,8 +3,10 @@
 #include <ctime>
 #include <fstream>
 #include <sstream>
+#include <vector>
 
 #include "core/input_error.h"
+#include "core/input_file.h"
 #include "report/ownership_map.h"
 #include "report/timeline.h"
 
@@ -81,6 +83,181 @@ std::string reportDocumentText(const json& document) {
   return text + "\n";
 }
 
+namespace {
+
+// The types the page relies on, by path ("*": every element of a list): a saved report that
+// was edited or made by another program is refused naming the first field of another type,
+// rather than failing deep inside the page. Fields not listed pass through as they are.
+enum class Kind { Number, NumberOrNull, String, Bool, Object, List, Span };
+
+struct FieldRule {
+  const char* path;
+  Kind kind;
+};
+
+constexpr FieldRule kFieldRules[] = {
+    {"strategy", Kind::String},
+    {"driver", Kind::String},
+    {"width", Kind::Number},
+    {"height", Kind::Number},
+    {"elapsed_s", Kind::Number},
+    {"serial_s", Kind::NumberOrNull},
+    {"samples_per_pixel", Kind::Number},
+    {"drt", Kind::Number},
+    {"master_speed_index_s", Kind::NumberOrNull},
+    {"context", Kind::Object},
+    {"context.scene", Kind::String},
+    {"context.date", Kind::String},
+    {"context.outputs", Kind::Object},
+    {"context.outputs.*", Kind::String},
+    {"context.parameters", Kind::Object},
+    {"workers", Kind::List},
+    {"workers.*", Kind::Object},
+    {"workers.*.worker", Kind::Number},
+    {"workers.*.lost", Kind::Bool},
+    {"workers.*.pixels", Kind::NumberOrNull},
+    {"workers.*.tasks", Kind::NumberOrNull},
+    {"workers.*.busy_s", Kind::NumberOrNull},
+    {"workers.*.idle_s", Kind::NumberOrNull},
+    {"workers.*.speed_index_s", Kind::NumberOrNull},
+    {"workers.*.slowdown", Kind::NumberOrNull},
+    {"workers.*.messages", Kind::NumberOrNull},
+    {"workers.*.bytes_sent", Kind::NumberOrNull},
+    {"workers.*.bytes_received", Kind::NumberOrNull},
+    {"joined_workers", Kind::List},
+    {"joined_workers.*", Kind::Object},
+    {"joined_workers.*.worker", Kind::Number},
+    {"joined_workers.*.at_s", Kind::Number},
+    {"frames", Kind::List},
+    {"timeline", Kind::Object},
+    {"timeline.ticks", Kind::Number},
+    {"timeline.tick_s", Kind::Number},
+    {"timeline.aggregated", Kind::Bool},
+    {"timeline.workers_per_row", Kind::Number},
+    {"timeline.rendering_share", Kind::List},
+    {"timeline.rendering_share.*", Kind::Number},
+    {"timeline.master_marks", Kind::List},
+    {"timeline.master_marks.*", Kind::Object},
+    {"timeline.master_marks.*.t_s", Kind::Number},
+    {"timeline.master_marks.*.label", Kind::String},
+    {"timeline.rows", Kind::List},
+    {"timeline.rows.*", Kind::Object},
+    {"timeline.rows.*.first", Kind::Number},
+    {"timeline.rows.*.last", Kind::Number},
+    {"timeline.rows.*.finished_s", Kind::Number},
+    {"timeline.rows.*.setup", Kind::List},
+    {"timeline.rows.*.setup.*", Kind::Span},
+    {"timeline.rows.*.rendering", Kind::List},
+    {"timeline.rows.*.rendering.*", Kind::Span},
+    {"timeline.rows.*.messages", Kind::List},
+    {"timeline.rows.*.messages.*", Kind::Number},
+    {"timeline.rows.*.setup_share", Kind::List},
+    {"timeline.rows.*.setup_share.*", Kind::Number},
+    {"timeline.rows.*.rendering_share", Kind::List},
+    {"timeline.rows.*.rendering_share.*", Kind::Number},
+    {"timeline.rows.*.marks", Kind::List},
+    {"timeline.rows.*.marks.*", Kind::Object},
+    {"timeline.rows.*.marks.*.t_s", Kind::Number},
+    {"timeline.rows.*.marks.*.kind", Kind::String},
+    {"timeline.rows.*.marks.*.label", Kind::String},
+    {"timeline.rows.*.marks.*.worker", Kind::Number},
+    {"ownership_map", Kind::Object},
+    {"ownership_map.encoding", Kind::String},
+    {"ownership_map.data", Kind::String},
+    {"ownership_map.width", Kind::Number},
+    {"ownership_map.height", Kind::Number},
+    {"ownership_map.step", Kind::Number},
+    {"ownership_map.source_width", Kind::Number},
+    {"ownership_map.source_height", Kind::Number},
+};
+
+const char* kindName(Kind kind) {
+  switch (kind) {
+    case Kind::Number:
+      return "a number";
+    case Kind::NumberOrNull:
+      return "a number or null";
+    case Kind::String:
+      return "a string";
+    case Kind::Bool:
+      return "true or false";
+    case Kind::Object:
+      return "an object";
+    case Kind::List:
+      return "a list";
+    case Kind::Span:
+      return "a pair of numbers";
+  }
+  return "";
+}
+
+bool hasKind(const json& v, Kind kind) {
+  switch (kind) {
+    case Kind::Number:
+      return v.is_number();
+    case Kind::NumberOrNull:
+      return v.is_number() || v.is_null();
+    case Kind::String:
+      return v.is_string();
+    case Kind::Bool:
+      return v.is_boolean();
+    case Kind::Object:
+      return v.is_object();
+    case Kind::List:
+      return v.is_array();
+    case Kind::Span:
+      return v.is_array() && v.size() == 2 && v[0].is_number() && v[1].is_number();
+  }
+  return false;
+}
+
+// Checks `rule` below `v`, `segments` from `at` on; `where` is the path so far, for messages.
+void checkRule(const json& v, const std::vector<std::string>& segments, size_t at,
+               const std::string& where, Kind kind, const std::string& path) {
+  if (at == segments.size()) {
+    if (!hasKind(v, kind)) {
+      std::string found = v.type_name();
+      throw InputError("'" + path + "': the field \"" + where + "\" must be " + kindName(kind) +
+                       ", not " + (found == "array" ? "a list" : "a " + found) +
+                       "; is it a report prt wrote?");
+    }
+    return;
+  }
+  const std::string& segment = segments[at];
+  const std::string prefix = where.empty() ? "" : where + ".";
+  if (segment == "*") {
+    if (v.is_array()) {
+      for (size_t i = 0; i < v.size(); ++i) {
+        checkRule(v[i], segments, at + 1, where + "[" + std::to_string(i) + "]", kind, path);
+      }
+    } else if (v.is_object()) {
+      for (const auto& [key, value] : v.items()) {
+        checkRule(value, segments, at + 1, prefix + key, kind, path);
+      }
+    }
+    return;
+  }
+  if (v.is_object() && v.contains(segment)) {
+    checkRule(v[segment], segments, at + 1, prefix + segment, kind, path);
+  }
+}
+
+void checkFieldTypes(const json& doc, const std::string& path) {
+  for (const FieldRule& rule : kFieldRules) {
+    std::vector<std::string> segments;
+    std::string text = rule.path;
+    for (size_t start = 0;;) {
+      const size_t dot = text.find('.', start);
+      segments.push_back(text.substr(start, dot - start));
+      if (dot == std::string::npos) break;
+      start = dot + 1;
+    }
+    checkRule(doc, segments, 0, "", rule.kind, path);
+  }
+}
+
+}  // namespace
+
 json parseReportDocument(const std::string& text, const std::string& path) {
   json doc;
   try {
@@ -101,18 +278,12 @@ json parseReportDocument(const std::string& text, const std::string& path) {
                        std::string(key) + "\" key)");
     }
   }
-  if (!doc["workers"].is_array() || !doc["elapsed_s"].is_number()) {
-    throw InputError("'" + path + "': \"workers\" must be a list and \"elapsed_s\" a number");
-  }
+  checkFieldTypes(doc, path);
   return doc;
 }
 
 json readReportDocument(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError("cannot read the report '" + path + "'");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parseReportDocument(text.str(), path);
+  return parseReportDocument(readInputFile(path, "report"), path);
 }
 
 }  // namespace prt

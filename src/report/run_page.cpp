@@ -22,8 +22,8 @@ using namespace page;  // the page's forgiving field access, chips, the worker t
 std::string card(const std::string& key, const std::string& value, const std::string& label,
                  const std::string& tip, const json& raw, const std::string& cls = "") {
   return "<div class=\"card" + (cls.empty() ? "" : " " + cls) + "\" data-key=\"" + escapeHtml(key) +
-         "\" data-value=\"" + escapeHtml(raw.dump()) + "\"><div class=\"value\">" +
-         escapeHtml(value) + "</div><div class=\"label\">" + escapeHtml(label) +
+         "\" data-value=\"" + escapeHtml(attributeJson(raw)) + "\"><div class=\"value\">" +
+         escapeHtml(shortText(value)) + "</div><div class=\"label\">" + escapeHtml(label) +
          "</div><div class=\"tip\">" + escapeHtml(tip) + "</div></div>\n";
 }
 
@@ -520,7 +520,18 @@ std::string runPageHtml(const json& r, const PagePicture& picture) {
   json info = json::array();
   for (const json& w : r["workers"]) info.push_back(workerInfo(w, r, totalPixels));
   const json page = {{"colours", colours}, {"info", info}, {"picture_is_render", picture.isRender}};
-  body += "<script type=\"application/json\" id=\"prt-run\">" + jsonForScript(r) + "</script>\n";
+  // A report too large to embed whole (an edited or a hostile one) keeps its smaller parts.
+  std::vector<std::string> leftOut;
+  const json embedded = embeddableReport(r, kMaxEmbeddedReportBytes, leftOut);
+  if (!leftOut.empty()) {
+    std::string keys;
+    for (const std::string& key : leftOut) keys += (keys.empty() ? "" : ", ") + shortText(key, 60);
+    body += "<p class=\"note\">The report is larger than a page embeds (" +
+            formatBytes(kMaxEmbeddedReportBytes) + "); left out of this page's copy: " +
+            escapeHtml(keys) + ". The saved report holds them.</p>\n";
+  }
+  body += "<script type=\"application/json\" id=\"prt-run\">" + jsonForScript(embedded) +
+          "</script>\n";
   body +=
       "<script type=\"application/json\" id=\"prt-page\">" + jsonForScript(page) + "</script>\n";
   body += "<script>\n" + std::string(kPageScript) + "</script>\n";

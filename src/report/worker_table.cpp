@@ -30,7 +30,7 @@ std::string workerRow(const json& w, const json& r, double totalPixels, double e
                   "\" data-first=\"" + std::to_string(id) + "\" data-last=\"" + std::to_string(id) +
                   "\">";
   auto cell = [&](const std::string& shown, const json& raw, const char* key) {
-    s += "<td data-key=\"" + std::string(key) + "\" data-value=\"" + escapeHtml(raw.dump()) +
+    s += "<td data-key=\"" + std::string(key) + "\" data-value=\"" + escapeHtml(attributeJson(raw)) +
          "\">" + shown + "</td>";
   };
   cell(chip(colour) + std::to_string(id), w.value("worker", json()), "worker");

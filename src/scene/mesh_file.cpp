@@ -11,6 +11,8 @@
 #include <iterator>
 #include <unordered_map>
 
+#include "core/input_error.h"
+#include "core/input_file.h"
 #include "core/portable_math.h"
 #include "scene/mesh_text_check.h"
 
@@ -22,17 +24,12 @@ std::string quoted(const std::string& path) {
 }
 
 std::string readFile(const std::string& path) {
-  std::error_code error;
-  if (!std::filesystem::exists(path, error)) {
-    throw MeshFileError("mesh file " + quoted(path) + " does not exist");
+  std::string text;
+  try {
+    text = readInputFile(path, "mesh file");
+  } catch (const InputError& e) {
+    throw MeshFileError(e.what());
   }
-  if (std::filesystem::is_directory(path, error)) {
-    throw MeshFileError("mesh file " + quoted(path) + " is a directory");
-  }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw MeshFileError("mesh file " + quoted(path) + " cannot be opened for reading");
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad()) throw MeshFileError("mesh file " + quoted(path) + " could not be read");
   if (text.empty()) throw MeshFileError("mesh file " + quoted(path) + " is empty");
   return text;
 }

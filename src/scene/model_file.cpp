@@ -1,5 +1,8 @@
 #include "scene/model_file.h"
 
+#include "core/input_error.h"
+#include "core/input_file.h"
+
 #include <assimp/Importer.hpp>
 #include <cctype>
 #include <cstring>
@@ -56,6 +59,11 @@ ImportedModel readModelFile(const std::string& path, const ModelReadOptions& opt
   }
   if (status.type() != std::filesystem::file_type::regular) {
     throw ModelFileError("model file \"" + path + "\" is not a regular file");
+  }
+  try {
+    checkInputFile(path, "model file");
+  } catch (const InputError& e) {
+    throw ModelFileError(e.what());
   }
   return isGltf(path) ? readGltfFile(path, options) : readAssimpFile(path, options);
 }

@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <memory>
 
+#include "core/input_file.h"
 #include "scene/model_file.h"
 #include "scene/source_text.h"
 
@@ -22,24 +23,6 @@ constexpr size_t kMaxSceneFileBytes = size_t{64} << 20;
 
 std::string quoted(const std::string& path) {
   return "'" + path + "'";
-}
-
-// What a file that is neither regular nor a directory is; empty for the others (a file whose
-// status cannot be read is left to fopen, which says why).
-std::string specialFileKind(std::filesystem::file_type type) {
-  using std::filesystem::file_type;
-  switch (type) {
-    case file_type::fifo:
-      return "a FIFO (named pipe)";
-    case file_type::character:
-      return "a character device";
-    case file_type::block:
-      return "a block device";
-    case file_type::socket:
-      return "a socket";
-    default:
-      return {};
-  }
 }
 
 std::string readWholeFile(const std::string& path) {

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/input_error.h"
+#include "core/input_file.h"
 #include "image/atomic_file.h"
 
 namespace prt {
@@ -32,6 +33,7 @@ struct FileCloser {
 }  // namespace
 
 CostMap readCostMapFile(const std::string& path) {
+  checkInputFile(path, "cost map");
   std::unique_ptr<std::FILE, FileCloser> file(std::fopen(path.c_str(), "rb"));
   if (!file) fail(path, std::string("cannot open: ") + std::strerror(errno));
   unsigned char header[kHeaderBytes];

@@ -7,7 +7,9 @@
 #   resume-local   SIGKILL of a local parallel run mid-render; --resume gives the serial image
 #   resume-serial  SIGKILL of a serial render with --checkpoint; --resume gives its image
 #   refusals       a checkpoint of another render, or one left without --resume, is refused
-#                  with exit code 2 and no image
+#                  with exit code 2 and no image; so are hand-made checkpoints with a valid
+#                  checksum (a run whose stride overflows, a NaN pixel, runs out of order),
+#                  serial and parallel, the file kept
 #   joins          for every strategy: workers that join mid-render (--join-at), alone and
 #                  with losses in the same run (a starting worker crashes, a joiner hangs):
 #                  the serial image, and the report says who joined when
@@ -166,6 +168,36 @@ PY
     run $slow -o out.pfm --resume --no-checkpoint
     [ "$status" -eq 2 ] || fail "--resume with --no-checkpoint: exit $status"
     [ ! -f out.pfm ] || fail "a refused run wrote an image"
+    # The real checkpoint's header with runs and pixels made by hand, and a valid checksum.
+    cp ck real.ck
+    for made in overflow nan backwards; do
+      python3 - "$made" real.ck ck <<'PY'
+import struct, sys
+made, src, dst = sys.argv[1:4]
+data = open(src, "rb").read()[:-8]
+n = struct.unpack_from("<H", data, 16)[0]
+head = data[:18 + n + 8]
+runs = {"overflow": [(1, 3, 1 << 63)], "nan": [(0, 2, 1)], "backwards": [(10, 2, 1), (3, 2, 1)]}[made]
+pixels = sum(c for _, c, _ in runs)
+colours = [0.5] * (3 * pixels)
+if made == "nan":
+    colours[4] = float("nan")
+body = head + struct.pack("<Q", len(runs)) + b"".join(struct.pack("<QQQ", *r) for r in runs)
+body += struct.pack("<%df" % len(colours), *colours) + struct.pack("<%dh" % pixels, *([0] * pixels))
+h = 14695981039346656037
+for b in body:
+    h = ((h ^ b) * 1099511628211) & 0xFFFFFFFFFFFFFFFF
+open(dst, "wb").write(body + struct.pack("<Q", h))
+PY
+      before=$(md5sum ck)
+      for workers in 1 2; do
+        run $slow --workers $workers -o out.pfm --checkpoint ck --resume
+        [ "$status" -eq 2 ] || fail "hand-made checkpoint ($made, $workers workers): exit $status"
+        grep -q "is damaged" err.txt || fail "$made: no reason given: $(cat err.txt)"
+        [ ! -f out.pfm ] || fail "$made: a refused run wrote an image"
+        [ "$(md5sum ck)" = "$before" ] || fail "$made: the checkpoint was changed"
+      done
+    done
     ;;
   *)
     fail "unknown mode $mode"
