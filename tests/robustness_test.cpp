@@ -161,7 +161,22 @@ TEST_F(Robustness, FlagsOutOfRangeAreRefusedWithReadableMessages) {
   refused("--workers 2 --report ''", "needs a file name");
   refused("--workers 2 --serial-seconds -1", "must be a positive number of seconds, at most");
   refused("--workers 2 --serial-seconds inf", "must be a positive number of seconds");
-  refused("--workers 2 --worker-timeout 1e300", "--worker-timeout must be between 0.1 and 86400");
+  refused("--workers 2 --worker-timeout 1e300", "--worker-timeout: must be a number in [0.1, 86400]; found '1e300'");
+  // One rule per flag, whatever the driver: a serial render refuses what a parallel one does,
+  // and the message quotes what was given.
+  for (const char* driver : {"", "--workers 2 "}) {
+    for (const char* value : {"0", "-5", "nan", "inf"}) {
+      refused(std::string(driver) + "--checkpoint-every " + value,
+              std::string("--checkpoint-every: must be a number in [0.01, 86400]; found '") +
+                  value + "'");
+    }
+    refused(std::string(driver) + "--batch-seconds nan", "--batch-seconds: must be a number in [0, 60]");
+    refused(std::string(driver) + "--min-chunk 99999999999999999999",
+            "--min-chunk: must be a whole number in [1, 9007199254740992]; found "
+            "'99999999999999999999'");
+    refused(std::string(driver) + "--chunk 2.5", "--chunk: must be a whole number in");
+    refused(std::string(driver) + "--initial-percent nan", "--initial-percent: must be a number in (0, 100]");
+  }
   EXPECT_FALSE(fs::exists(path("out.png")));
 }
 
@@ -179,6 +194,10 @@ TEST_F(Robustness, OtherCommandsRefuseAbsurdValuesAndReportFailuresPlainly) {
   refused("simulate --latency-us 1e300", "--latency-us must be in [0, 1e9]");
   refused("simulate --bandwidth-mbps 1e-300", "--bandwidth-mbps must be in [0.001, 1e10]");
   refused("simulate --master-service-us 1e300", "--master-service-us must be in [0, 1e9]");
+  refused("simulate --batch-seconds inf", "--batch-seconds: must be a number in [0, 60]; found 'inf'");
+  refused("simulate --min-chunk 1e20", "--min-chunk: must be a whole number in [1, 9007199254740992]");
+  refused("join port --connect-timeout nan", "--connect-timeout: must be a number in [1, 86400]");
+  refused("render x.scene --max-memory 12Q", "--max-memory: must be a size such as 512M");
   const std::string scene = write("ok.scene", kSmallScene);
   refused("compare " + scene + " --diff-scale nan --out " + path("cmp"), "--diff-scale");
   refused("render " + scene + " --workers 2 --batch -1 -o " + path("o.png"), "--batch");

@@ -136,15 +136,19 @@ void StrategyOption::set(StrategyOptions& options, double value) const {
 bool StrategyOption::accepts(double value) const {
   if (!std::isfinite(value)) return false;
   if (isInteger() && value != std::floor(value)) return false;
+  if (isInteger() && value > kMaxWholeOption) return false;  // beyond: not held exactly
   const bool aboveMin = minIncluded ? value >= min : value > min;
   const bool belowMax = maxIncluded ? value <= max : value < max;
   return aboveMin && belowMax;
 }
 
 std::string StrategyOption::rangeText() const {
-  if (std::isinf(max)) return ">= " + number(min);
-  return std::string(minIncluded ? "[" : "(") + number(min) + ", " + number(max) +
-         (maxIncluded ? "]" : ")");
+  if (std::isinf(max) && !isInteger()) return ">= " + number(min);
+  std::string text = minIncluded ? "[" : "(";
+  text.append(number(min)).append(", ");
+  text.append(number(std::isinf(max) ? kMaxWholeOption : max));
+  text.append(maxIncluded || std::isinf(max) ? "]" : ")");
+  return text;
 }
 
 const std::vector<StrategyRow>& strategyRows() {

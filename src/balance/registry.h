@@ -27,6 +27,9 @@ enum class StrategyKind {
 const char* strategyKindName(StrategyKind kind);  // "static", "dynamic", "adaptive"
 
 // One option: a field of StrategyOptions with its command-line flag, help and range.
+// The largest whole-number option value (2^53: every whole number up to it is a double).
+inline constexpr double kMaxWholeOption = 9007199254740992.0;
+
 struct StrategyOption {
   std::string flag;  // "initial-percent" is --initial-percent
   std::string help;

@@ -2,6 +2,7 @@
 // started with --accept-workers FILE (see docs/running.md, "Machines that join a running render").
 
 #include "cli/commands.h"
+#include "cli/flag_checks.h"
 #include "cli/parallel_render.h"
 #include "core/input_error.h"
 #include "core/speed_schedule.h"
@@ -93,6 +94,7 @@ Action addJoinCommand(CLI::App& app) {
                   "T:K,...: from T seconds after it starts, run K times slower instead");
   cmd->add_option("--connect-timeout", o->connectTimeoutSeconds,
                   "Seconds to wait for the render's master to answer before giving up")
+      ->check(finiteIn(1, 86400))
       ->capture_default_str();
   return [o] { return runJoin(*o); };
 }

@@ -123,6 +123,7 @@ void addParallelOptions(CLI::App& cmd, RenderOptions& o) {
   cmd.add_option("--batch-seconds", o.batchSeconds,
                  "Batches grow past --batch pixels to what a worker renders in S seconds at its "
                  "last batch's rate (at most 64 times --batch; 0: every batch --batch pixels)")
+      ->check(finiteIn(0, 60))
       ->capture_default_str()
       ->group(parallel);
   cmd.add_option("--batch", o.batchPixels, "Pixels a worker renders between returning results")
@@ -132,6 +133,7 @@ void addParallelOptions(CLI::App& cmd, RenderOptions& o) {
   cmd.add_option("--worker-timeout", o.workerTimeoutSeconds,
                  "Seconds of silence (no message, not even a heartbeat) after which a worker is "
                  "declared lost and its tasks go to the others")
+      ->check(finiteIn(0.1, 86400))
       ->capture_default_str()
       ->group(parallel);
   cmd.add_option("--endgame", o.endgame,
@@ -160,6 +162,7 @@ void addParallelOptions(CLI::App& cmd, RenderOptions& o) {
       ->group(checkpoints);
   cmd.add_option("--checkpoint-every", o.checkpointEverySeconds,
                  "Seconds between checkpoints")
+      ->check(finiteIn(0.01, 86400))
       ->capture_default_str()
       ->group(checkpoints);
   cmd.add_flag("--resume", o.resume,

@@ -275,6 +275,7 @@ Action addSimulateCommand(CLI::App& app, const std::string& commandLine) {
                   "Batches grow past --batch pixels to what a worker renders in S simulated "
                   "seconds at its last batch's rate, as prt render's do (its default: 0.03); "
                   "0 keeps every batch --batch pixels")
+      ->check(finiteIn(0, 60))
       ->capture_default_str()
       ->group(model);
   cmd->add_option("--batch-overhead-us", o->batchOverheadMicroseconds,

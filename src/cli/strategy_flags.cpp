@@ -1,8 +1,25 @@
 #include "cli/strategy_flags.h"
 
+#include "cli/flag_checks.h"
 #include "core/input_error.h"
 
 namespace prt::cli {
+namespace {
+
+// The option's own range, checked on the text given, so that the message quotes it.
+CLI::Validator strategyValue(const StrategyOption& option) {
+  return CLI::Validator(
+      [option](std::string& text) -> std::string {
+        double value = 0;
+        if (detail::parseNumber(text, value) && option.accepts(value)) return {};
+        return std::string("must be ") + (option.isInteger() ? "a whole number " : "a number ") +
+               (option.rangeText().front() == '>' ? "" : "in ") + option.rangeText() +
+               "; found '" + text + "'";
+      },
+      option.rangeText());
+}
+
+}  // namespace
 
 void addStrategyFlags(CLI::App& cmd, StrategyFlags& flags, const std::string& group) {
   cmd.add_option("--strategy", flags.strategy,
@@ -19,7 +36,8 @@ void addStrategyFlags(CLI::App& cmd, StrategyFlags& flags, const std::string& gr
     CLI::Option* flag = cmd.add_option("--" + option.flag, value,
                                        users + ": " + option.help + ", " + option.rangeText())
                             ->capture_default_str()
-                            ->group(group);
+                            ->group(group)
+                            ->check(strategyValue(option));
     if (option.isInteger()) flag->type_name("INT");
   }
 }
