@@ -289,6 +289,14 @@ TEST_F(Robustness, OutOfMemoryInWorkerThreadsIsACleanError) {
   EXPECT_EQ(parallel.exitCode, 1) << parallel.output;
   EXPECT_EQ(parallel.output.rfind("prt: error: out of memory", 0), 0u) << parallel.output;
   EXPECT_FALSE(fs::exists(path("out.png")));
+  // Workers that join mid-render start their threads from another thread: a thread that
+  // cannot be created there was an uncaught std::system_error (SIGABRT, exit 134).
+  const Result joined = run("render " + scene + " -q --workers 1 --join-at 0:1000 -o " +
+                                path("joined.png"),
+                            limit);
+  EXPECT_EQ(joined.exitCode, 1) << joined.output;
+  EXPECT_EQ(joined.output.rfind("prt: error: out of memory", 0), 0u) << joined.output;
+  EXPECT_FALSE(fs::exists(path("joined.png")));
 }
 
 }  // namespace

@@ -2,11 +2,12 @@
 
 #include <chrono>
 
+#include "core/thread_start.h"
 #include "core/check.h"
 
 namespace prt {
 
-EffectThread::EffectThread() : thread_([this] { loop(); }) {}
+EffectThread::EffectThread() : thread_(startThread([this] { loop(); })) {}
 
 EffectThread::~EffectThread() {
   {

@@ -5,6 +5,7 @@
 #include <thread>
 
 #include "core/thread_failures.h"
+#include "core/thread_start.h"
 #include "drive/local_transport.h"
 
 namespace prt {
@@ -51,28 +52,32 @@ ParallelRun renderLocal(const RunRequest& request) {
   } joinOnExit{joinAll};
   net.restartClock();
   for (int w = 0; w < n; ++w) {
-    threads.emplace_back(runWorkerThread, std::ref(net), w, std::cref(options),
-                         std::ref(failures));
+    threads.push_back(startThread(runWorkerThread, std::ref(net), w, std::cref(options),
+                                  std::ref(failures)));
   }
   // --join-at: a thread that starts each wave's workers at its time, announcing each to the
   // master first, as a machine connecting does. It ends early when the run does.
   if (!options.joins.empty()) {
-    threads.emplace_back([&net, &options, &failures, n] {
+    // A joiner that cannot start (out of memory) is kept as the run's failure: the master
+    // stops, and the joiners started so far end with the network.
+    threads.push_back(startThread([&net, &options, &failures, n] {
       std::vector<std::thread> joiners;
-      int next = n;
-      for (const JoinWave& wave : options.joins) {  // in time order (validated)
-        while (!net.isShutDown() && net.now() < wave.atSeconds) {
-          std::this_thread::sleep_for(std::chrono::milliseconds(2));
+      failures.run([&] {
+        int next = n;
+        for (const JoinWave& wave : options.joins) {  // in time order (validated)
+          while (!net.isShutDown() && net.now() < wave.atSeconds) {
+            std::this_thread::sleep_for(std::chrono::milliseconds(2));
+          }
+          if (net.isShutDown()) break;
+          for (int k = 0; k < wave.count; ++k, ++next) {
+            net.join(next);
+            joiners.push_back(startThread(runWorkerThread, std::ref(net), next,
+                                          std::cref(options), std::ref(failures)));
+          }
         }
-        if (net.isShutDown()) break;
-        for (int k = 0; k < wave.count; ++k, ++next) {
-          net.join(next);
-          joiners.emplace_back(runWorkerThread, std::ref(net), next, std::cref(options),
-                               std::ref(failures));
-        }
-      }
+      });
       for (std::thread& t : joiners) t.join();
-    });
+    }));
   }
   LocalTransport master(net, kMaster);
   try {

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 #include <random>
 
+#include "core/thread_start.h"
 #include "core/input_error.h"
 #include "drive/parallel_run.h"
 #include "image/image_io.h"
@@ -227,7 +228,7 @@ LiveServer::LiveServer(ProgressBoard& board, const ServeAddress& address)
                      " (the port is taken, or the address is not this machine's); choose "
                      "another, or PORT 0 for any free one");
   }
-  thread_ = std::thread([impl] { impl->server.listen_after_bind(); });
+  thread_ = startThread([impl] { impl->server.listen_after_bind(); });
   // stop() is only heard once the server runs: wait for that, so stopping never misses it.
   while (!impl_->server.is_running()) std::this_thread::sleep_for(std::chrono::milliseconds(1));
 }

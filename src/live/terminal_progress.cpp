@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <string>
 
+#include "core/thread_start.h"
 #include "live/progress_text.h"
 
 namespace prt {
@@ -24,7 +25,7 @@ int terminalRows() {
 TerminalProgress::TerminalProgress(const ProgressBoard& board, bool enabled) : board_(board) {
   if (!enabled) return;
   terminal_ = isatty(STDERR_FILENO) != 0;
-  thread_ = std::thread([this] { run(); });
+  thread_ = startThread([this] { run(); });
 }
 
 TerminalProgress::~TerminalProgress() { stop(); }

@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cstdio>
 
+#include "core/thread_start.h"
 #include "core/input_error.h"
 #include "image/atomic_file.h"
 #include "mpi/mpi_transport.h"
@@ -27,7 +28,7 @@ MpiAcceptor::MpiAcceptor(const std::string& portFile) : file_(portFile) {
     MPI_Close_port(name);
     throw;
   }
-  thread_ = std::thread([state = state_] { acceptLoop(state); });
+  thread_ = startThread([state = state_] { acceptLoop(state); });
 }
 
 namespace {

@@ -17,6 +17,7 @@
 #include <string>
 #include <thread>
 
+#include "core/thread_start.h"
 #include "core/check.h"
 #include "core/input_error.h"
 #include "core/input_file.h"
@@ -354,7 +355,7 @@ int runJoinedWorkers(MpiSession& session, const JoinRequest& request) {
   std::mutex mutex;
   std::condition_variable done;
   bool connected = false;
-  std::thread watchdog([&] {
+  std::thread watchdog = startThread([&] {
     std::unique_lock<std::mutex> lock(mutex);
     if (done.wait_for(lock, std::chrono::duration<double>(request.connectTimeoutSeconds),
                       [&] { return connected; })) {
