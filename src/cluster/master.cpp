@@ -157,6 +157,12 @@ void Master::startStrategy(Outbox& out) {
   finishIfComplete(out);  // an image with no tasks left
 }
 
+Outbox Master::stopIfComplete() {
+  Outbox out;
+  finishIfComplete(out);
+  return out;
+}
+
 void Master::finishIfComplete(Outbox& out) {
   if (complete() && !stopped_) {
     stopped_ = true;

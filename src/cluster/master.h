@@ -49,6 +49,9 @@ class Master {
          SceneMsg scene, ResultSink sink, MasterOptions options = {});
 
   Outbox start(double now);  // the scene, to every worker; every lease starts now
+  // StopMsg to every worker if the image is complete and they were not told yet: a run
+  // resumed from a checkpoint that holds every pixel has nothing to hand out.
+  Outbox stopIfComplete();
   Outbox onMessage(int from, const Message& message, double now);
   // The driver's verdict that `worker` is gone. Its unfinished tasks go back to the strategy;
   // a later result from it is still accepted where it is the first.

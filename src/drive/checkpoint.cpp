@@ -188,6 +188,7 @@ std::optional<Checkpoint> readCheckpoint(const std::string& path, const Checkpoi
 void removeCheckpoint(const std::string& path) {
   std::error_code ec;
   std::filesystem::remove(path, ec);
+  removeStaleTemporaries(path);
 }
 
 }  // namespace prt

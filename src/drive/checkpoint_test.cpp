@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <signal.h>
+
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -211,6 +214,22 @@ TEST(CheckpointTest, HandMadePixelsThatAreNotColoursAreRefused) {
   EXPECT_NE(refusal(key, shortOf).find("truncated"), std::string::npos);
   const HandMade beyond{{{0, 1, 1}}, std::vector<float>(3, 0.5f), {0, 0}};
   EXPECT_NE(refusal(key, beyond).find("trailing bytes"), std::string::npos);
+}
+
+// A run killed while writing its checkpoint leaves the temporary file; the run that resumes
+// and finishes removes it even when it never writes a checkpoint itself.
+TEST(CheckpointTest, StaleTemporariesOfADeadRunGoWithTheCheckpoint) {
+  const std::string path = tempPath("stale");
+  pid_t gone = 4194000;
+  while (::kill(gone, 0) == 0 || errno != ESRCH) --gone;
+  const std::string stale = path + ".tmp-" + std::to_string(gone) + "-0";
+  const std::string ours = path + ".tmp-" + std::to_string(::getpid()) + "-7";
+  std::ofstream(stale) << "half";
+  std::ofstream(ours) << "live";
+  removeCheckpoint(path);
+  EXPECT_FALSE(std::filesystem::exists(stale));
+  EXPECT_TRUE(std::filesystem::exists(ours));
+  std::filesystem::remove(ours);
 }
 
 // A checkpoint larger than any of this render's could be is refused before it is read.

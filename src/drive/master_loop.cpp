@@ -60,6 +60,7 @@ class MasterLoop {
       }
     }
     result_.elapsedSeconds = net_.now() - start;
+    sendOut(master_.stopIfComplete());  // complete before any message: a full checkpoint
     logLosses();
     if (!result_.failure.empty()) {
       checkpoint(result_.failure);

@@ -60,6 +60,28 @@ extern "C" void removeTemporariesAndExit(int signal) {
   ::_exit(128 + signal);
 }
 
+// Creates the temporary file exclusively ("x"), so a stale file of the same name left by a
+// crashed process with a recycled pid is never reused: we just move on to the next name.
+// `slot` is its entry in the table of files to remove on a signal.
+std::FILE* openTemporary(const std::string& path, std::string& tempPath, int& slot,
+                         const std::string& extension = "") {
+  static std::atomic<uint64_t> counter{0};
+  removeStaleTemporaries(path);
+  const std::string prefix = path + ".tmp-" + std::to_string(::getpid()) + "-";
+  for (int attempt = 0; attempt < 100; ++attempt) {
+    tempPath = prefix + std::to_string(counter.fetch_add(1, std::memory_order_relaxed)) + extension;
+    // Registered before it exists, so that no signal can leave it behind.
+    slot = registerTemporary(tempPath);
+    if (std::FILE* f = std::fopen(tempPath.c_str(), "wbx")) return f;
+    const int err = errno;
+    unregisterTemporary(slot);
+    if (err != EEXIST) throwCannotWrite(path, err);
+  }
+  throwCannotWrite(path, EEXIST);
+}
+
+}  // namespace
+
 // Removes `name.tmp-PID-N` files beside `path` whose process PID is gone: a run killed by
 // SIGKILL (or a crash) could not remove its own. A live process's files, ours included, are
 // left alone; pids are those of this machine.
@@ -88,28 +110,6 @@ void removeStaleTemporaries(const std::string& path) {
     fs::remove(entry.path(), ignored);
   }
 }
-
-// Creates the temporary file exclusively ("x"), so a stale file of the same name left by a
-// crashed process with a recycled pid is never reused: we just move on to the next name.
-// `slot` is its entry in the table of files to remove on a signal.
-std::FILE* openTemporary(const std::string& path, std::string& tempPath, int& slot,
-                         const std::string& extension = "") {
-  static std::atomic<uint64_t> counter{0};
-  removeStaleTemporaries(path);
-  const std::string prefix = path + ".tmp-" + std::to_string(::getpid()) + "-";
-  for (int attempt = 0; attempt < 100; ++attempt) {
-    tempPath = prefix + std::to_string(counter.fetch_add(1, std::memory_order_relaxed)) + extension;
-    // Registered before it exists, so that no signal can leave it behind.
-    slot = registerTemporary(tempPath);
-    if (std::FILE* f = std::fopen(tempPath.c_str(), "wbx")) return f;
-    const int err = errno;
-    unregisterTemporary(slot);
-    if (err != EEXIST) throwCannotWrite(path, err);
-  }
-  throwCannotWrite(path, EEXIST);
-}
-
-}  // namespace
 
 TemporaryFile::TemporaryFile(const std::string& path, const std::string& extension)
     : target_(path) {

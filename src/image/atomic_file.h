@@ -59,6 +59,11 @@ class TemporaryFile {
   bool committed_ = false;
 };
 
+// Removes `name.tmp-PID-N` files beside `path` whose process is gone (a run killed by SIGKILL
+// could not remove its own); every write beside `path` does it, and so does a run that ends
+// without writing (a resumed render finished before its first checkpoint).
+void removeStaleTemporaries(const std::string& path);
+
 // Installs handlers for SIGTERM, SIGINT and SIGHUP that remove this process's temporary files
 // and _exit(128 + signal). For a program's main(), once, before any thread starts.
 void removeTemporaryFilesOnSignals();

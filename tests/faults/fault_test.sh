@@ -198,6 +198,28 @@ PY
         [ "$(md5sum ck)" = "$before" ] || fail "$made: the checkpoint was changed"
       done
     done
+    # A checkpoint holding every pixel (killed between its last write and the image): the
+    # workers are stopped at once, and each sends its summary (none waited for in vain).
+    cp real.ck ck
+    python3 - complete real.ck ck <<'PY'
+import struct, sys
+data = open(sys.argv[2], "rb").read()[:-8]
+n = struct.unpack_from("<H", data, 16)[0]
+pixels = 64 * 48
+body = data[:18 + n + 8] + struct.pack("<Q", 1) + struct.pack("<QQQ", 0, pixels, 1)
+body += struct.pack("<%df" % (3 * pixels), *([0.25] * (3 * pixels)))
+body += struct.pack("<%dh" % pixels, *([0] * pixels))
+h = 14695981039346656037
+for b in body:
+    h = ((h ^ b) * 1099511628211) & 0xFFFFFFFFFFFFFFFF
+open(sys.argv[3], "wb").write(body + struct.pack("<Q", h))
+PY
+    touch "ck.tmp-4194303-0"  # a dead run's half-written checkpoint
+    run $slow --workers 2 -o out.pfm --checkpoint ck --resume --report r.json
+    [ "$status" -eq 0 ] || fail "a complete checkpoint: exit $status: $(cat err.txt)"
+    [ -f out.pfm ] && [ ! -f ck ] || fail "a complete checkpoint: no image, or the checkpoint kept"
+    ! grep -q '"missing_summaries": [1-9]' r.json || fail "summaries waited for in vain: $(grep missing r.json)"
+    [ ! -f "ck.tmp-4194303-0" ] || fail "a dead run's temporary checkpoint was left"
     ;;
   *)
     fail "unknown mode $mode"
