@@ -14,6 +14,7 @@
 #include "core/input_error.h"
 #include "core/input_file.h"
 #include "core/portable_math.h"
+#include "scene/contained_readers.h"
 #include "scene/mesh_text_check.h"
 
 namespace prt {
@@ -174,6 +175,10 @@ LoadedMesh placeMesh(std::vector<Vec3> vertices, std::vector<std::array<uint32_t
 }
 
 LoadedMesh loadMeshFile(const MeshSource& source) {
+  return loadMeshFileContained(source);
+}
+
+LoadedMesh loadMeshFileHere(const MeshSource& source) {
   const std::string& path = source.file;
   {
     const std::string text = readFile(path);

@@ -42,8 +42,11 @@ struct LoadedMesh {
   std::vector<std::string> warnings;  // what was skipped, one line each
 };
 
-// Reads source.file (a path the caller has resolved) and places it as `source` says.
+// Reads source.file (a path the caller has resolved) and places it as `source` says. The
+// reading is contained in a child process (contained_readers.h); loadMeshFileHere does it in
+// this one.
 LoadedMesh loadMeshFile(const MeshSource& source);
+LoadedMesh loadMeshFileHere(const MeshSource& source);
 
 // Places raw triangles as `source` says (scale, rotations about x, y, z, translation; normals
 // turned alike), computes vertex normals if `source.smooth` and `normals` is empty, and skips

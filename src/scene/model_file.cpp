@@ -2,6 +2,7 @@
 
 #include "core/input_error.h"
 #include "core/input_file.h"
+#include "scene/contained_readers.h"
 
 #include <assimp/Importer.hpp>
 #include <cctype>
@@ -65,7 +66,7 @@ ImportedModel readModelFile(const std::string& path, const ModelReadOptions& opt
   } catch (const InputError& e) {
     throw ModelFileError(e.what());
   }
-  return isGltf(path) ? readGltfFile(path, options) : readAssimpFile(path, options);
+  return isGltf(path) ? readGltfFile(path, options) : readAssimpFileContained(path, options);
 }
 
 }  // namespace prt

@@ -1,0 +1,178 @@
+#include "scene/contained_readers.h"
+
+#include <cstring>
+#include <type_traits>
+
+#include "core/byte_codec.h"
+#include "core/contained_call.h"
+#include "scene/asset_pack.h"
+
+namespace prt {
+namespace {
+
+static_assert(std::is_trivially_copyable_v<Light> && std::is_trivially_copyable_v<Camera>,
+              "lights and cameras cross the pipe as bytes: the child is this same program");
+
+template <typename T>
+void putBytes(ByteWriter& w, const T& value) {
+  w.raw(&value, sizeof value);
+}
+
+template <typename T>
+T getBytes(ByteReader& r) {
+  T value;
+  r.raw(&value, sizeof value);
+  return value;
+}
+
+void putLines(ByteWriter& w, const std::vector<std::string>& lines) {
+  w.pod(static_cast<uint64_t>(lines.size()));
+  for (const std::string& line : lines) w.text(line.substr(0, 4096));
+}
+
+std::vector<std::string> getLines(ByteReader& r) {
+  const auto count = r.pod<uint64_t>();
+  r.needItems(count, 2);
+  std::vector<std::string> lines;
+  for (uint64_t i = 0; i < count; ++i) lines.push_back(r.text());
+  return lines;
+}
+
+// Appends the pack's bytes with their length, so that more can follow.
+void putPack(ByteWriter& w, const std::vector<uint8_t>& pack) {
+  w.pod(static_cast<uint64_t>(pack.size()));
+  w.raw(pack.data(), pack.size());
+}
+
+std::vector<uint8_t> getPack(ByteReader& r) {
+  const auto size = r.pod<uint64_t>();
+  r.needItems(size, 1);
+  std::vector<uint8_t> pack(size);
+  r.raw(pack.data(), size);
+  return pack;
+}
+
+int lineOf(const std::exception& e) {
+  const auto* mesh = dynamic_cast<const MeshFileError*>(&e);
+  return mesh != nullptr ? mesh->line() : 0;
+}
+
+std::string quoted(const std::string& path) {
+  return "\"" + path + "\"";
+}
+
+// What a failure of the child says, after "<what> FILE ".
+std::string failureText(const ContainedFailure& f) {
+  switch (f.cause()) {
+    case ContainedFailure::Cause::Threw:
+      return f.what();
+    case ContainedFailure::Cause::OutOfMemory:
+      return std::string("could not be read: it ") + f.what();
+    case ContainedFailure::Cause::TimedOut:
+    case ContainedFailure::Cause::Crashed:
+      return std::string("could not be read: the model library (assimp) reading it ") +
+             f.what() + "; the file is not one PRT can read (convert it to glTF, OBJ or PLY)";
+  }
+  return f.what();
+}
+
+}  // namespace
+
+LoadedMesh loadMeshFileContained(const MeshSource& source) {
+  std::vector<uint8_t> bytes;
+  try {
+    bytes = runContained(
+        [&] {
+          LoadedMesh loaded = loadMeshFileHere(source);
+          Scene scene;
+          scene.objects.push_back({MeshShape{loaded.mesh, source}, {}});
+          ByteWriter w;
+          putPack(w, packAssets(scene));
+          putLines(w, loaded.warnings);
+          return std::move(w.out);
+        },
+        {0, kForeignReaderSeconds}, lineOf);
+  } catch (const ContainedFailure& f) {
+    if (f.cause() == ContainedFailure::Cause::Threw) throw MeshFileError(f.what(), f.line());
+    throw MeshFileError("mesh file " + quoted(source.file) + " " + failureText(f));
+  }
+  try {
+    ByteReader r(bytes.data(), bytes.size(), "mesh from the reader");
+    ShippedAssets assets = unpackAssets(getPack(r));
+    LoadedMesh loaded;
+    if (assets.meshBlocks.size() != 1) r.fail("no mesh");
+    loaded.mesh = std::make_shared<TriangleMesh>(*assets.meshBlocks[0]);
+    loaded.warnings = getLines(r);
+    r.finish();
+    return loaded;
+  } catch (const std::bad_alloc&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw MeshFileError("mesh file " + quoted(source.file) + " could not be read: " + e.what());
+  }
+}
+
+ImportedModel readAssimpFileContained(const std::string& path, const ModelReadOptions& options) {
+  std::vector<uint8_t> bytes;
+  try {
+    bytes = runContained(
+        [&] {
+          const ImportedModel model = readAssimpFile(path, options);
+          Scene scene;
+          scene.objects = model.objects;
+          scene.textures = model.textures;
+          ImportSource import;
+          import.file = path;
+          import.objectCount = model.objects.size();
+          import.textureCount = model.textures.size();
+          scene.imports.push_back(import);
+          ByteWriter w;
+          putPack(w, packAssets(scene));
+          w.pod(static_cast<uint64_t>(model.lights.size()));
+          for (const Light& light : model.lights) putBytes(w, light);
+          w.pod(static_cast<uint64_t>(model.cameras.size()));
+          for (const ModelCamera& camera : model.cameras) {
+            w.text(camera.name.substr(0, 4096));
+            putBytes(w, camera.camera);
+            w.pod(camera.aspectRatio);
+          }
+          putLines(w, model.warnings);
+          w.text(model.format.substr(0, 4096));
+          return std::move(w.out);
+        },
+        {0, kForeignReaderSeconds});
+  } catch (const ContainedFailure& f) {
+    if (f.cause() == ContainedFailure::Cause::Threw) throw ModelFileError(f.what());
+    throw ModelFileError("model file " + quoted(path) + " " + failureText(f));
+  }
+  try {
+    ByteReader r(bytes.data(), bytes.size(), "model from the reader");
+    ShippedAssets assets = unpackAssets(getPack(r));
+    if (assets.imports.size() != 1) r.fail("no model");
+    ImportedModel model;
+    model.objects = std::move(assets.imports[0].objects);
+    model.textures = std::move(assets.imports[0].textures);
+    const auto lights = r.pod<uint64_t>();
+    r.needItems(lights, sizeof(Light));
+    for (uint64_t i = 0; i < lights; ++i) model.lights.push_back(getBytes<Light>(r));
+    const auto cameras = r.pod<uint64_t>();
+    r.needItems(cameras, sizeof(Camera));
+    for (uint64_t i = 0; i < cameras; ++i) {
+      ModelCamera camera;
+      camera.name = r.text();
+      camera.camera = getBytes<Camera>(r);
+      camera.aspectRatio = r.pod<double>();
+      model.cameras.push_back(std::move(camera));
+    }
+    model.warnings = getLines(r);
+    model.format = r.text();
+    r.finish();
+    return model;
+  } catch (const std::bad_alloc&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw ModelFileError("model file " + quoted(path) + " could not be read: " + e.what());
+  }
+}
+
+}  // namespace prt
