@@ -19,6 +19,7 @@ struct JoinOptions {
   double slowdown = 1;
   std::string slowdownAt;  // T:K,...
   double connectTimeoutSeconds = 30;
+  double startupTimeoutSeconds = 120;
 };
 
 // --slowdown-at T:K,... of a joiner: read item by item as worker 0's W:T:K, an error given in
@@ -65,7 +66,7 @@ int runJoin(const JoinOptions& o) {
   request.slowdown = o.slowdown;
   request.slowdownChanges = slowdownChanges;
   request.connectTimeoutSeconds = o.connectTimeoutSeconds;
-  MpiSession session(true);  // the connect watchdog may end the job from its own thread
+  MpiSession session(true, o.startupTimeoutSeconds);  // the connect watchdog may end the job from its own thread
   return session.exitCode(runJoinedWorkers(session, request));
 #else
   (void)slowdownChanges;
@@ -94,6 +95,10 @@ Action addJoinCommand(CLI::App& app) {
                   "T:K,...: from T seconds after it starts, run K times slower instead");
   cmd->add_option("--connect-timeout", o->connectTimeoutSeconds,
                   "Seconds to wait for the render's master to answer before giving up")
+      ->check(finiteIn(1, 86400))
+      ->capture_default_str();
+  cmd->add_option("--startup-timeout", o->startupTimeoutSeconds,
+                  "Seconds MPI start-up may take before this job ends (exit 1)")
       ->check(finiteIn(1, 86400))
       ->capture_default_str();
   return [o] { return runJoin(*o); };

@@ -136,6 +136,13 @@ void addParallelOptions(CLI::App& cmd, RenderOptions& o) {
       ->check(finiteIn(0.1, 86400))
       ->capture_default_str()
       ->group(parallel);
+  cmd.add_option("--startup-timeout", o.startupTimeoutSeconds,
+                 "Under mpirun: seconds MPI start-up may take; a rank killed while the job "
+                 "starts would leave the others waiting in it for ever, so each ends instead "
+                 "(exit 1)")
+      ->check(finiteIn(1, 86400))
+      ->capture_default_str()
+      ->group(parallel);
   cmd.add_option("--endgame", o.endgame,
                  "on: when nothing is left to hand out, an idle worker renders a copy of the "
                  "tasks expected to finish last (the first result wins)")
@@ -323,7 +330,7 @@ int renderParallelLocal(const RenderOptions& o, const Scene& scene, const Render
 // --- MPI hook (the driver is in src/mpi; this is only the command-line glue) ---------------
 int renderParallelMpi(const RenderOptions& o, const SceneLoader& loadScene) {
 #ifdef PRT_HAVE_MPI
-  MpiSession session(!o.acceptWorkersPath.empty());
+  MpiSession session(!o.acceptWorkersPath.empty(), o.startupTimeoutSeconds);
   std::optional<RenderOptions> plan;  // once the scene is read: the checkpoint settled
   if (!session.isMaster()) {
     // Every rank parses the same command line. Options that are bad here are bad on the

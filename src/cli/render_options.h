@@ -45,6 +45,7 @@ struct RenderOptions {
   unsigned long long batchPixels = 128;    // pixels per returned batch
   double batchSeconds = 0.03;              // batches grow to this much work
   double workerTimeoutSeconds = 5;         // the lease: silence before a worker is lost
+  double startupTimeoutSeconds = 120;      // --startup-timeout: MPI start-up's deadline
   std::string endgame = "off";             // on | off: copies of the last tasks
   std::string checkpointPath;              // --checkpoint FILE (or, resolved, OUTPUT.ckpt)
   bool noCheckpoint = false;               // --no-checkpoint: no automatic checkpoint

@@ -1,6 +1,7 @@
 #include "image/image_io.h"
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -303,7 +304,12 @@ TEST_F(ImageIoTest, UnknownExtensionListsTheValidOnes) {
 
 TEST_F(ImageIoTest, MissingFileCannotBeRead) {
   const std::string p = path("absent.png");
-  EXPECT_EQ(messageOf([&] { readImage(p); }), "cannot read '" + p + "': No such file or directory");
+  EXPECT_EQ(messageOf([&] { readImage(p); }), "image '" + p + "' does not exist");
+  const std::string fifo = path("pipe.png");
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  EXPECT_EQ(messageOf([&] { readImage(fifo); }),
+            "image '" + fifo + "' is a FIFO (named pipe), not a regular file");
+  std::filesystem::remove(fifo);
 }
 
 // --- Atomic writes ---

@@ -1,11 +1,16 @@
 #include "mpi/mpi_session.h"
 
+#include <chrono>
+#include <condition_variable>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <stdexcept>
+#include <mutex>
 #include <string>
+#include <thread>
 
+#include "core/thread_start.h"
 #include "mpi/mpi_comm.h"
 #include "mpi/mpi_transport.h"
 
@@ -13,7 +18,48 @@ namespace prt {
 
 using mpi_detail::check;
 
-MpiSession::MpiSession(bool threadMultiple) : comm_(std::make_unique<MpiComm>()) {
+namespace {
+
+// Ends the process if start-up has not finished by the deadline.
+class StartupWatchdog {
+ public:
+  explicit StartupWatchdog(double seconds)
+      : thread_(startThread([this, seconds] {
+          std::unique_lock<std::mutex> lock(mutex_);
+          if (done_.wait_for(lock, std::chrono::duration<double>(seconds), [&] { return disarmed_; })) {
+            return;
+          }
+          std::fprintf(stderr,
+                       "prt: error: MPI start-up did not finish within %.0f s (a rank died or "
+                       "cannot be reached while the job started); this rank ends (exit 1)\n",
+                       seconds);
+          std::fflush(stderr);
+          std::_Exit(1);
+        })) {}
+  ~StartupWatchdog() { disarm(); }
+  StartupWatchdog(const StartupWatchdog&) = delete;
+  StartupWatchdog& operator=(const StartupWatchdog&) = delete;
+  void disarm() {
+    {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      disarmed_ = true;
+    }
+    done_.notify_all();
+    if (thread_.joinable()) thread_.join();
+  }
+
+ private:
+  std::mutex mutex_;
+  std::condition_variable done_;
+  bool disarmed_ = false;
+  std::thread thread_;
+};
+
+}  // namespace
+
+MpiSession::MpiSession(bool threadMultiple, double startupSeconds)
+    : comm_(std::make_unique<MpiComm>()) {
+  StartupWatchdog watchdog(startupSeconds);
   int initialized = 0;
   MPI_Initialized(&initialized);
   if (initialized) throw std::runtime_error("MPI is already initialised in this process");
@@ -36,6 +82,7 @@ MpiSession::MpiSession(bool threadMultiple) : comm_(std::make_unique<MpiComm>())
   } catch (const std::exception& e) {
     abort(e.what(), 1);
   }
+  watchdog.disarm();
 }
 
 MpiSession::~MpiSession() {

@@ -21,12 +21,20 @@ namespace prt {
 
 struct MpiComm;  // the communicator and run state; defined inside src/mpi only
 
+inline constexpr double kDefaultMpiStartupSeconds = 120;
+
 class MpiSession {
  public:
   // Throws std::runtime_error if MPI cannot start or provide MPI_THREAD_FUNNELED. With
   // `threadMultiple`, asks for MPI_THREAD_MULTIPLE (a port listener, a connect watchdog);
   // whether it came is threadMultiple() — otherwise FUNNELED, as every other run needs.
-  explicit MpiSession(bool threadMultiple = false);
+  //
+  // Start-up has a deadline: a rank killed while the others are inside MPI_Init_thread leaves
+  // them waiting there for ever, with no error and no CPU use. If initialisation has not
+  // finished after `startupSeconds`, this rank says so and ends with exit code 1 (nothing has
+  // been written yet: a checkpoint from before is kept as it was).
+  explicit MpiSession(bool threadMultiple = false,
+                      double startupSeconds = kDefaultMpiStartupSeconds);
   ~MpiSession();
   MpiSession(const MpiSession&) = delete;
   MpiSession& operator=(const MpiSession&) = delete;

@@ -100,7 +100,7 @@ TEST(CostMapTest, FileRoundTrip) {
 }
 
 TEST(CostMapTest, FileErrorsNameTheFileAndTheProblem) {
-  expectReadError(tempPath("does-not-exist.cost"), "cannot open");
+  expectReadError(tempPath("does-not-exist.cost"), "does not exist");
 
   const std::string path = tempPath("bad.cost");
   writeBytes(path, "P6\n2 2\n255\n");
