@@ -8,13 +8,16 @@
 #include <system_error>
 
 #include "cli/commands.h"
+#include "core/exit_status.h"
 #include "core/input_error.h"
 #include "core/memory_budget.h"
 #include "core/thread_failures.h"
 #include "image/atomic_file.h"
 #include "trace/isa_level.h"
 
-int main(int argc, char** argv) {
+namespace {
+
+int runPrt(int argc, char** argv) {
   // A render stopped by Ctrl-C, kill or a closed terminal leaves no half-written file behind.
   prt::removeTemporaryFilesOnSignals();
   CLI::App app{"PRT: a ray tracer for networks of computers of different speeds"};
@@ -94,4 +97,12 @@ int main(int argc, char** argv) {
     return 1;
   }
   return 1;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const int code = runPrt(argc, argv);
+  prt::recordExitStatus(code);  // for scripts/prt-mpirun under --enable-recovery
+  return code;
 }

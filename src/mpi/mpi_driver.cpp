@@ -19,6 +19,7 @@
 
 #include "core/thread_start.h"
 #include "core/check.h"
+#include "core/exit_status.h"
 #include "core/input_error.h"
 #include "core/input_file.h"
 #include "core/byte_codec.h"
@@ -225,6 +226,7 @@ void finishMpiMaster(MpiSession& session, const ParallelRun& run) {
                  losses);
     std::fflush(stdout);
     std::fflush(stderr);
+    recordExitStatus(0);
     MPI_Abort(session.comm().comm, 0);
     std::_Exit(0);
   }

@@ -10,6 +10,7 @@
 #include <string>
 #include <thread>
 
+#include "core/exit_status.h"
 #include "core/thread_start.h"
 #include "mpi/mpi_comm.h"
 #include "mpi/mpi_transport.h"
@@ -34,6 +35,7 @@ class StartupWatchdog {
                        "cannot be reached while the job started); this rank ends (exit 1)\n",
                        seconds);
           std::fflush(stderr);
+          recordExitStatus(1);
           std::_Exit(1);
         })) {}
   ~StartupWatchdog() { disarm(); }
@@ -102,6 +104,7 @@ MpiSession::~MpiSession() {
 
 int MpiSession::exitCode(int code) const {
   if (!comm_->skipFinalize) return code;
+  recordExitStatus(code);
   std::fflush(stdout);
   std::fflush(stderr);
   std::_Exit(code);
@@ -137,6 +140,7 @@ void MpiSession::abort(const std::string& message, int exitCode) const {
   std::fprintf(stderr, "prt: error: %s\n", message.c_str());
   std::fflush(stderr);
   std::fflush(stdout);
+  recordExitStatus(exitCode);
   MPI_Abort(comm_->comm != MPI_COMM_NULL ? comm_->comm : MPI_COMM_WORLD, exitCode);
   std::_Exit(exitCode);  // MPI_Abort does not return; if it did, still end this rank
 }

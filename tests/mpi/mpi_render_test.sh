@@ -24,6 +24,13 @@
 #                   byte-identical to the same --frame rendered serially
 #   sequence-resume SIGKILL of the whole job of a sequence mid-render; --resume gives every
 #                   frame of the serial render
+#   startup-kill    SIGKILL of worker rank 2 the moment it appears (inside MPI start-up), three
+#                   times, with and without --enable-recovery: every rank ends within
+#                   --startup-timeout (5 s) plus a margin, exit code 1 through
+#                   scripts/prt-mpirun (ARG), and a checkpoint from before is kept unchanged
+#   exit-codes      under --enable-recovery through scripts/prt-mpirun (ARG): a missing
+#                   scene 2, every worker lost 1, the master killed mid-render non-zero,
+#                   prt join with a missing or stale port file 2 and 1, success 0
 #   changing        the default (adaptive) strategy with a worker slowing down part-way
 #                   (--slowdown-at): the image is still the serial one
 set -eu
@@ -276,6 +283,88 @@ import json
 r = json.load(open("report.json"))
 assert [l["worker"] for l in r["lost_workers"]] == [1], r["lost_workers"]
 PY
+    ;;
+  startup-kill)
+    export MPIRUN="$mpiexec"
+    echo "not a checkpoint of this render" >ck
+    before=$(md5sum ck)
+    for recovery in --enable-recovery ""; do
+      for attempt in 1 2 3; do
+        start=$(date +%s)
+        # shellcheck disable=SC2086
+        "$arg" $launcher_flags $recovery -np "$np" "$prt" render "$scene" $size -q -o mpi.pfm \
+          --startup-timeout 5 --checkpoint ck >out.txt 2>err.txt &
+        job=$!
+        victim=
+        for i in $(seq 1 2000); do
+          for child in $(pgrep -P "$job" 2>/dev/null) $(pgrep -P "$(pgrep -P "$job" | head -1)" 2>/dev/null); do
+            if tr '\0' '\n' <"/proc/$child/environ" 2>/dev/null | grep -qx "OMPI_COMM_WORLD_RANK=2"; then
+              kill -9 "$child" && victim=$child
+              break
+            fi
+          done
+          [ -n "$victim" ] && break
+          sleep 0.002
+        done
+        [ -n "$victim" ] || { kill_job; fail "rank 2 never appeared"; }
+        wait_job 40
+        elapsed=$(($(date +%s) - start))
+        [ "$status" -ne 124 ] || fail "a rank killed at start-up ($recovery, try $attempt): the job hung"
+        [ "$status" -ne 0 ] || fail "a rank killed at start-up ($recovery, try $attempt): exit 0"
+        [ "$elapsed" -lt 30 ] || fail "the job took $elapsed s to end"
+        [ ! -f mpi.pfm ] || fail "an image was written"
+        [ "$(md5sum ck)" = "$before" ] || fail "the checkpoint was changed"
+        sleep 0.5
+        pgrep -f -- "--startup-timeout 5 --checkpoint ck" >/dev/null && fail "ranks were left running"
+        echo "startup kill ($recovery, try $attempt): exit $status after $elapsed s"
+      done
+    done
+    ;;
+  exit-codes)
+    export MPIRUN="$mpiexec"
+    launch() {
+      set +e
+      # shellcheck disable=SC2086
+      timeout -k 5 90 "$arg" $launcher_flags --enable-recovery "$@" >out.txt 2>err.txt
+      status=$?
+      set -e
+    }
+    # shellcheck disable=SC2086
+    launch -np "$np" "$prt" render "$scene" $size -q -o mpi.pfm
+    [ "$status" -eq 0 ] || fail "a good render: exit $status"
+    launch -np "$np" "$prt" render missing.scene -q -o mpi.pfm
+    [ "$status" -eq 2 ] || fail "a missing scene: exit $status, not 2"
+    faults=
+    for w in $(seq 0 $((np - 2))); do faults="$faults --inject-fault $w:0:crash"; done
+    # shellcheck disable=SC2086
+    launch -np "$np" "$prt" render "$scene" $size -q -o lost.pfm $faults --worker-timeout 1
+    [ "$status" -eq 1 ] || fail "every worker lost: exit $status, not 1"
+    [ ! -f lost.pfm ] || fail "every worker lost, yet an image"
+    launch -np 2 "$prt" join missing.port
+    [ "$status" -eq 2 ] || fail "join with a missing port file: exit $status, not 2"
+    echo "tag#0\$port#1234\$description#nobody:tcp://127.0.0.1:9" >stale.port
+    launch -np 2 "$prt" join stale.port --connect-timeout 2
+    [ "$status" -ne 0 ] || fail "join with a stale port file: exit 0"
+    # The master killed mid-render: no image, and not success.
+    # shellcheck disable=SC2086
+    "$arg" $launcher_flags --enable-recovery -np "$np" "$prt" render "$scene" $slow -q \
+      --slowdown "$(slowdowns)" --batch 8 -o killed.pfm --checkpoint ck --checkpoint-every 0.1 \
+      >out.txt 2>err.txt &
+    job=$!
+    wait_for_progress ck 200 || { kill_job; fail "no progress within 20 s"; }
+    master=
+    for child in $(pgrep -P "$(pgrep -P "$job" | head -1)" 2>/dev/null) $(pgrep -P "$job"); do
+      if tr '\0' '\n' <"/proc/$child/environ" 2>/dev/null | grep -qx "OMPI_COMM_WORLD_RANK=0"; then
+        master=$child
+      fi
+    done
+    [ -n "$master" ] || { kill_job; fail "no master rank found"; }
+    kill -9 "$master"
+    wait_job 60
+    [ "$status" -ne 124 ] || fail "the master killed: the job hung"
+    [ "$status" -ne 0 ] || fail "the master killed: exit 0"
+    [ ! -f killed.pfm ] || fail "the master killed, yet an image"
+    grep -q "rank 0 ended without an exit status" err.txt || fail "no word on the master: $(cat err.txt)"
     ;;
   resume)
     # shellcheck disable=SC2086
