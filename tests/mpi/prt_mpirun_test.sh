@@ -1,0 +1,78 @@
+#!/bin/sh
+# Tests of scripts/prt-mpirun with stand-in mpiruns (no MPI needed):
+#   - an mpirun that hangs after its ranks have ended (only zombies under it, as Open MPI
+#     4.1's mpirun does when a rank is killed at start-up) is ended after PRT_MPIRUN_GRACE
+#     seconds, with the exit code rank 0 wrote, else 1;
+#   - an mpirun with a live rank is not ended however long it runs;
+#   - mpirun's own non-zero status wins; else rank 0's recorded code; else 1;
+#   - no status file is left behind.
+# Usage: prt_mpirun_test.sh WRAPPER WORK
+set -eu
+wrapper=$1 work=$2
+rm -rf "$work"
+mkdir -p "$work"
+cd "$work"
+fail() { echo "FAIL: $*" >&2; exit 1; }
+
+# A stand-in mpirun: `fake-mpirun -x PRT_STATUS_FILE MODE [CODE]`.
+#   hang CODE      a rank that records CODE and exits; then waits for ever without reaping it
+#   live SECONDS   a rank that runs SECONDS, records 0 and exits; then mpirun exits 0
+#   exit CODE      mpirun exits with CODE, no record
+#   record CODE    a rank records CODE; mpirun reaps it and exits 0
+cat >fake-mpirun <<'PY'
+#!/usr/bin/env python3
+import os, sys, time
+mode, value = sys.argv[3], int(sys.argv[4])
+def record(code):
+    with open(os.environ["PRT_STATUS_FILE"], "w") as f:
+        f.write(f"{code}\n")
+if mode == "exit":
+    sys.exit(value)
+pid = os.fork()
+if pid == 0:
+    if mode == "live":
+        time.sleep(value)
+        value = 0
+    if value >= 0:
+        record(value)
+    os._exit(0)
+if mode == "hang":
+    while True:
+        time.sleep(60)
+os.waitpid(pid, 0)
+sys.exit(0)
+PY
+chmod +x fake-mpirun
+export MPIRUN="$PWD/fake-mpirun" PRT_MPIRUN_GRACE=2
+
+run() {
+  start=$(date +%s)
+  set +e
+  timeout -k 2 60 sh "$wrapper" "$@" 2>err.txt
+  status=$?
+  set -e
+  elapsed=$(($(date +%s) - start))
+}
+
+run hang 3
+[ "$status" -eq 3 ] || fail "a hung mpirun with rank 0's code 3: exit $status"
+[ "$elapsed" -lt 15 ] || fail "a hung mpirun was ended after $elapsed s"
+grep -q "has not ended" err.txt || fail "no word about the hung mpirun"
+run hang 0
+[ "$status" -eq 0 ] || fail "a hung mpirun after a success: exit $status"
+run hang -1
+[ "$status" -eq 1 ] || fail "a hung mpirun with no record: exit $status"
+run live 5
+[ "$status" -eq 0 ] || fail "an mpirun with a rank alive for 5 s (grace 2 s): exit $status"
+grep -q "has not ended" err.txt && fail "an mpirun with a live rank was ended"
+run exit 7
+[ "$status" -eq 7 ] || fail "mpirun's own status 7: exit $status"
+run record 2
+[ "$status" -eq 2 ] || fail "rank 0's code 2: exit $status"
+run record -1
+[ "$status" -eq 1 ] || fail "no record: exit $status"
+leftover=$(find . -name '.prt-*')
+[ -z "$leftover" ] || fail "files left behind: $leftover"
+PRT_MPIRUN_GRACE=soon run record 0
+[ "$status" -eq 2 ] || fail "a bad PRT_MPIRUN_GRACE: exit $status"
+echo "prt-mpirun: all cases pass"
