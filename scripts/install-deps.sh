@@ -26,6 +26,7 @@ packages=(
   chromium  # headless, for the test that opens the run page in a browser
   ffmpeg  # prt render --video: a sequence's frames made into a video
   clang libclang-rt-14-dev   # libFuzzer and the sanitizers, for scripts/fuzz.sh
+  assimp-testmodels  # other tools' model files, read by the tests and scripts/sweep-models.sh
 )
 
 # The Stanford bunny for scenes/bunny.scene and scenes/practical.scene, from npm. Without a

@@ -47,6 +47,12 @@ void writeAll(int fd, const uint8_t* data, size_t size) {
 
 [[noreturn]] void childMain(int fd, const ContainedCall& call, uint64_t memoryBytes,
                             const LineOf& lineOf) {
+  // What the library prints (assimp's assertion and parser messages) is not prt's output.
+  if (const int null = ::open("/dev/null", O_WRONLY | O_CLOEXEC); null >= 0) {
+    ::dup2(null, STDOUT_FILENO);
+    ::dup2(null, STDERR_FILENO);
+    ::close(null);
+  }
   if (const uint64_t mapped = mappedBytes(); mapped > 0) {
     const rlimit limit{mapped + memoryBytes, mapped + memoryBytes};
     ::setrlimit(RLIMIT_AS, &limit);

@@ -4,7 +4,7 @@
 // ends the child, not prt. The child is a fork of this process: it runs `call` with its
 // address space limited to what it already maps plus `memoryBytes`, returns the bytes `call`
 // made through a pipe and ends with _exit (no destructors, no atexit handlers: an MPI rank's
-// child never touches MPI). The parent waits at most `seconds`, then kills it.
+// child never touches MPI). What the child prints goes to /dev/null. The parent waits at most `seconds`, then kills it.
 //
 // Outcomes: the bytes; or ContainedFailure — the child threw (its message, and the line a
 // MeshFileError-like error carried), ran out of memory, took too long, or died of a signal

@@ -16,6 +16,7 @@
 #include "core/portable_math.h"
 #include "scene/contained_readers.h"
 #include "scene/mesh_text_check.h"
+#include "scene/placed_meshes.h"
 
 namespace prt {
 namespace {
@@ -185,20 +186,23 @@ LoadedMesh loadMeshFileHere(const MeshSource& source) {
     checkMeshText(text, path);
   }
   Assimp::Importer importer;
-  // Every face made triangles, node transforms (glTF, COLLADA) applied; no normals invented.
-  const aiScene* scene = importer.ReadFile(
-      path, aiProcess_Triangulate | aiProcess_PreTransformVertices | aiProcess_SortByPType);
+  // Every face made triangles; no normals invented. The node tree's transforms are applied
+  // here (placed_meshes.h), not by assimp's PreTransformVertices step, which crashes on some
+  // files' cameras and lights. No SortByPType step either: it refuses a file with an empty
+  // mesh (an STL file's empty solid), and points and lines are skipped below anyway.
+  const aiScene* scene = importer.ReadFile(path, aiProcess_Triangulate);
   if (scene == nullptr) {
     throw MeshFileError("mesh file " + quoted(path) +
                         " could not be read: " + importer.GetErrorString());
   }
-  bool allNormals = scene->mNumMeshes > 0;
-  for (unsigned m = 0; m < scene->mNumMeshes; ++m) allNormals &= scene->mMeshes[m]->HasNormals();
+  const std::vector<PlacedMesh> placed = placedMeshes(*scene, path);
+  bool allNormals = !placed.empty();
+  for (const PlacedMesh& p : placed) allNormals &= p.mesh->HasNormals();
   VertexJoiner joiner;
   std::vector<std::array<uint32_t, 3>> triangles;
   size_t notTriangles = 0, outOfRange = 0;
-  for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
-    const aiMesh& mesh = *scene->mMeshes[m];
+  for (const PlacedMesh& p : placed) {
+    const aiMesh& mesh = *p.mesh;
     for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
       const aiFace& face = mesh.mFaces[f];
       if (face.mNumIndices != 3) {
@@ -213,7 +217,9 @@ LoadedMesh loadMeshFileHere(const MeshSource& source) {
           inRange = false;
           break;
         }
-        t[k] = joiner.add(mesh.mVertices[v], allNormals ? &mesh.mNormals[v] : nullptr);
+        const aiVector3D position = placedVertex(p, v);
+        const aiVector3D normal = allNormals ? placedNormal(p, v) : aiVector3D();
+        t[k] = joiner.add(position, allNormals ? &normal : nullptr);
       }
       if (!inRange) {
         ++outOfRange;
