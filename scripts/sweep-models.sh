@@ -3,7 +3,8 @@
 # assimp-testmodels, /usr/share/assimp/models) twice, as `prt render FILE` and as the `mesh`
 # of a scene, each tiny and under a time limit, and sorts the outcomes: rendered (exit 0),
 # refused with a message (exit 2), and anything else: a crash, a hang (killed after 120 s) or
-# another exit code, each listed. Exits 1 if there is any of those, else 0.
+# another exit code, each listed (with SWEEP_VERBOSE=1 the refusals too, with their message).
+# Exits 1 if there is any of those, else 0.
 set -uo pipefail
 prt=${1:?usage: sweep-models.sh PRT [DIR]}
 dir=${2:-/usr/share/assimp/models}
@@ -28,7 +29,9 @@ while IFS= read -r -d '' file; do
     code=$?
     case $code in
       0) rendered=$((rendered + 1)) ;;
-      2) refused=$((refused + 1)) ;;
+      2) refused=$((refused + 1))
+         [[ ${SWEEP_VERBOSE:-0} == 1 ]] &&
+           echo "sweep-models: refused: $how $file: $(head -c 300 "$work/run/err" | tr '\n' ' ')" ;;
       *) bad=$((bad + 1))
          echo "sweep-models: $how $file: exit $code: $(head -c 300 "$work/run/err" | tr '\n' ' ')" ;;
     esac

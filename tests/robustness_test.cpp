@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 #include <signal.h>
+#include <fcntl.h>
 #include <spawn.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
@@ -209,7 +210,8 @@ TEST_F(Robustness, OtherCommandsRefuseAbsurdValuesAndReportFailuresPlainly) {
 
 // Starts a render of the benchmark scene (seconds long), sends `signal` once it runs and
 // returns how it ended: its exit code, or -1 if the signal killed it (no handler ran).
-int renderKilledBy(int signal, const std::vector<std::string>& flags, const std::string& out) {
+int renderKilledBy(int signal, const std::vector<std::string>& flags, const std::string& out,
+                   const std::string& errPath = "", int afterMs = 700) {
   std::vector<std::string> args = {prt::e2e::prtBinary(), "render",
                                    std::string(PRT_SOURCE_DIR) + "/scenes/complex.scene",
                                    "-q", "--spp", "64", "--width", "320", "--height", "240",
@@ -219,8 +221,16 @@ int renderKilledBy(int signal, const std::vector<std::string>& flags, const std:
   for (std::string& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
   pid_t pid = 0;
-  if (posix_spawn(&pid, argv[0], nullptr, nullptr, argv.data(), environ) != 0) return -2;
-  std::this_thread::sleep_for(std::chrono::milliseconds(700));  // past start-up, rendering
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  if (!errPath.empty()) {
+    posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, errPath.c_str(),
+                                     O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  }
+  const int spawned = posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  if (spawned != 0) return -2;
+  std::this_thread::sleep_for(std::chrono::milliseconds(afterMs));  // past start-up, rendering
   ::kill(pid, signal);
   int status = 0;
   ::waitpid(pid, &status, 0);
@@ -265,6 +275,29 @@ TEST_F(Robustness, ByDefaultAStoppedRenderKeepsItsPixelsForResume) {
   const std::string reference = readWholeFile(path("ref.pfm"));
   EXPECT_EQ(readWholeFile(path("a.pfm")), reference);
   EXPECT_EQ(readWholeFile(path("b.pfm")), reference);
+}
+
+// A stop signal is answered at once, before the checkpoint is written: a launcher that sends
+// SIGKILL soon after SIGTERM must not take the resume command with it. Said once.
+TEST_F(Robustness, AStopSaysHowToResumeBeforeSavingAndOnce) {
+  for (const std::vector<std::string>& driver :
+       {std::vector<std::string>{"--threads", "1"}, std::vector<std::string>{"--workers", "2"}}) {
+    std::vector<std::string> flags = driver;
+    for (const char* f : {"--checkpoint", "", "--checkpoint-every", "0.2"}) flags.push_back(f);
+    flags[3] = path("run.ckpt");
+    const std::string err = path("err.txt");
+    EXPECT_EQ(renderKilledBy(SIGTERM, flags, path("run.pfm"), err, 1500), 128 + SIGTERM);
+    const std::string text = readWholeFile(err);
+    const size_t stopping = text.find("prt: stopping on signal 15: saving the finished pixels in '" +
+                                      path("run.ckpt") + "'");
+    const size_t command = text.find("prt: to render the rest, run:");
+    ASSERT_NE(stopping, std::string::npos) << text;
+    ASSERT_NE(command, std::string::npos) << text;
+    EXPECT_LT(stopping, command) << text;
+    EXPECT_EQ(text.find("prt: to render the rest, run:", command + 1), std::string::npos) << text;
+    EXPECT_NE(text.find("--checkpoint-every 0.2 --resume"), std::string::npos) << text;
+    fs::remove(path("run.ckpt"));
+  }
 }
 
 TEST_F(Robustness, OutOfMemoryInWorkerThreadsIsACleanError) {

@@ -1,6 +1,8 @@
 #include "cli/checkpointing.h"
 
+#include <atomic>
 #include <chrono>
+#include <memory>
 #include <cstdio>
 #include <filesystem>
 
@@ -30,9 +32,15 @@ std::string resumeCommand(const RenderOptions& o) {
   return has ? typed : typed + " --resume";
 }
 
+namespace {
+// Set once the resume command has been printed, so that it is printed once.
+std::atomic<bool> resumeTold{false};
+}  // namespace
+
 std::string howToResume(const RenderOptions& o) {
   std::error_code ec;
   if (o.checkpointPath.empty() || !std::filesystem::exists(o.checkpointPath, ec)) return "";
+  if (resumeTold.load()) return "";
   return "\nprt: to render the rest, run:\n  " + resumeCommand(o);
 }
 
@@ -91,7 +99,25 @@ std::optional<Checkpoint> resumeCheckpoint(const RenderOptions& o, const Scene& 
 std::function<int()> stopSignalsFor(const RenderOptions& o) {
   if (o.checkpointPath.empty()) return nullptr;
   installStopSignals();
-  return [] { return pendingStopSignal(); };
+  // Said the moment the signal is seen, before the checkpoint is written: under mpirun
+  // without --enable-recovery a lost rank makes Open MPI send the others SIGTERM and, a
+  // second later, SIGKILL, which can come before the run's last words. The checkpoint
+  // already on disk (the last periodic one) resumes the render then.
+  auto noticed = std::make_shared<std::atomic<bool>>(false);
+  return [o, noticed] {
+    const int sig = pendingStopSignal();
+    if (sig != 0 && !noticed->exchange(true)) {
+      std::fprintf(stderr, "prt: stopping on signal %d: saving the finished pixels in '%s'\n",
+                   sig, o.checkpointPath.c_str());
+      const std::string text = howToResume(o);
+      if (!text.empty()) {
+        std::fprintf(stderr, "%s\n", text.c_str() + 1);
+        resumeTold.store(true);
+      }
+      std::fflush(stderr);
+    }
+    return sig;
+  };
 }
 
 int renderSerialWithCheckpoint(const RenderOptions& o, const Scene& scene,

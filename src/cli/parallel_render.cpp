@@ -12,6 +12,7 @@
 #include <tuple>
 
 #include "cli/checkpointing.h"
+#include "core/exit_status.h"
 #include "core/input_error.h"
 #include "drive/frame_renderer.h"
 #include "drive/local_driver.h"
@@ -352,6 +353,7 @@ int renderParallelMpi(const RenderOptions& o, const SceneLoader& loadScene) {
     auto [scene, settings] = loadScene();
     plan = withCheckpointPlan(o, scene);
     const RenderOptions& planned = *plan;
+    recordCheckpointPath(planned.checkpointPath);
     if (!o.slowdowns.empty() && o.slowdowns.size() != static_cast<size_t>(session.workerCount())) {
       throw InputError("--slowdown lists " + std::to_string(o.slowdowns.size()) +
                        " values but mpirun started " + std::to_string(session.workerCount()) +

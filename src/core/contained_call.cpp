@@ -155,9 +155,10 @@ std::vector<uint8_t> runContained(const ContainedCall& call, const ContainedLimi
     return bytes;
   }
   if (kind == Status::OutOfMemory) {
+    const std::string rule =
+        limits.memoryRule.empty() ? "the memory budget; --max-memory sets it" : limits.memoryRule;
     throw ContainedFailure(Cause::OutOfMemory,
-                           "needs more than the memory budget (" + formatMemorySize(memory) +
-                               "; --max-memory sets it)");
+                           "needs more than " + formatMemorySize(memory) + " (" + rule + ")");
   }
   try {
     ByteReader r(bytes.data() + 1, bytes.size() - 1, "contained call");

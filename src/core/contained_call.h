@@ -22,6 +22,9 @@ namespace prt {
 struct ContainedLimits {
   uint64_t memoryBytes = 0;  // beyond what the process maps already; 0: the memory budget
   double seconds = 600;
+  // Where memoryBytes comes from, for the message when the child needs more ("" with the
+  // memory budget: "the memory budget; --max-memory sets it").
+  std::string memoryRule;
 };
 
 class ContainedFailure : public std::runtime_error {

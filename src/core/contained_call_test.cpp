@@ -54,7 +54,7 @@ TEST(ContainedCallTest, ACrashAnAbortOrAHangEndsTheChildNotTheCaller) {
       []() -> std::vector<uint8_t> {
         for (;;) std::this_thread::sleep_for(std::chrono::milliseconds(10));
       },
-      {0, 0.3});
+      {0, 0.3, ""});
   EXPECT_EQ(f.cause(), Cause::TimedOut);
   EXPECT_NE(std::string(f.what()).find("took longer than"), std::string::npos);
 }
@@ -68,9 +68,10 @@ TEST(ContainedCallTest, GrowingPastTheMemoryLimitIsOutOfMemory) {
         std::vector<std::vector<uint8_t>> hoard;
         for (;;) hoard.emplace_back(size_t{64} << 20, 1);
       },
-      {size_t{256} << 20, 60});
+      {size_t{256} << 20, 60, "a test limit"});
   EXPECT_EQ(f.cause(), Cause::OutOfMemory);
-  EXPECT_NE(std::string(f.what()).find("256 MiB"), std::string::npos) << f.what();
+  EXPECT_NE(std::string(f.what()).find("needs more than 256 MiB (a test limit)"), std::string::npos)
+      << f.what();
 }
 
 }  // namespace

@@ -102,6 +102,8 @@ class AssimpReader {
                                           aiProcess_ValidateDataStructure);
     if (scene_ == nullptr || scene_->mRootNode == nullptr) {
       std::string why = importer.GetErrorString();
+      // assimp catches an allocation that failed and keeps only its name.
+      if (why == "std::bad_alloc") throw std::bad_alloc();
       if (why.empty()) why = "not a model file assimp can read";
       throw ModelFileError("model file \"" + path_ + "\" could not be read: " + why);
     }

@@ -1,10 +1,15 @@
 #include "scene/contained_readers.h"
 
+#include <algorithm>
 #include <cstring>
+#include <filesystem>
+#include <limits>
+#include <system_error>
 #include <type_traits>
 
 #include "core/byte_codec.h"
 #include "core/contained_call.h"
+#include "core/memory_budget.h"
 #include "scene/asset_pack.h"
 
 namespace prt {
@@ -76,7 +81,37 @@ std::string failureText(const ContainedFailure& f) {
   return f.what();
 }
 
+// The child's limits for reading `path` (its size as it is now: a file that is not there, or
+// not regular, is the reader's own error).
+ContainedLimits readerLimits(const std::string& path, uint64_t textureBudgetBytes) {
+  std::error_code error;
+  const uintmax_t size = std::filesystem::file_size(path, error);
+  const uint64_t fileBytes = error ? 0 : static_cast<uint64_t>(size);
+  ContainedLimits limits;
+  limits.memoryBytes = foreignReaderMemoryBytes(fileBytes, textureBudgetBytes);
+  limits.seconds = kForeignReaderSeconds;
+  limits.memoryRule = "what reading a file of " + formatMemorySize(fileBytes) + " may take: " +
+                      formatMemorySize(kForeignReaderBaseBytes) + " + " +
+                      std::to_string(kForeignReaderBytesPerFileByte) + " times its size" +
+                      (textureBudgetBytes > 0
+                           ? " + " + formatMemorySize(textureBudgetBytes) + " for its textures"
+                           : std::string()) +
+                      ", at most the memory budget (--max-memory)";
+  return limits;
+}
+
 }  // namespace
+
+uint64_t foreignReaderMemoryBytes(uint64_t fileBytes, uint64_t textureBudgetBytes) {
+  constexpr uint64_t kMax = std::numeric_limits<uint64_t>::max();
+  uint64_t bytes = kForeignReaderBaseBytes;
+  const uint64_t scaled = fileBytes > kMax / kForeignReaderBytesPerFileByte
+                              ? kMax
+                              : fileBytes * kForeignReaderBytesPerFileByte;
+  bytes = scaled > kMax - bytes ? kMax : bytes + scaled;
+  bytes = textureBudgetBytes > kMax - bytes ? kMax : bytes + textureBudgetBytes;
+  return std::min(bytes, memoryBudgetBytes());
+}
 
 LoadedMesh loadMeshFileContained(const MeshSource& source) {
   std::vector<uint8_t> bytes;
@@ -91,7 +126,7 @@ LoadedMesh loadMeshFileContained(const MeshSource& source) {
           putLines(w, loaded.warnings);
           return std::move(w.out);
         },
-        {0, kForeignReaderSeconds}, lineOf);
+        readerLimits(source.file, 0), lineOf);
   } catch (const ContainedFailure& f) {
     if (f.cause() == ContainedFailure::Cause::Threw) throw MeshFileError(f.what(), f.line());
     throw MeshFileError("mesh file " + quoted(source.file) + " " + failureText(f));
@@ -140,7 +175,7 @@ ImportedModel readAssimpFileContained(const std::string& path, const ModelReadOp
           w.text(model.format.substr(0, 4096));
           return std::move(w.out);
         },
-        {0, kForeignReaderSeconds});
+        readerLimits(path, options.textureBudgetBytes));
   } catch (const ContainedFailure& f) {
     if (f.cause() == ContainedFailure::Cause::Threw) throw ModelFileError(f.what());
     throw ModelFileError("model file " + quoted(path) + " " + failureText(f));

@@ -192,6 +192,8 @@ LoadedMesh loadMeshFileHere(const MeshSource& source) {
   // mesh (an STL file's empty solid), and points and lines are skipped below anyway.
   const aiScene* scene = importer.ReadFile(path, aiProcess_Triangulate);
   if (scene == nullptr) {
+    // assimp catches an allocation that failed and keeps only its name.
+    if (std::string(importer.GetErrorString()) == "std::bad_alloc") throw std::bad_alloc();
     throw MeshFileError("mesh file " + quoted(path) +
                         " could not be read: " + importer.GetErrorString());
   }

@@ -4,6 +4,12 @@
 
 #include "scene/hostile_model_files.h"
 
+#include <algorithm>
+#include <cstdint>
+
+#include "core/memory_budget.h"
+#include "scene/contained_readers.h"
+
 namespace prt {
 namespace {
 
@@ -225,6 +231,59 @@ TEST_F(HostileScene, ThePrtCommandRefusesHostileModelsByName) {
   const CommandResult workers = runPrt("render \"" + model + "\" --workers 2" + size + "\"" +
                                        (dir_ / "workers.pfm").string() + "\"");
   EXPECT_EQ(workers.exitCode, 0) << workers.output;
+}
+
+// Files of a few bytes declaring a billion vertices: assimp allocates what a header declares,
+// and before the reader's memory was tied to the file's size (foreignReaderMemoryBytes) these
+// grew to 12 GB or, reading past the end of an ASCII file, ran until stopped from outside.
+TEST_F(HostileScene, FilesDeclaringABillionVerticesAreRefusedWithoutGrowing) {
+  if (prtBinary().empty()) GTEST_SKIP() << "PRT_BINARY is not set (ctest sets it)";
+  const std::string plyHeader =
+      "ply\nformat %s 1.0\nelement vertex 1000000000\nproperty float x\nproperty float y\n"
+      "property float z\nelement face 1000000000\nproperty list uchar int vertex_indices\n"
+      "end_header\n";
+  auto ply = [&](const std::string& format) {
+    std::string header = plyHeader;
+    header.replace(header.find("%s"), 2, format);
+    return header;
+  };
+  const std::vector<std::pair<std::string, std::string>> files = {
+      {"ascii.ply", ply("ascii") + "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"},
+      {"binary.ply", ply("binary_little_endian")},
+      {"count.off", "OFF\n1000000000 1000000000 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"},
+      {"count.ase",
+       "*3DSMAX_ASCIIEXPORT 200\n*GEOMOBJECT {\n *MESH {\n  *MESH_NUMVERTEX 1000000000\n"
+       "  *MESH_NUMFACES 1000000000\n  *MESH_VERTEX_LIST {\n   *MESH_VERTEX 0 0 0 0\n  }\n }\n}\n"},
+      {"count.x", "xof 0303txt 0032\nMesh m {\n 1000000000;\n 0.0;0.0;0.0;,\n 1.0;0.0;0.0;;\n 1;\n 3;0,1,2;;\n}\n"},
+  };
+  const std::string out = (dir_ / "out.png").string();
+  for (const auto& [name, text] : files) {
+    const std::string model = write(name, text);
+    const CommandResult asModel =
+        runPrt("render \"" + model + "\" --width 8 --height 6 -q -o \"" + out + "\"");
+    EXPECT_EQ(asModel.exitCode, 2) << name << "\n" << asModel.output;
+    EXPECT_TRUE(contains(asModel.output, "could not be read: it needs more than")) << asModel.output;
+    EXPECT_TRUE(contains(asModel.output, "64 times its size")) << asModel.output;
+    const std::string scene = write(name + ".scene", "mesh { file \"" + name + "\" }\n");
+    const CommandResult asMesh =
+        runPrt("render \"" + scene + "\" --width 8 --height 6 -q -o \"" + out + "\"");
+    EXPECT_EQ(asMesh.exitCode, 2) << name << "\n" << asMesh.output;
+    EXPECT_TRUE(contains(asMesh.output, ".scene:1:13: error: ")) << asMesh.output;
+    // A mesh block's PLY is PRT's own reader's, which checks the counts against the file.
+    if (!name.ends_with(".ply")) {
+      EXPECT_TRUE(contains(asMesh.output, "it needs more than 512 MiB")) << asMesh.output;
+    }
+    EXPECT_FALSE(fs::exists(out));
+  }
+}
+
+TEST(ForeignReaderMemory, GrowsWithTheFileAndStaysWithinTheBudget) {
+  const uint64_t budget = memoryBudgetBytes();
+  EXPECT_EQ(foreignReaderMemoryBytes(0, 0), std::min(kForeignReaderBaseBytes, budget));
+  EXPECT_EQ(foreignReaderMemoryBytes(1 << 20, 1 << 30),
+            std::min(kForeignReaderBaseBytes + 64 * (uint64_t{1} << 20) + (uint64_t{1} << 30), budget));
+  EXPECT_EQ(foreignReaderMemoryBytes(UINT64_MAX, UINT64_MAX), budget);
+  EXPECT_EQ(foreignReaderMemoryBytes(UINT64_MAX / 64 + 1, 0), budget);
 }
 
 // --- the asset pack --------------------------------------------------------------------------

@@ -5,6 +5,9 @@
 #     seconds, with the exit code rank 0 wrote, else 1;
 #   - an mpirun with a live rank is not ended however long it runs;
 #   - mpirun's own non-zero status wins; else rank 0's recorded code; else 1;
+#   - a master killed without a record, whose checkpoint exists, gets its resume command said
+#     (the arguments given, with --resume); not when the checkpoint is gone or the master
+#     recorded its code (it then spoke for itself);
 #   - no status file is left behind.
 # Usage: prt_mpirun_test.sh WRAPPER WORK
 set -eu
@@ -19,6 +22,9 @@ fail() { echo "FAIL: $*" >&2; exit 1; }
 #   live SECONDS   a rank that runs SECONDS, records 0 and exits; then mpirun exits 0
 #   exit CODE      mpirun exits with CODE, no record
 #   record CODE    a rank records CODE; mpirun reaps it and exits 0
+#   killed 1|0     rank 0 names its checkpoint ck.ckpt (1: and writes it), then mpirun exits
+#                  137, as when it kills the master after another rank died
+#   spoke CODE     rank 0 names ck.ckpt, writes it, records CODE; mpirun exits 0
 cat >fake-mpirun <<'PY'
 #!/usr/bin/env python3
 import os, sys, time
@@ -28,6 +34,15 @@ def record(code):
         f.write(f"{code}\n")
 if mode == "exit":
     sys.exit(value)
+if mode in ("killed", "spoke"):
+    with open(os.environ["PRT_STATUS_FILE"] + ".resume", "w") as f:
+        f.write("ck.ckpt\n")
+    if mode == "spoke" or value == 1:
+        open("ck.ckpt", "w").close()
+    if mode == "spoke":
+        record(value)
+        sys.exit(0)
+    sys.exit(137)
 pid = os.fork()
 if pid == 0:
     if mode == "live":
@@ -71,6 +86,22 @@ run record 2
 [ "$status" -eq 2 ] || fail "rank 0's code 2: exit $status"
 run record -1
 [ "$status" -eq 1 ] || fail "no record: exit $status"
+run killed 1 -o "an image.png"
+[ "$status" -eq 137 ] || fail "a killed master: exit $status"
+grep -q "the finished pixels are in 'ck.ckpt'" err.txt || fail "no resume command: $(cat err.txt)"
+grep -qF "prt-mpirun killed 1 -o 'an image.png' --resume" err.txt ||
+  fail "the resume command is not the command given with --resume: $(cat err.txt)"
+run killed 1 --resume
+grep -qF "killed 1 --resume --resume" err.txt && fail "--resume given twice: $(cat err.txt)"
+grep -qF "killed 1 --resume" err.txt || fail "no resume command after a resumed run: $(cat err.txt)"
+rm -f ck.ckpt
+run killed 0
+[ "$status" -eq 137 ] || fail "a killed master without a checkpoint: exit $status"
+grep -q "finished pixels" err.txt && fail "a resume command without a checkpoint"
+run spoke 143
+[ "$status" -eq 143 ] || fail "a master that recorded 143: exit $status"
+grep -q "finished pixels" err.txt && fail "a resume command although the master spoke"
+rm -f ck.ckpt
 leftover=$(find . -name '.prt-*')
 [ -z "$leftover" ] || fail "files left behind: $leftover"
 PRT_MPIRUN_GRACE=soon run record 0
