@@ -21,6 +21,7 @@ Master::Master(std::unique_ptr<Strategy> strategy, int workerCount, uint64_t pix
       speedIndicesMissing_(workerCount),
       answered_(static_cast<size_t>(workerCount), false),
       queueLengths_(static_cast<size_t>(workerCount), 0),
+      untrusted_(static_cast<size_t>(workerCount), false),
       endgameServed_(static_cast<size_t>(workerCount), false) {
   PRT_CHECK(strategy_ != nullptr);
   ledger_.seedDone(options_.resumedDone);
@@ -193,6 +194,7 @@ Outbox Master::onWorkerJoined(int worker, double now) {
   speedIndices_.push_back(0.0);
   answered_.push_back(true);  // not asked by a query already open
   queueLengths_.push_back(0);
+  untrusted_.push_back(false);
   endgameServed_.push_back(false);
   if (stopped_) {
     out.push_back({worker, StopMsg{}});
@@ -253,6 +255,9 @@ void Master::introduceJoiners(Outbox& out) {
 bool Master::plausible(const Message& message) const {
   if (const auto* r = std::get_if<ResultsMsg>(&message)) {
     const bool coloured = r->rgb.size() == 3 * r->tasks.size();
+    for (const float c : r->rgb) {
+      if (!std::isfinite(c)) return false;  // no render of PRT's gives such a colour
+    }
     // Without a sink (the simulator) results carry no colours; otherwise they must.
     return r->tasks.allBelow(taskCount()) && (coloured || (!sink_ && r->rgb.empty()));
   }
@@ -269,8 +274,10 @@ Outbox Master::onMessage(int from, const Message& message, double now) {
   Outbox out;
   PRT_CHECK(from >= 0 && from < workerCount());
   const auto w = static_cast<size_t>(from);
+  if (untrusted_[w]) return out;  // nothing from it counts any more, late results included
   ledger_.heard(from, now);
   if (!plausible(message)) {
+    untrusted_[w] = true;
     if (isLive(from)) lose(from, now, std::string("sent an invalid ") + messageName(message) + " message", out);
     return out;
   }

@@ -112,6 +112,7 @@ class Master {
   bool queryOpen_ = false;
   std::vector<bool> answered_;
   std::vector<uint64_t> queueLengths_;
+  std::vector<bool> untrusted_;  // per worker: sent a message that cannot be true; ignored since
   std::vector<bool> endgameServed_;  // per worker: its queue's tail has been copied to another
   uint64_t endgameCopies_ = 0;
 };

@@ -313,7 +313,9 @@ TEST(MasterTest, AMessageThatCannotBeTrueLosesItsWorkerAndCrashesNothing) {
       ResultsMsg{TaskSet::strided(9, 3, ~uint64_t{0} / 2), std::vector<float>(9, 0.f)},
       TransferNoticeMsg{7, TaskSet::range(0, 1)},                             // to no worker
       TransferNoticeMsg{1, TaskSet::range(20, 1)},
-      SpeedIndexMsg{-1.0}};
+      SpeedIndexMsg{-1.0},
+      ResultsMsg{TaskSet::range(0, 2), {0.f, 0.f, 0.f, 0.f, std::nanf(""), 0.f}},  // not colours
+      ResultsMsg{TaskSet::range(0, 1), {0.f, INFINITY, 0.f}}};
   for (const Message& m : bad) {
     auto run = master();
     run->onMessage(0, m, 1.0);
@@ -321,6 +323,9 @@ TEST(MasterTest, AMessageThatCannotBeTrueLosesItsWorkerAndCrashesNothing) {
     EXPECT_TRUE(run->isLive(1));
     ASSERT_EQ(run->ledger().losses().size(), 1u);
     EXPECT_NE(run->ledger().losses()[0].reason.find("invalid"), std::string::npos);
+    // Once it has lied, nothing from it counts: a lost worker's late results otherwise do.
+    run->onMessage(0, ResultsMsg{TaskSet::range(0, 1), std::vector<float>(3, 0.f)}, 2.0);
+    EXPECT_FALSE(run->ledger().isDone(0)) << messageName(m);
   }
 }
 

@@ -58,10 +58,18 @@ void Worker::requestIfIdle(Outbox& out) {
 Outbox Worker::onMessage(int from, const Message& message) {
   Outbox out;
   if (stopped_) return out;
+  const auto* transfer = std::get_if<TasksMsg>(&message);
+  const bool refused =
+      (from != kMaster && (transfer == nullptr || !setUp_)) ||
+      (transfer != nullptr && !transfer->tasks.allBelow(taskLimit_)) ||
+      (std::holds_alternative<SceneMsg>(message) && scene_.has_value());
+  if (refused) {
+    ++refused_;
+    return out;
+  }
   if (const auto* s = std::get_if<SceneMsg>(&message)) {
-    PRT_CHECK(from == kMaster && !scene_.has_value());
     scene_ = *s;
-  } else if (const auto* t = std::get_if<TasksMsg>(&message)) {
+  } else if (const auto* t = transfer) {
     ++tasksReceived_;
     queue_.append(t->tasks);
     requestOutstanding_ = false;
@@ -70,6 +78,10 @@ Outbox Worker::onMessage(int from, const Message& message) {
   } else if (std::holds_alternative<QueryQueueMsg>(message)) {
     out.push_back({kMaster, QueueLengthMsg{queue_.size()}});
   } else if (const auto* order = std::get_if<TransferOrderMsg>(&message)) {
+    if (order->to < 0 || order->to == id_) {
+      ++refused_;
+      return out;
+    }
     TaskSet moved = queue_.takeBack(order->count);
     out.push_back({order->to, TasksMsg{moved}});
     out.push_back({kMaster, TransferNoticeMsg{order->to, std::move(moved)}});

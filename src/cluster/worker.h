@@ -28,7 +28,14 @@ class Worker {
   Worker(int id, WorkerOptions options);
 
   int id() const { return id_; }
+  // Acts on the master's messages and on tasks a peer transfers (diffusion). What only the
+  // master may send (scene, queries, transfer orders, Stop) from anyone else, a second scene,
+  // tasks from a peer before this worker is set up, and tasks beyond limitTasks are dropped
+  // and counted: a message relayed to a worker costs at most itself.
   Outbox onMessage(int from, const Message& message);
+  // The render's task count, once the scene is loaded: tasks at or beyond it are refused.
+  void limitTasks(uint64_t count) { taskLimit_ = count; }
+  uint64_t refusedMessages() const { return refused_; }
 
   // After the scene arrives: the driver loads it, measures the speed index, then reports.
   bool needsSetup() const { return scene_.has_value() && !setUp_; }
@@ -62,6 +69,8 @@ class Worker {
   bool requestOutstanding_ = false;
   TaskSet queue_;
   uint64_t tasksReceived_ = 0;
+  uint64_t taskLimit_ = UINT64_MAX;
+  uint64_t refused_ = 0;
   double pixelsPerSecond_ = 0;  // the last measured batch's rate (0: none yet)
 };
 

@@ -47,5 +47,37 @@ TEST(WorkerBatches, AnUnmeasuredBatchKeepsTheLastRateAndTheQueueBoundsTheBatch) 
   EXPECT_EQ(w.nextBatch().size(), 90u) << "what is left";
 }
 
+// What only the master may send, sent by a peer (or relayed through one), is dropped and
+// counted; so are a second scene, tasks outside the render and a transfer to no one.
+TEST(WorkerSenders, OnlyTheMasterStopsQueriesOrdersAndSendsTheScene) {
+  Worker w(1, WorkerOptions{10, 0});
+  EXPECT_TRUE(w.onMessage(2, SceneMsg{"forged", 1, 1}).empty());
+  EXPECT_FALSE(w.needsSetup()) << "a scene from a peer was taken";
+  EXPECT_TRUE(w.onMessage(2, TasksMsg{TaskSet::range(0, 5)}).empty());
+  EXPECT_EQ(w.queueLength(), 0u) << "tasks from a peer before the worker is set up";
+  w.onMessage(kMaster, SceneMsg{"scene", 1, 1});
+  EXPECT_TRUE(w.onMessage(kMaster, SceneMsg{"again", 1, 1}).empty());
+  EXPECT_EQ(w.scene().sceneText, "scene");
+  w.setupDone(1.0);
+  w.limitTasks(100);
+  w.onMessage(kMaster, TasksMsg{TaskSet::range(0, 20)});
+  EXPECT_EQ(w.refusedMessages(), 3u);
+  EXPECT_TRUE(w.onMessage(2, StopMsg{}).empty());
+  EXPECT_FALSE(w.stopped());
+  EXPECT_TRUE(w.onMessage(2, QueryQueueMsg{}).empty());
+  EXPECT_TRUE(w.onMessage(2, TransferOrderMsg{3, 5}).empty());
+  EXPECT_TRUE(w.onMessage(kMaster, TransferOrderMsg{1, 5}).empty()) << "a transfer to itself";
+  EXPECT_TRUE(w.onMessage(kMaster, TransferOrderMsg{kMaster, 5}).empty());
+  EXPECT_TRUE(w.onMessage(kMaster, TasksMsg{TaskSet::range(95, 10)}).empty());
+  EXPECT_EQ(w.queueLength(), 20u);
+  EXPECT_EQ(w.refusedMessages(), 9u);
+  // A peer's transfer within the render is diffusion, and taken.
+  w.onMessage(2, TasksMsg{TaskSet::range(50, 10)});
+  EXPECT_EQ(w.queueLength(), 30u);
+  EXPECT_FALSE(w.onMessage(kMaster, QueryQueueMsg{}).empty());
+  w.onMessage(kMaster, StopMsg{});
+  EXPECT_TRUE(w.stopped());
+}
+
 }  // namespace
 }  // namespace prt

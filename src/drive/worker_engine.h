@@ -34,6 +34,7 @@ class WorkerEngine {
   // Parses the scene text (the master already validated it) and prepares the renderer of its
   // first frame.
   void load(const SceneMsg& scene);
+  uint64_t taskCount() const { return frames_ ? frames_->taskCount() : 0; }  // once loaded
   // The speed index (Towers of Hanoi time, or the ray-tracing probe's on the loaded scene),
   // slowed down like everything else this worker computes, for the worker as it renders: the
   // probe renders with all its threads; the Hanoi run solves one puzzle on each thread at
