@@ -281,12 +281,13 @@ TEST_F(Robustness, ByDefaultAStoppedRenderKeepsItsPixelsForResume) {
 // SIGKILL soon after SIGTERM must not take the resume command with it. Said once.
 TEST_F(Robustness, AStopSaysHowToResumeBeforeSavingAndOnce) {
   for (const std::vector<std::string>& driver :
-       {std::vector<std::string>{"--threads", "1"}, std::vector<std::string>{"--workers", "2"}}) {
+       {std::vector<std::string>{"--threads", "1"},
+        std::vector<std::string>{"--workers", "2", "--slowdown", "4,4"}}) {  // still rendering at 1 s
     std::vector<std::string> flags = driver;
     for (const char* f : {"--checkpoint", "", "--checkpoint-every", "0.2"}) flags.push_back(f);
-    flags[3] = path("run.ckpt");
+    flags[driver.size() + 1] = path("run.ckpt");
     const std::string err = path("err.txt");
-    EXPECT_EQ(renderKilledBy(SIGTERM, flags, path("run.pfm"), err, 1500), 128 + SIGTERM);
+    EXPECT_EQ(renderKilledBy(SIGTERM, flags, path("run.pfm"), err, 1000), 128 + SIGTERM);
     const std::string text = readWholeFile(err);
     const size_t stopping = text.find("prt: stopping on signal 15: saving the finished pixels in '" +
                                       path("run.ckpt") + "'");

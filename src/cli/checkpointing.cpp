@@ -2,9 +2,9 @@
 
 #include <atomic>
 #include <chrono>
-#include <memory>
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 
 #include "cli/live_view.h"
 #include "drive/run_progress.h"
@@ -99,10 +99,10 @@ std::optional<Checkpoint> resumeCheckpoint(const RenderOptions& o, const Scene& 
 std::function<int()> stopSignalsFor(const RenderOptions& o) {
   if (o.checkpointPath.empty()) return nullptr;
   installStopSignals();
-  // Said the moment the signal is seen, before the checkpoint is written: under mpirun
-  // without --enable-recovery a lost rank makes Open MPI send the others SIGTERM and, a
-  // second later, SIGKILL, which can come before the run's last words. The checkpoint
-  // already on disk (the last periodic one) resumes the render then.
+  // Said the moment the signal is seen, before the checkpoint is written: a launcher may
+  // follow SIGTERM with SIGKILL before the run's last words (Slurm after its KillWait;
+  // Open MPI after a lost rank sends both at once, where only scripts/prt-mpirun can still
+  // speak). The checkpoint already on disk (the last periodic one) resumes the render then.
   auto noticed = std::make_shared<std::atomic<bool>>(false);
   return [o, noticed] {
     const int sig = pendingStopSignal();

@@ -35,6 +35,9 @@ class Worker {
   Outbox onMessage(int from, const Message& message);
   // The render's task count, once the scene is loaded: tasks at or beyond it are refused.
   void limitTasks(uint64_t count) { taskLimit_ = count; }
+  // Messages dropped: those refused here, and bytes from peers that did not decode
+  // (countRefused, from the driver that decodes them).
+  void countRefused() { ++refused_; }
   uint64_t refusedMessages() const { return refused_; }
 
   // After the scene arrives: the driver loads it, measures the speed index, then reports.

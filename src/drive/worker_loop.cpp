@@ -117,7 +117,7 @@ class WorkerLoop {
     } catch (const std::exception& e) {
       // From a peer (or anyone relaying through one): that message is dropped, nothing more.
       if (in.from != kMaster) {
-        ++undecodable_;
+        worker_.countRefused();
         return;
       }
       throw std::runtime_error("bad message from the master: " + std::string(e.what()));
@@ -196,7 +196,6 @@ class WorkerLoop {
   }
 
   enum class Doing { Nothing, Setup, Batch };
-  uint64_t undecodable_ = 0;  // messages from peers that did not decode, dropped
 
   Transport& net_;
   int id_;
