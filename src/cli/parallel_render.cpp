@@ -47,7 +47,7 @@ std::vector<FaultInjection> parseFaults(const std::vector<std::string>& specs) {
     const size_t second = first == std::string::npos ? first : spec.find(':', first + 1);
     const auto fail = [&](const std::string& why) {
       throw InputError("--inject-fault '" + spec + "': " + why +
-                       "; expected WORKER:PIXELS:crash|hang, e.g. 1:500:crash");
+                       "; expected WORKER:PIXELS:crash|hang|corrupt, e.g. 1:500:crash");
     };
     if (second == std::string::npos) fail("three fields separated by ':' needed");
     const std::string_view text(spec);
@@ -56,11 +56,15 @@ std::vector<FaultInjection> parseFaults(const std::vector<std::string>& specs) {
     const auto pixels = parseCount(text.substr(first + 1, second - first - 1), 1ull << 28);
     if (!pixels) fail("PIXELS must be a whole number of pixels from 0 to 2^28");
     const std::string_view kind = text.substr(second + 1);
-    if (kind != "crash" && kind != "hang") fail("the fault must be crash or hang");
+    if (kind != "crash" && kind != "hang" && kind != "corrupt") {
+      fail("the fault must be crash, hang or corrupt");
+    }
     FaultInjection f;
     f.worker = static_cast<int>(*worker);
     f.afterPixels = *pixels;
-    f.kind = kind == "crash" ? FaultInjection::Kind::Crash : FaultInjection::Kind::Hang;
+    f.kind = kind == "crash"  ? FaultInjection::Kind::Crash
+             : kind == "hang" ? FaultInjection::Kind::Hang
+                              : FaultInjection::Kind::Corrupt;
     faults.push_back(f);
   }
   return faults;
@@ -193,9 +197,18 @@ void addParallelOptions(CLI::App& cmd, RenderOptions& o) {
                  "Write the image coloured by the worker that rendered each pixel")
       ->check(fileName())
       ->group(parallel);
+  cmd.add_option("--verify", o.verifyPercent,
+                 "Spot checks: PERCENT of each worker's pixels (4 times as many for a new "
+                 "worker, half once it passed 32 checks) are rendered again by another worker, "
+                 "or by the master, and compared bit for bit; a worker that fails one is "
+                 "rejected and its pixels rendered again. 0: no checks")
+      ->check(finiteIn(0, 100))
+      ->capture_default_str()
+      ->group(parallel);
   cmd.add_option("--inject-fault", o.faults,
-                 "WORKER:PIXELS:crash|hang makes worker WORKER (rank WORKER+1 under MPI) fail "
-                 "after rendering that many pixels")
+                 "WORKER:PIXELS:crash|hang|corrupt makes worker WORKER (rank WORKER+1 under MPI) "
+                 "fail after rendering that many pixels; corrupt: return wrong pixels from then "
+                 "on (a bit flipped in about half of them)")
       ->group("Testing");
 }
 
@@ -231,6 +244,7 @@ ParallelOptions toParallelOptions(const RenderOptions& o, int workers) {
   p.announceCheckpoint = !o.quiet;
   p.checkpointEverySeconds = o.checkpointEverySeconds;
   p.faults = parseFaults(o.faults);
+  p.verifyPercent = o.verifyPercent;
   return p;
 }
 

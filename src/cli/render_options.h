@@ -60,7 +60,8 @@ struct RenderOptions {
   std::string ownershipPath;               // --ownership FILE.png
   std::string htmlPath;                    // --html FILE.html: the run's page
   std::string commandLine;                 // as typed, recorded in the report and the page
-  std::vector<std::string> faults;         // --inject-fault W:PIXELS:crash|hang
+  std::vector<std::string> faults;         // --inject-fault W:PIXELS:crash|hang|corrupt
+  double verifyPercent = 1;                // --verify: spot-check rate (0: off)
 };
 
 }  // namespace prt::cli

@@ -8,7 +8,7 @@
 namespace prt {
 
 Ledger::Ledger(int workerCount, uint64_t taskCount)
-    : workers_(static_cast<size_t>(workerCount)), liveCount_(workerCount), done_(taskCount, false) {
+    : workers_(static_cast<size_t>(workerCount)), liveCount_(workerCount), owner_(taskCount, kNotDone) {
   PRT_CHECK(workerCount >= 1);
 }
 
@@ -29,8 +29,8 @@ int Ledger::addWorker(double now) {
 void Ledger::seedDone(const TaskSet& done) {
   done.forEach([&](uint64_t t) {
     PRT_CHECK(t < taskCount());
-    if (!done_[t]) {
-      done_[t] = true;
+    if (owner_[t] == kNotDone) {
+      owner_[t] = kResumed;
       ++doneCount_;
     }
   });
@@ -80,11 +80,11 @@ TaskSet Ledger::accept(int worker, const TaskSet& tasks) {
   TaskSet fresh;
   tasks.forEach([&](uint64_t t) {
     PRT_CHECK(t < taskCount());
-    if (done_[t]) {
+    if (owner_[t] != kNotDone) {
       ++duplicates_;
       return;
     }
-    done_[t] = true;
+    owner_[t] = static_cast<int32_t>(worker);
     ++doneCount_;
     ++h.accepted;
     fresh.append(TaskRun{t, 1, 1});
@@ -110,7 +110,7 @@ TaskSet Ledger::unfinishedTail(int worker, uint64_t count) const {
   std::vector<uint64_t> moved = h.moved.toVector();
   std::sort(moved.begin(), moved.end());
   auto keeps = [&](uint64_t t) {
-    return !done_[t] && !std::binary_search(moved.begin(), moved.end(), t);
+    return owner_[t] == kNotDone && !std::binary_search(moved.begin(), moved.end(), t);
   };
   if (count >= h.given.size()) {
     h.given.forEach([&](uint64_t t) {
@@ -142,12 +142,29 @@ TaskSet Ledger::markLost(int worker, double now, const std::string& reason) {
   return left;
 }
 
+TaskSet Ledger::takeBack(int worker) {
+  Holding& h = workers_[index(worker)];
+  const auto who = static_cast<int32_t>(worker);
+  TaskSet back;
+  for (uint64_t t = 0; t < taskCount(); ++t) {
+    if (owner_[t] != who) continue;
+    uint64_t end = t;
+    while (end < taskCount() && owner_[end] == who) owner_[end++] = kNotDone;
+    back.append(TaskRun{t, end - t, 1});
+    t = end;
+  }
+  doneCount_ -= back.size();
+  h.accepted = 0;
+  takenBack_ += back.size();
+  return back;
+}
+
 TaskSet Ledger::doneSet() const {
   TaskSet out;
   for (uint64_t t = 0; t < taskCount(); ++t) {
-    if (!done_[t]) continue;
+    if (owner_[t] == kNotDone) continue;
     uint64_t end = t;
-    while (end < taskCount() && done_[end]) ++end;
+    while (end < taskCount() && owner_[end] != kNotDone) ++end;
     out.append(TaskRun{t, end - t, 1});
     t = end;
   }

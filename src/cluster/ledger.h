@@ -32,7 +32,7 @@ class Ledger {
   Ledger(int workerCount, uint64_t taskCount);
 
   int workerCount() const { return static_cast<int>(workers_.size()); }
-  uint64_t taskCount() const { return done_.size(); }
+  uint64_t taskCount() const { return owner_.size(); }
 
   // A worker joins at `now`: live, holding nothing, its lease starting now. Returns its index.
   int addWorker(double now);
@@ -76,8 +76,19 @@ class Ledger {
   const std::vector<LostWorker>& losses() const { return losses_; }
   uint64_t reissuedTasks() const { return reissued_; }
 
+  // Takes back every task whose first result came from `worker` (a worker whose results were
+  // found wrong): they are not done any more, and are returned, ascending, for reissue. Tasks
+  // resumed from a checkpoint are never taken back.
+  TaskSet takeBack(int worker);
+  uint64_t takenBackTasks() const { return takenBack_; }
+
   // Completion.
-  bool isDone(uint64_t task) const { return done_[task]; }
+  bool isDone(uint64_t task) const { return owner_[task] != kNotDone; }
+  // The worker whose result for `task` is in the image; kResumed for a checkpoint's task,
+  // kNotDone while it is not done.
+  static constexpr int32_t kNotDone = -1;
+  static constexpr int32_t kResumed = -2;
+  int32_t ownerOf(uint64_t task) const { return owner_[task]; }
   // Tasks whose first result came from `worker` (its share of the image).
   uint64_t acceptedFrom(int worker) const { return workers_[index(worker)].accepted; }
   uint64_t doneCount() const { return doneCount_; }
@@ -99,10 +110,11 @@ class Ledger {
 
   std::vector<Holding> workers_;
   int liveCount_;
-  std::vector<bool> done_;
+  std::vector<int32_t> owner_;  // per task: who delivered its result (4 bytes a pixel)
   uint64_t doneCount_ = 0;
   uint64_t reissued_ = 0;
   uint64_t duplicates_ = 0;
+  uint64_t takenBack_ = 0;
   std::vector<LostWorker> losses_;
 };
 

@@ -27,6 +27,34 @@ TEST(LedgerTest, ResultsAreAcceptedOnceAndDuplicatesCounted) {
   EXPECT_EQ(ledger.doneSet(), TaskSet::range(0, 10));
 }
 
+TEST(LedgerTest, AWorkersAcceptedTasksAreTakenBackAndNothingElse) {
+  Ledger ledger(3, 12);
+  ledger.seedDone(TaskSet::range(0, 2));  // resumed: never taken back
+  ledger.gave(0, TaskSet::range(2, 10));
+  ledger.gave(1, TaskSet::range(6, 6));  // copies of 6..11
+  ledger.accept(0, TaskSet::range(2, 5));  // 2..6
+  ledger.accept(1, TaskSet::range(6, 3));  // 6 a duplicate; 7, 8 its own
+  ledger.accept(0, TaskSet::range(9, 2));  // 9, 10
+  EXPECT_EQ(ledger.ownerOf(0), Ledger::kResumed);
+  EXPECT_EQ(ledger.ownerOf(6), 0);
+  EXPECT_EQ(ledger.ownerOf(7), 1);
+  EXPECT_EQ(ledger.doneCount(), 11u);
+  TaskSet expected = TaskSet::range(2, 5);
+  expected.append(TaskSet::range(9, 2));
+  EXPECT_EQ(ledger.takeBack(0), expected);
+  EXPECT_EQ(ledger.doneCount(), 4u);
+  EXPECT_EQ(ledger.acceptedFrom(0), 0u);
+  EXPECT_EQ(ledger.acceptedFrom(1), 2u);
+  EXPECT_EQ(ledger.takenBackTasks(), 7u);
+  EXPECT_FALSE(ledger.isDone(6));
+  EXPECT_TRUE(ledger.isDone(0));
+  // Worker 1 still holds 6, 9, 10 and 11 unfinished: they count as its own again.
+  EXPECT_EQ(ledger.unfinished(1).toVector(), (std::vector<uint64_t>{6, 9, 10, 11}));
+  EXPECT_TRUE(ledger.takeBack(0).empty());
+  // A result for a taken-back task is accepted again, from anyone.
+  EXPECT_EQ(ledger.accept(2, TaskSet::range(2, 1)), TaskSet::range(2, 1));
+}
+
 TEST(LedgerTest, ALostWorkersUnfinishedTasksLeaveOutWhatItMovedAndWhatIsDone) {
   Ledger ledger(3, 20);
   ledger.gave(0, TaskSet::range(0, 10));

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 
 #include "core/check.h"
 
@@ -22,7 +23,9 @@ Master::Master(std::unique_ptr<Strategy> strategy, int workerCount, uint64_t pix
       answered_(static_cast<size_t>(workerCount), false),
       queueLengths_(static_cast<size_t>(workerCount), 0),
       untrusted_(static_cast<size_t>(workerCount), false),
-      endgameServed_(static_cast<size_t>(workerCount), false) {
+      endgameServed_(static_cast<size_t>(workerCount), false),
+      // Checks compare colours: none without them (the simulator) or without a referee.
+      checks_(sink_ && options_.referee ? options_.checks : SpotCheckOptions{0, 0}, workerCount) {
   PRT_CHECK(strategy_ != nullptr);
   ledger_.seedDone(options_.resumedDone);
   resumed_ = ledger_.doneCount();
@@ -152,7 +155,10 @@ void Master::startStrategy(Outbox& out) {
   // A worker given nothing at the start has, in the paper's words, finished its assigned
   // tasks: it asks for more. Entering that request here means every idle worker is known to
   // the strategy, so tasks that come back from a lost worker always find a taker.
-  for (int w = 0; w < workerCount() && !complete(); ++w) {
+  for (int w = 0; w < workerCount(); ++w) {
+    if (isLive(w)) checks_.setEligible(w, true);
+  }
+  for (int w = 0; w < workerCount() && !ledger_.complete(); ++w) {
     if (isLive(w) && !ledger_.holdsWork(w)) apply(strategy_->onRequest(w), out);
   }
   finishIfComplete(out);  // an image with no tasks left
@@ -196,6 +202,7 @@ Outbox Master::onWorkerJoined(int worker, double now) {
   queueLengths_.push_back(0);
   untrusted_.push_back(false);
   endgameServed_.push_back(false);
+  checks_.addWorker();
   if (stopped_) {
     out.push_back({worker, StopMsg{}});
     return out;
@@ -239,6 +246,7 @@ void Master::introduceJoiners(Outbox& out) {
       continue;
     }
     apply(strategy_->onWorkerJoined(w, speed), out);
+    checks_.setEligible(w, true);
     if (!orphans_.empty()) {
       // The tasks of the workers lost while only joiners were left: the strategy has a live
       // worker again.
@@ -246,7 +254,9 @@ void Master::introduceJoiners(Outbox& out) {
       orphans_ = TaskSet{};
       apply(strategy_->onWorkerLost(orphanOf_, tasks), out);
     }
-    if (isLive(w) && !ledger_.holdsWork(w) && !complete()) apply(strategy_->onRequest(w), out);
+    if (isLive(w) && !ledger_.holdsWork(w) && !ledger_.complete()) {
+      apply(strategy_->onRequest(w), out);
+    }
   }
 }
 
@@ -267,6 +277,12 @@ bool Master::plausible(const Message& message) const {
   if (const auto* s = std::get_if<SpeedIndexMsg>(&message)) {
     return std::isfinite(s->seconds) && s->seconds > 0;
   }
+  if (const auto* c = std::get_if<CheckResultsMsg>(&message)) {
+    for (const float v : c->rgb) {
+      if (!std::isfinite(v)) return false;
+    }
+    return c->tasks.allBelow(taskCount()) && c->rgb.size() == 3 * c->tasks.size();
+  }
   return true;
 }
 
@@ -277,8 +293,9 @@ Outbox Master::onMessage(int from, const Message& message, double now) {
   if (untrusted_[w]) return out;  // nothing from it counts any more, late results included
   ledger_.heard(from, now);
   if (!plausible(message)) {
-    untrusted_[w] = true;
-    if (isLive(from)) lose(from, now, std::string("sent an invalid ") + messageName(message) + " message", out);
+    // What it delivered before is as doubtful: rejected, as by a failed spot check.
+    reject(from, now, std::string("it sent an invalid ") + messageName(message) + " message", out);
+    finishIfComplete(out);
     return out;
   }
   if (const auto* r = std::get_if<ResultsMsg>(&message)) {
@@ -289,27 +306,30 @@ Outbox Master::onMessage(int from, const Message& message, double now) {
     if (started_ && !stopped_ && isLive(from)) {
       apply(strategy_->onResults(from, map_.toTasks(r->tasks), r->computeSeconds), out);
     }
-    if (fresh.empty()) {
-      // Every pixel a duplicate: dropped.
-    } else if (fresh.size() == r->tasks.size()) {
-      if (sink_) sink_(from, r->tasks, r->rgb);
-    } else if (sink_) {
-      std::vector<float> rgb;
-      if (!r->rgb.empty()) {
-        rgb.reserve(3 * fresh.size());
-        // Walk both in order: `fresh` is a subsequence of `r->tasks`.
-        std::vector<uint64_t> all = r->tasks.toVector();
-        std::vector<uint64_t> kept = fresh.toVector();
-        size_t k = 0;
-        for (size_t j = 0; j < all.size() && k < kept.size(); ++j) {
-          if (all[j] != kept[k]) continue;
-          rgb.insert(rgb.end(), r->rgb.begin() + static_cast<std::ptrdiff_t>(3 * j),
-                     r->rgb.begin() + static_cast<std::ptrdiff_t>(3 * j + 3));
-          ++k;
+    if (!fresh.empty() && sink_) {
+      if (fresh.size() == r->tasks.size()) {
+        sink_(from, r->tasks, r->rgb);
+        check(from, fresh, r->rgb);
+      } else {
+        std::vector<float> rgb;
+        if (!r->rgb.empty()) {
+          rgb.reserve(3 * fresh.size());
+          // Walk both in order: `fresh` is a subsequence of `r->tasks`.
+          std::vector<uint64_t> all = r->tasks.toVector();
+          std::vector<uint64_t> kept = fresh.toVector();
+          size_t k = 0;
+          for (size_t j = 0; j < all.size() && k < kept.size(); ++j) {
+            if (all[j] != kept[k]) continue;
+            rgb.insert(rgb.end(), r->rgb.begin() + static_cast<std::ptrdiff_t>(3 * j),
+                       r->rgb.begin() + static_cast<std::ptrdiff_t>(3 * j + 3));
+            ++k;
+          }
         }
+        sink_(from, fresh, rgb);
+        check(from, fresh, rgb);
       }
-      sink_(from, fresh, rgb);
     }
+    dispatchChecks(from, now, out);
     if (endgameServed_[w] && !ledger_.holdsWork(from)) endgameServed_[w] = false;
     finishIfComplete(out);
     return out;
@@ -344,9 +364,103 @@ Outbox Master::onMessage(int from, const Message& message, double now) {
       ledger_.reissuedLate(left);
       if (!stopped_) returnToStrategy(n->to, map_.toTasks(left), out);
     }
+  } else if (const auto* c = std::get_if<CheckResultsMsg>(&message)) {
+    settle(checks_.results(from, c->tasks, c->rgb), now, out);
   }
-  // HeartbeatMsg: the lease is renewed above; nothing else to do.
+  // HeartbeatMsg: the lease is renewed above. Whatever it was, the sender is between batches:
+  // the checks waiting for it go now.
+  dispatchChecks(from, now, out);
+  finishIfComplete(out);
   return out;
+}
+
+// Spot checks of a batch of fresh pixels `author` delivered (colours `rgb`).
+void Master::check(int author, const TaskSet& fresh, const std::vector<float>& rgb) {
+  if (!checks_.enabled() || rgb.empty() || stopped_) return;
+  checks_.sample(author, fresh, rgb);
+}
+
+// Sends the waiting checks to the workers that can take them now: the one just heard from
+// (it is between batches), idle ones, and everyone once every pixel is in (nothing else is
+// left to wait for). The referee's are rendered here, at once.
+void Master::dispatchChecks(int heardFrom, double now, Outbox& out) {
+  if (!checks_.enabled() || dispatching_) return;
+  dispatching_ = true;  // settle() may reject, and a rejection moves checks: loop, not recurse
+  for (bool again = true; again;) {
+    again = false;
+    const std::vector<int> waiting = checks_.checkersWaiting();
+    for (const int c : waiting) {
+      if (c == SpotChecks::kReferee) {
+        const TaskSet pixels = checks_.take(c);
+        if (pixels.empty()) continue;
+        settle(checks_.results(c, pixels, options_.referee(pixels)), now, out);
+        again = true;
+      } else if (c == heardFrom || ledger_.complete() || !ledger_.holdsWork(c)) {
+        TaskSet pixels = checks_.take(c);
+        if (!pixels.empty()) out.push_back({c, CheckMsg{std::move(pixels)}});
+      }
+    }
+  }
+  dispatching_ = false;
+}
+
+namespace {
+
+bool sameBits(const Rgb& a, const Rgb& b) { return std::memcmp(a.data(), b.data(), sizeof a) == 0; }
+
+std::string colourText(const Rgb& c) {
+  char text[96];
+  std::snprintf(text, sizeof text, "(%.9g, %.9g, %.9g)", static_cast<double>(c[0]),
+                static_cast<double>(c[1]), static_cast<double>(c[2]));
+  return text;
+}
+
+}  // namespace
+
+// Two renders of a pixel differ: a third, the master's own, decides. Whoever differs from it
+// is rejected (a checker that is the master itself is right by definition).
+void Master::settle(const std::vector<Disagreement>& disagreements, double now, Outbox& out) {
+  for (const Disagreement& d : disagreements) {
+    Rgb truth = d.checkerRgb;
+    if (d.checker != SpotChecks::kReferee) {
+      const std::vector<float> rgb = options_.referee(TaskSet::range(d.pixel, 1));
+      PRT_CHECK(rgb.size() == 3);
+      std::memcpy(truth.data(), rgb.data(), sizeof truth);
+    }
+    const std::string pixel = "pixel " + std::to_string(d.pixel);
+    if (!sameBits(d.authorRgb, truth)) {
+      reject(d.author, now,
+             "a spot check of " + pixel + " failed: it sent " + colourText(d.authorRgb) +
+                 ", the master renders " + colourText(truth),
+             out);
+    }
+    if (d.checker != SpotChecks::kReferee && !sameBits(d.checkerRgb, truth)) {
+      reject(d.checker, now,
+             "its spot check of " + pixel + " was wrong: it sent " + colourText(d.checkerRgb) +
+                 ", the master renders " + colourText(truth),
+             out);
+    }
+  }
+}
+
+bool Master::rejected(int worker) const {
+  return std::any_of(rejections_.begin(), rejections_.end(),
+                     [&](const RejectedWorker& r) { return r.worker == worker; });
+}
+
+// A worker found wrong: stopped, ignored from now on, its pixels taken back and reissued.
+void Master::reject(int worker, double now, const std::string& reason, Outbox& out) {
+  if (rejected(worker)) return;
+  untrusted_[static_cast<size_t>(worker)] = true;
+  checks_.workerGone(worker, true);
+  if (isLive(worker)) lose(worker, now, "rejected: " + reason, out);
+  const TaskSet back = ledger_.takeBack(worker);
+  rejections_.push_back({worker, now, reason, back.size()});
+  if (!back.empty()) {
+    if (options_.takenBack) options_.takenBack(worker, back);
+    returnToStrategy(worker, map_.toTasks(back), out);
+  }
+  out.push_back({worker, StopMsg{}});
 }
 
 void Master::lose(int worker, double now, const std::string& reason, Outbox& out) {
@@ -364,17 +478,20 @@ void Master::lose(int worker, double now, const std::string& reason, Outbox& out
     answered_[w] = true;
     queueLengths_[w] = 0;
   }
+  checks_.workerGone(worker, false);  // what it was to check goes to another
   if (worker >= strategyWorkers_) {
     introduceJoiners(out);  // a joiner the strategy had not heard of: it held nothing
   } else if (!stopped_ && ledger_.liveCount() > 0) {
     returnToStrategy(worker, map_.toTasks(unfinished), out);
   }
   answerQueryIfComplete(out);
+  dispatchChecks(-1, now, out);
 }
 
 Outbox Master::onWorkerLost(int worker, double now, const std::string& reason) {
   Outbox out;
   if (isLive(worker)) lose(worker, now, reason, out);
+  finishIfComplete(out);
   return out;
 }
 
@@ -386,6 +503,7 @@ Outbox Master::expireLeases(double now, double leaseSeconds) {
     std::snprintf(reason, sizeof reason, "silent for %.1f s", ledger_.silentSeconds(w, now));
     lose(w, now, reason, out);
   }
+  finishIfComplete(out);
   return out;
 }
 

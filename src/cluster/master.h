@@ -17,6 +17,12 @@
 // (Strategy::onWorkerJoined, in index order) and its request is entered. One that joins
 // before the strategy started counts as one of the starting workers; one that joins after the
 // image is complete is told to stop.
+//
+// Spot checks: with MasterOptions::checks on, a sample of every worker's accepted pixels is
+// rendered again by another worker (or by the referee, the master's own render) and compared
+// bit for bit. A mismatch between two workers is settled by the referee; a worker that
+// differs from it is rejected: told to stop, ignored from then on, and every pixel it
+// delivered is taken back and reissued. The image is complete only once every check is in.
 // Not thread-safe: one driver thread calls it.
 
 #include <cstdint>
@@ -28,6 +34,7 @@
 #include "balance/strategy.h"
 #include "cluster/ledger.h"
 #include "cluster/messages.h"
+#include "cluster/spot_checks.h"
 #include "cluster/task_map.h"
 
 namespace prt {
@@ -37,10 +44,28 @@ namespace prt {
 using ResultSink =
     std::function<void(int worker, const TaskSet& tasks, const std::vector<float>& rgb)>;
 
+// Renders pixels on the master itself (3 floats a pixel), for spot checks no other worker
+// can do and to settle a disagreement between two workers.
+using Referee = std::function<std::vector<float>(const TaskSet& pixels)>;
+
 struct MasterOptions {
   TaskSet resumedDone;  // pixels finished by an earlier run (a checkpoint): never handed out
   bool endgame = false;  // when nothing is left, a worker that asks gets a copy of the tasks
                          // expected to finish last (see Master::endgameCopy)
+  // Spot checks (cluster/spot_checks.h): on with a referee and a sink (colours to compare).
+  SpotCheckOptions checks = {0, 0};
+  Referee referee;
+  // The pixels of a rejected worker, taken back: they leave the image (the driver clears them)
+  // and are rendered again.
+  std::function<void(int worker, const TaskSet& pixels)> takenBack;
+};
+
+// A worker whose results were found wrong: told to stop, its pixels taken back.
+struct RejectedWorker {
+  int worker = 0;
+  double atSeconds = 0;
+  std::string reason;
+  uint64_t pixelsTakenBack = 0;
 };
 
 class Master {
@@ -62,7 +87,8 @@ class Master {
   // arrival order). Its lease starts now.
   Outbox onWorkerJoined(int worker, double now);
 
-  bool complete() const { return ledger_.complete(); }
+  // Every pixel is in and every spot check of them passed.
+  bool complete() const { return ledger_.complete() && checks_.idle(); }
   // Every worker is lost and tasks remain: the run cannot finish.
   bool failed() const { return ledger_.liveCount() == 0 && !complete(); }
   bool stopped() const { return stopped_; }
@@ -77,6 +103,8 @@ class Master {
   const std::vector<double>& speedIndices() const { return speedIndices_; }
   const Strategy& strategy() const { return *strategy_; }
   uint64_t endgameCopies() const { return endgameCopies_; }  // tasks sent as duplicates
+  const SpotChecks& spotChecks() const { return checks_; }
+  const std::vector<RejectedWorker>& rejections() const { return rejections_; }
 
  private:
   void startStrategy(Outbox& out);
@@ -90,6 +118,11 @@ class Master {
   void introduceJoiners(Outbox& out);
   bool plausible(const Message& message) const;
   double slowestSpeedIndex() const;
+  void check(int author, const TaskSet& fresh, const std::vector<float>& rgb);
+  void dispatchChecks(int heardFrom, double now, Outbox& out);
+  void settle(const std::vector<Disagreement>& disagreements, double now, Outbox& out);
+  void reject(int worker, double now, const std::string& reason, Outbox& out);
+  bool rejected(int worker) const;
   void returnToStrategy(int worker, const TaskSet& tasks, Outbox& out);
   std::vector<uint64_t> strategyQueueLengths() const;
 
@@ -115,6 +148,9 @@ class Master {
   std::vector<bool> untrusted_;  // per worker: sent a message that cannot be true; ignored since
   std::vector<bool> endgameServed_;  // per worker: its queue's tail has been copied to another
   uint64_t endgameCopies_ = 0;
+  SpotChecks checks_;
+  std::vector<RejectedWorker> rejections_;
+  bool dispatching_ = false;
 };
 
 }  // namespace prt

@@ -41,10 +41,28 @@ TaskSet readTasks(ByteReader& r) {
   return s;
 }
 
+// Colours travel as a count of floats and the floats; 3 per task of `tasks`.
+void writeColours(ByteWriter& w, const std::vector<float>& rgb) {
+  w.pod(static_cast<uint64_t>(rgb.size()));
+  w.raw(rgb.data(), rgb.size() * sizeof(float));
+}
+
+std::vector<float> readColours(ByteReader& r, const TaskSet& tasks) {
+  const auto n = r.pod<uint64_t>();
+  r.needItems(n, sizeof(float));
+  if (n != 3 * tasks.size()) throw std::runtime_error("malformed message: results size mismatch");
+  std::vector<float> rgb(n);
+  r.raw(rgb.data(), n * sizeof(float));
+  return rgb;
+}
+
 }  // namespace
 
 Bytes encode(const Message& message) {
   ByteWriter w;
+  // Room for the small messages at once (and no GCC 12 -Wstringop-overflow false alarm on
+  // the first insert into an empty vector).
+  w.out.reserve(64);
   w.pod(static_cast<uint8_t>(message.index()));
   std::visit(
       [&](const auto& m) {
@@ -67,8 +85,7 @@ Bytes encode(const Message& message) {
           writeTasks(w, m.tasks);
         } else if constexpr (std::is_same_v<M, ResultsMsg>) {
           writeTasks(w, m.tasks);
-          w.pod(static_cast<uint64_t>(m.rgb.size()));
-          w.raw(m.rgb.data(), m.rgb.size() * sizeof(float));
+          writeColours(w, m.rgb);
           w.pod(m.computeSeconds);
         } else if constexpr (std::is_same_v<M, QueueLengthMsg>) {
           w.pod(m.length);
@@ -78,6 +95,11 @@ Bytes encode(const Message& message) {
         } else if constexpr (std::is_same_v<M, TransferNoticeMsg>) {
           w.pod(static_cast<int32_t>(m.to));
           writeTasks(w, m.tasks);
+        } else if constexpr (std::is_same_v<M, CheckMsg>) {
+          writeTasks(w, m.tasks);
+        } else if constexpr (std::is_same_v<M, CheckResultsMsg>) {
+          writeTasks(w, m.tasks);
+          writeColours(w, m.rgb);
         }
       },
       message);
@@ -126,14 +148,8 @@ Message decode(const uint8_t* data, size_t size) {
     case 3: {
       ResultsMsg res;
       res.tasks = readTasks(r);
-      const auto n = r.pod<uint64_t>();
-      r.needItems(n, sizeof(float));
-      res.rgb.resize(n);
-      r.raw(res.rgb.data(), n * sizeof(float));
+      res.rgb = readColours(r, res.tasks);
       res.computeSeconds = r.pod<double>();
-      if (res.rgb.size() != 3 * res.tasks.size()) {
-        throw std::runtime_error("malformed message: results size mismatch");
-      }
       m = std::move(res);
       break;
     }
@@ -166,6 +182,16 @@ Message decode(const uint8_t* data, size_t size) {
     case 10:
       m = HeartbeatMsg{};
       break;
+    case 11:
+      m = CheckMsg{readTasks(r)};
+      break;
+    case 12: {
+      CheckResultsMsg c;
+      c.tasks = readTasks(r);
+      c.rgb = readColours(r, c.tasks);
+      m = std::move(c);
+      break;
+    }
     default:
       throw std::runtime_error("malformed message: unknown type " + std::to_string(tag));
   }
@@ -177,7 +203,7 @@ const char* messageName(const Message& message) {
   static constexpr const char* kNames[] = {
       "Scene",      "SpeedIndex",  "Tasks",         "Results",        "Request",
       "QueryQueue", "QueueLength", "TransferOrder", "TransferNotice", "Stop",
-      "Heartbeat"};
+      "Heartbeat",  "Check",       "CheckResults"};
   static_assert(std::size(kNames) == std::variant_size_v<Message>);
   return kNames[message.index()];
 }

@@ -13,6 +13,9 @@
 //   master -> worker  StopMsg             the image is complete
 //   either way        HeartbeatMsg        "still here": renews the sender's lease while it
 //                                         renders or waits (see drive/worker_loop.h)
+//   master -> worker  CheckMsg            spot checks: render these pixels another worker
+//                                         delivered, before the next batch (cluster/spot_checks.h)
+//   worker -> master  CheckResultsMsg     their colours, compared bit for bit by the master
 // Endpoints are worker indices 0..c-1 and kMaster.
 
 #include <cstdint>
@@ -76,10 +79,19 @@ struct StopMsg {
 struct HeartbeatMsg {
   bool operator==(const HeartbeatMsg&) const = default;
 };
+struct CheckMsg {
+  TaskSet tasks;
+  bool operator==(const CheckMsg&) const = default;
+};
+struct CheckResultsMsg {
+  TaskSet tasks;
+  std::vector<float> rgb;  // 3 floats per task, in task order
+  bool operator==(const CheckResultsMsg&) const = default;
+};
 
 using Message = std::variant<SceneMsg, SpeedIndexMsg, TasksMsg, ResultsMsg, RequestMsg,
                              QueryQueueMsg, QueueLengthMsg, TransferOrderMsg, TransferNoticeMsg,
-                             StopMsg, HeartbeatMsg>;
+                             StopMsg, HeartbeatMsg, CheckMsg, CheckResultsMsg>;
 
 // A message and where it goes.
 struct Envelope {

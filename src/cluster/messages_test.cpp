@@ -23,6 +23,9 @@ TEST(MessagesTest, EveryTypeRoundTrips) {
       TransferOrderMsg{3, 77},
       TransferNoticeMsg{2, tasks},
       StopMsg{},
+      HeartbeatMsg{},
+      CheckMsg{tasks},
+      CheckResultsMsg{TaskSet::strided(4, 2, 9), {0.5f, 0.25f, 1e-40f, 3.0f, 0.0f, 7.0f}},
   };
   for (const Message& m : messages) {
     const Bytes bytes = encode(m);
@@ -62,6 +65,10 @@ TEST(MessagesTest, CorruptCountsAreRejectedNotTrusted) {
   EXPECT_THROW(decode(withWord(tasks, 1 + 8, ~uint64_t{0})), std::runtime_error);       // first
   EXPECT_THROW(decode(withWord(tasks, 1 + 16, ~uint64_t{0})), std::runtime_error);      // count
   EXPECT_THROW(decode(withWord(tasks, 1 + 24, uint64_t{1} << 40)), std::runtime_error);  // stride
+  // Check results: the colours must match the tasks too.
+  const Bytes checked = encode(CheckResultsMsg{TaskSet::range(10, 1), {1, 2, 3}});
+  EXPECT_THROW(decode(withWord(checked, 1 + 8 + 24, 6)), std::runtime_error);
+  EXPECT_THROW(decode(withWord(checked, 1 + 8 + 24, uint64_t{1} << 62)), std::runtime_error);
   // An empty result (no tasks, no colours) is well formed.
   EXPECT_EQ(decode(encode(ResultsMsg{})), Message(ResultsMsg{}));
 }

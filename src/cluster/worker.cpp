@@ -19,6 +19,12 @@ Outbox Worker::setupDone(double speedIndexSeconds) {
 
 TaskSet Worker::nextBatch() {
   PRT_CHECK(hasWork());
+  checking_ = !checks_.empty();
+  if (checking_) {
+    TaskSet checks = std::move(checks_);
+    checks_ = TaskSet{};
+    return checks;
+  }
   uint64_t size = options_.batchPixels;
   if (options_.batchSeconds > 0 && pixelsPerSecond_ > 0) {
     const double wanted = pixelsPerSecond_ * options_.batchSeconds;
@@ -34,6 +40,10 @@ Outbox Worker::batchDone(const TaskSet& batch, std::vector<float> rgb, double co
 }
 
 Outbox Worker::finishBatch(const TaskSet& batch, std::vector<float> rgb, double computeSeconds) {
+  if (checking_) {
+    checking_ = false;
+    return {Envelope{kMaster, CheckResultsMsg{batch, std::move(rgb)}}};
+  }
   if (computeSeconds > 0 && !batch.empty()) {
     pixelsPerSecond_ = static_cast<double>(batch.size()) / computeSeconds;
   }
@@ -59,9 +69,11 @@ Outbox Worker::onMessage(int from, const Message& message) {
   Outbox out;
   if (stopped_) return out;
   const auto* transfer = std::get_if<TasksMsg>(&message);
+  const auto* check = std::get_if<CheckMsg>(&message);
   const bool refused =
       (from != kMaster && (transfer == nullptr || !setUp_)) ||
       (transfer != nullptr && !transfer->tasks.allBelow(taskLimit_)) ||
+      (check != nullptr && !check->tasks.allBelow(taskLimit_)) ||
       (std::holds_alternative<SceneMsg>(message) && scene_.has_value());
   if (refused) {
     ++refused_;
@@ -75,6 +87,8 @@ Outbox Worker::onMessage(int from, const Message& message) {
     requestOutstanding_ = false;
     // An empty transfer (the sender's queue drained meanwhile) leaves us idle: ask again.
     requestIfIdle(out);
+  } else if (check != nullptr) {
+    checks_.append(check->tasks);
   } else if (std::holds_alternative<QueryQueueMsg>(message)) {
     out.push_back({kMaster, QueueLengthMsg{queue_.size()}});
   } else if (const auto* order = std::get_if<TransferOrderMsg>(&message)) {

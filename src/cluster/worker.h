@@ -45,8 +45,10 @@ class Worker {
   const SceneMsg& scene() const { return *scene_; }
   Outbox setupDone(double speedIndexSeconds);
 
-  // Rendering: take the next batch off the front of the queue, render it, hand it back.
-  bool hasWork() const { return setUp_ && !queue_.empty() && !stopped_; }
+  // Rendering: take the next batch off the front of the queue, render it, hand it back. Spot
+  // checks the master asked for (CheckMsg) come first, as a batch of their own, and go back
+  // as CheckResultsMsg: they are not this worker's tasks.
+  bool hasWork() const { return setUp_ && (!queue_.empty() || !checks_.empty()) && !stopped_; }
   TaskSet nextBatch();
   // computeSeconds: the measured time the batch took, for adaptive strategies (0: unmeasured).
   Outbox batchDone(const TaskSet& batch, std::vector<float> rgb, double computeSeconds = 0);
@@ -71,6 +73,8 @@ class Worker {
   bool stopped_ = false;
   bool requestOutstanding_ = false;
   TaskSet queue_;
+  TaskSet checks_;         // pixels to render for the master's spot checks
+  bool checking_ = false;  // the batch out is a check
   uint64_t tasksReceived_ = 0;
   uint64_t taskLimit_ = UINT64_MAX;
   uint64_t refused_ = 0;

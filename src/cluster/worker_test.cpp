@@ -69,14 +69,38 @@ TEST(WorkerSenders, OnlyTheMasterStopsQueriesOrdersAndSendsTheScene) {
   EXPECT_TRUE(w.onMessage(kMaster, TransferOrderMsg{1, 5}).empty()) << "a transfer to itself";
   EXPECT_TRUE(w.onMessage(kMaster, TransferOrderMsg{kMaster, 5}).empty());
   EXPECT_TRUE(w.onMessage(kMaster, TasksMsg{TaskSet::range(95, 10)}).empty());
+  EXPECT_TRUE(w.onMessage(2, CheckMsg{TaskSet::range(0, 2)}).empty()) << "a check from a peer";
+  EXPECT_TRUE(w.onMessage(kMaster, CheckMsg{TaskSet::range(99, 2)}).empty());
   EXPECT_EQ(w.queueLength(), 20u);
-  EXPECT_EQ(w.refusedMessages(), 9u);
+  EXPECT_EQ(w.refusedMessages(), 11u);
   // A peer's transfer within the render is diffusion, and taken.
   w.onMessage(2, TasksMsg{TaskSet::range(50, 10)});
   EXPECT_EQ(w.queueLength(), 30u);
   EXPECT_FALSE(w.onMessage(kMaster, QueryQueueMsg{}).empty());
   w.onMessage(kMaster, StopMsg{});
   EXPECT_TRUE(w.stopped());
+}
+
+// A spot check is rendered before the next batch of the worker's own tasks, and goes back as
+// check results, not as results: it is not the worker's task, and asks for nothing.
+TEST(WorkerChecks, AreRenderedFirstAndReturnedApart) {
+  Worker w = holding(WorkerOptions{10, 0}, 30);
+  EXPECT_TRUE(w.onMessage(kMaster, CheckMsg{TaskSet::strided(40, 2, 5)}).empty());
+  EXPECT_EQ(w.queueLength(), 30u) << "checks are not queued with its tasks";
+  const TaskSet check = w.nextBatch();
+  EXPECT_EQ(check, TaskSet::strided(40, 2, 5));
+  const Outbox back = w.batchDone(check, {1, 2, 3, 4, 5, 6});
+  ASSERT_EQ(back.size(), 1u);
+  const auto* r = std::get_if<CheckResultsMsg>(&back[0].message);
+  ASSERT_NE(r, nullptr);
+  EXPECT_EQ(r->tasks, check);
+  EXPECT_EQ(r->rgb, (std::vector<float>{1, 2, 3, 4, 5, 6}));
+  EXPECT_EQ(w.nextBatch(), TaskSet::range(0, 10)) << "then its own tasks";
+  // A worker with nothing of its own still renders a check.
+  Worker idle = holding(WorkerOptions{10, 0}, 0);
+  EXPECT_FALSE(idle.hasWork());
+  idle.onMessage(kMaster, CheckMsg{TaskSet::range(3, 1)});
+  EXPECT_TRUE(idle.hasWork());
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 // threads and the MPI driver on its ranks (see parallel_run.h).
 
 #include <cstdio>
+#include <memory>
 
 #include "cluster/master.h"
 #include "core/cpu_time.h"
@@ -55,6 +56,20 @@ ParallelRun runMasterSide(Transport& net, const RunRequest& request, const std::
   }
   MasterOptions masterOptions;
   masterOptions.endgame = options.endgame;
+  // Spot checks: the referee is the master's own render, built when first needed (a
+  // disagreement, or no other worker to check), on one thread of this machine.
+  masterOptions.checks = {options.verifyPercent, options.verifySeed};
+  std::unique_ptr<FrameRenderer> referee;
+  masterOptions.referee = [&](const TaskSet& checked) {
+    if (!referee) referee = std::make_unique<FrameRenderer>(scene, request.settings, frames);
+    std::vector<Color> colors;
+    referee->render(checked, 1, colors);
+    return asFloats(colors);
+  };
+  masterOptions.takenBack = [&](int, const TaskSet& t) {
+    assembler.takeBack(t);
+    if (progress) progress->takenBack(t);
+  };
   if (request.resumeFrom) {
     if (progress) progress->resumed(request.resumeFrom->done);
     assembler.restore(*request.resumeFrom);
@@ -120,7 +135,8 @@ ParallelRun runMasterSide(Transport& net, const RunRequest& request, const std::
   bool warned = false;
   auto saveCheckpoint = [&](const std::string& why) {
     // Unarmed, only a stop saves the pixels done: a short run is cheap to render again.
-    const bool periodic = why == "periodic" || why == "a worker was lost";
+    const bool periodic =
+        why == "periodic" || why == "a worker was lost" || why == "a worker was rejected";
     if (!armed && (periodic || master.doneCount() == master.resumedCount())) return;
     armed = true;
     try {
@@ -211,6 +227,12 @@ ParallelRun runMasterSide(Transport& net, const RunRequest& request, const std::
   for (const LostWorker& l : ledger.losses()) {
     info.faults.lostWorkers.push_back({l.worker, l.atSeconds, l.reason, l.unfinished});
   }
+  for (const RejectedWorker& r : master.rejections()) {
+    info.faults.rejectedWorkers.push_back({r.worker, r.atSeconds, r.reason, r.pixelsTakenBack});
+  }
+  info.faults.verifyPercent = master.spotChecks().enabled() ? options.verifyPercent : 0;
+  info.faults.verifiedPixels = master.spotChecks().verifiedPixels();
+  info.faults.refereeChecks = master.spotChecks().refereeChecks();
   info.faults.reissuedTasks = ledger.reissuedTasks();
   info.faults.duplicatePixels = ledger.duplicates();
   info.faults.endgameCopies = master.endgameCopies();

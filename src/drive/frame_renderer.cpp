@@ -46,4 +46,14 @@ uint64_t FrameRenderer::render(const TaskSet& tasks, int threads, std::vector<Co
   return rays;
 }
 
+std::vector<float> asFloats(const std::vector<Color>& colors) {
+  std::vector<float> rgb(3 * colors.size());
+  for (size_t i = 0; i < colors.size(); ++i) {
+    rgb[3 * i] = static_cast<float>(colors[i].x);
+    rgb[3 * i + 1] = static_cast<float>(colors[i].y);
+    rgb[3 * i + 2] = static_cast<float>(colors[i].z);
+  }
+  return rgb;
+}
+
 }  // namespace prt

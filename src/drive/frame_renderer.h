@@ -64,6 +64,9 @@ class FrameRenderer {
   double firstBuildSeconds_ = 0;
 };
 
+// Colours as the protocol carries them: 3 floats each, in order.
+std::vector<float> asFloats(const std::vector<Color>& colors);
+
 template <typename F>
 void FrameRenderer::forEachFrame(const TaskSet& tasks, uint64_t pixelsPerFrame, F&& f) {
   uint64_t frame = UINT64_MAX;

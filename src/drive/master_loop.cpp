@@ -54,6 +54,12 @@ class MasterLoop {
         logLosses();
         checkpoint("a worker was lost");
       }
+      const size_t rejections = master_.rejections().size();
+      if (rejections > rejectionsLogged_) {
+        // Its pixels are out of the image now: out of the checkpoint at once, too.
+        logRejections();
+        checkpoint("a worker was rejected");
+      }
       if (options_.checkpoint && now >= nextCheckpoint && !master_.complete()) {
         checkpoint("periodic");
         nextCheckpoint = net_.now() + options_.checkpointEverySeconds;
@@ -62,6 +68,7 @@ class MasterLoop {
     result_.elapsedSeconds = net_.now() - start;
     sendOut(master_.stopIfComplete());  // complete before any message: a full checkpoint
     logLosses();
+    logRejections();
     if (!result_.failure.empty()) {
       checkpoint(result_.failure);
     } else {
@@ -81,6 +88,21 @@ class MasterLoop {
     for (; lossesLogged_ < losses.size(); ++lossesLogged_) {
       const LostWorker& l = losses[lossesLogged_];
       log_.add({EventKind::WorkerLost, l.worker, l.atSeconds, l.atSeconds, 0, 0, 0, l.reason});
+    }
+  }
+
+  void logRejections() {
+    const auto& rejections = master_.rejections();
+    for (; rejectionsLogged_ < rejections.size(); ++rejectionsLogged_) {
+      const RejectedWorker& r = rejections[rejectionsLogged_];
+      // One rejected while live is among the losses already, with this reason.
+      const auto& losses = master_.ledger().losses();
+      const bool logged = std::any_of(losses.begin(), losses.end(), [&](const LostWorker& l) {
+        return l.worker == r.worker && l.reason.rfind("rejected: ", 0) == 0;
+      });
+      if (logged) continue;
+      log_.add({EventKind::WorkerLost, r.worker, r.atSeconds, r.atSeconds, 0, 0, 0,
+                "rejected: " + r.reason});
     }
   }
 
@@ -184,6 +206,7 @@ class MasterLoop {
   EventLog log_;
   MasterLoopResult result_;
   size_t lossesLogged_ = 0;
+  size_t rejectionsLogged_ = 0;
 };
 
 }  // namespace

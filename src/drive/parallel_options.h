@@ -2,10 +2,12 @@
 // ParallelOptions: how a parallel render is organised, whatever drives it (threads or MPI).
 
 #include <cstdint>
+#include <vector>
 #include <string>
 #include <vector>
 
 #include "balance/registry.h"
+#include "core/task_set.h"
 #include "core/speed_index.h"
 #include "core/speed_schedule.h"
 #include "drive/speed_index_kind.h"
@@ -14,11 +16,18 @@ namespace prt {
 
 // Test and demonstration hook: make a worker fail part-way through.
 struct FaultInjection {
-  enum class Kind { Crash, Hang };
+  enum class Kind { Crash, Hang, Corrupt };
   int worker = 0;
   uint64_t afterPixels = 0;  // fails once it has rendered at least this many pixels
-  Kind kind = Kind::Crash;   // Crash: the connection drops; Hang: it goes silent
+  // Crash: the connection drops; Hang: it goes silent; Corrupt: it goes on, but a bit of
+  // about half the pixels it renders from then on is flipped (see corruptPixels).
+  Kind kind = Kind::Crash;
 };
+
+// What a Corrupt fault does to a rendered batch: flips bit 20 of the red channel (a change
+// of about 12 % of its value) of the pixels whose index hashes odd, so some pixels of every
+// batch are wrong and the others right.
+void corruptPixels(const TaskSet& tasks, std::vector<float>& rgb);
 
 // A render expected to take longer than this (elapsed + ETA) keeps a checkpoint beside its
 // output without being asked (--no-checkpoint: never).
@@ -40,6 +49,8 @@ struct ParallelOptions {
   int speedIndexDiscs = kSpeedIndexDiscs;  // size of each worker's Towers of Hanoi run
   std::vector<FaultInjection> faults;  // worker W is rank W+1 under MPI
   bool endgame = false;                // copies of the last tasks for workers left idle
+  double verifyPercent = 1;            // --verify: spot checks (cluster/spot_checks.h); 0: off
+  uint64_t verifySeed = 0x5eed;        // which pixels are checked
   std::string checkpointPath;          // empty: no checkpoints
   // The path is the automatic one: nothing is written until the run is expected to take
   // more than kAutomaticCheckpointSeconds, or is stopped with pixels done.

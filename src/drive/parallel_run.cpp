@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 
 #include "core/check.h"
 #include "core/input_error.h"
@@ -21,6 +22,21 @@ std::string formatNumber(double value) {
 }
 
 }  // namespace
+
+void corruptPixels(const TaskSet& tasks, std::vector<float>& rgb) {
+  size_t i = 0;
+  tasks.forEach([&](uint64_t pixel) {
+    uint64_t h = pixel * 0x9e3779b97f4a7c15ull;
+    h ^= h >> 29;
+    if (h & 1) {
+      uint32_t bits;
+      std::memcpy(&bits, &rgb[3 * i], sizeof bits);
+      bits ^= 1u << 20;
+      std::memcpy(&rgb[3 * i], &bits, sizeof bits);
+    }
+    ++i;
+  });
+}
 
 void validateParallelOptions(const ParallelOptions& o, uint64_t pixelCount) {
   if (o.workers < 1) throw InputError("--workers must be at least 1");
@@ -64,6 +80,10 @@ void validateParallelOptions(const ParallelOptions& o, uint64_t pixelCount) {
                        ", times >= 0 and factors >= 1");
     }
   }
+  if (!(o.verifyPercent >= 0 && o.verifyPercent <= 100)) {
+    throw InputError("--verify must be a percentage from 0 (no spot checks) to 100 (got " +
+                     formatNumber(o.verifyPercent) + ")");
+  }
   if (o.batchPixels < 1) throw InputError("--batch must be at least 1");
   if (!(o.batchSeconds >= 0 && o.batchSeconds <= 60)) {
     throw InputError("--batch-seconds must be in [0, 60] (0: batches of --batch pixels)");
@@ -97,6 +117,15 @@ void ImageAssembler::add(int worker, const TaskSet& tasks, const std::vector<flo
     i += 3;
     const uint64_t frame = pixel / pixelsPerFrame_;
     if (++frameCounts_[frame] == pixelsPerFrame_ && completed) completed(frame);
+  });
+}
+
+void ImageAssembler::takeBack(const TaskSet& tasks) {
+  tasks.forEach([&](uint64_t pixel) {
+    if (owner_[pixel] < 0) return;
+    image_.set(pixel, Color(0, 0, 0));
+    owner_[pixel] = -1;
+    --frameCounts_[pixel / pixelsPerFrame_];
   });
 }
 

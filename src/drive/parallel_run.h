@@ -83,6 +83,8 @@ class ImageAssembler {
   // Adds a batch of fresh pixels; calls `completed` with each frame it completes.
   void add(int worker, const TaskSet& tasks, const std::vector<float>& rgb,
            const std::function<void(uint64_t)>& completed = {});
+  // Takes pixels out again (a rejected worker's): unowned, black, their frames incomplete.
+  void takeBack(const TaskSet& tasks);
   bool frameComplete(uint64_t ordinal) const { return frameCounts_[ordinal] == pixelsPerFrame_; }
   uint64_t frameCount() const { return frameCounts_.size(); }
   // The ordinal-th frame's pixels as an image of its own.

@@ -73,6 +73,15 @@ void RunProgress::finished(const TaskSet& tasks) {
   });
 }
 
+void RunProgress::takenBack(const TaskSet& tasks) {
+  cost_.unfinished(tasks);
+  tasks.forEach([&](uint64_t t) {
+    if (t >= done_.size() || !done_[t]) return;
+    done_[t] = false;
+    --frameDone_[t / perFrame_];
+  });
+}
+
 void RunProgress::resumed(const TaskSet& tasks) {
   finished(tasks);
   resumed_ += tasks.size();

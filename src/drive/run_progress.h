@@ -37,6 +37,7 @@ class RunProgress {
   }
   // Pixels in for the first time.
   void finished(const TaskSet& tasks);
+  void takenBack(const TaskSet& tasks);  // finished pixels to be rendered again
   void resumed(const TaskSet& tasks);  // a checkpoint's pixels, before the run starts
 
   // Publishes if a publish is due (or `force`). `image` holds the pixels of the tasks from

@@ -115,13 +115,7 @@ std::vector<float> WorkerEngine::render(const TaskSet& batch, double& seconds, u
                       threads_)
                   .wallSeconds;
   }
-  std::vector<float> rgb(3 * colors.size());
-  for (size_t i = 0; i < colors.size(); ++i) {
-    rgb[3 * i] = static_cast<float>(colors[i].x);
-    rgb[3 * i + 1] = static_cast<float>(colors[i].y);
-    rgb[3 * i + 2] = static_cast<float>(colors[i].z);
-  }
-  return rgb;
+  return asFloats(colors);
 }
 
 }  // namespace prt

@@ -70,7 +70,7 @@ class WorkerLoop {
       if (worker_.needsSetup()) {
         startSetup();
       } else if (worker_.hasWork()) {
-        if (options_.fault && rendered_ >= options_.fault->afterPixels) return fail();
+        if (failsNow()) return fail();
         startBatch();
       }
     }
@@ -176,7 +176,17 @@ class WorkerLoop {
     }
   }
 
+  bool failsNow() const {
+    return options_.fault && options_.fault->kind != FaultInjection::Kind::Corrupt &&
+           rendered_ >= options_.fault->afterPixels;
+  }
+
   void finishBatch() {
+    // A corrupt machine corrupts everything it renders from then on, checks included.
+    if (options_.fault && options_.fault->kind == FaultInjection::Kind::Corrupt &&
+        rendered_ >= options_.fault->afterPixels) {
+      corruptPixels(batch_, rgb_);
+    }
     lastBatchSeconds_ = computeSeconds_;
     log_.add({EventKind::Compute, id_, effectStart_, effectStart_ + computeSeconds_,
               batch_.size(), 0, 0, ""});

@@ -88,6 +88,16 @@ void RemainingCost::finished(const TaskSet& tasks) {
   });
 }
 
+void RemainingCost::unfinished(const TaskSet& tasks) {
+  tasks.forEach([&](uint64_t t) {
+    if (t >= taskCount_) return;
+    Cell& cell = cells_[cellOf(t)];
+    if (cell.finished == 0) return;
+    --cell.finished;
+    --finished_;
+  });
+}
+
 std::optional<double> RemainingCost::remainingWork() const {
   if (measuredSamples_ == 0) return std::nullopt;
   const double overall = measuredSeconds_ / static_cast<double>(measuredSamples_);

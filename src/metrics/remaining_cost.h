@@ -39,6 +39,8 @@ class RemainingCost {
   void measured(const TaskSet& tasks, double seconds, double now);
   // Pixels finished for the first time (each exactly once), measured or not (a checkpoint's).
   void finished(const TaskSet& tasks);
+  // Finished pixels that are to be rendered again (taken back from a rejected worker).
+  void unfinished(const TaskSet& tasks);
 
   // The grid of cells of a frame, for a prior (setPrior).
   int cellsX() const { return cellsX_; }

@@ -232,6 +232,17 @@ std::string RunReport::toJson() const {
                     {"unfinished_tasks", l.unfinished}});
   }
   j["lost_workers"] = lost;
+  json rejected = json::array();
+  for (const RejectedWorkerInfo& r : f.rejectedWorkers) {
+    rejected.push_back({{"worker", r.worker},
+                        {"at_s", r.atSeconds},
+                        {"reason", r.reason},
+                        {"pixels_taken_back", r.pixelsTakenBack}});
+  }
+  j["rejected_workers"] = rejected;
+  j["verify_percent"] = f.verifyPercent;
+  j["verified_pixels"] = f.verifiedPixels;
+  j["referee_checks"] = f.refereeChecks;
   j["reissued_tasks"] = f.reissuedTasks;
   j["duplicate_pixels"] = f.duplicatePixels;
   j["endgame_copies"] = f.endgameCopies;
@@ -360,10 +371,22 @@ std::string RunReport::toTable() const {
     out += "(no speed index was run: MASU and ASU are from the measured throughput)\n";
   }
   for (const LostWorkerInfo& l : info.faults.lostWorkers) {
+    if (l.reason.rfind("rejected: ", 0) == 0) continue;  // said below, with what it cost
     std::snprintf(line, sizeof line,
                   "worker %d was lost at %.2f s (%s); its %llu unfinished tasks were reissued\n",
                   l.worker, l.atSeconds, l.reason.c_str(),
                   static_cast<unsigned long long>(l.unfinished));
+    out += line;
+  }
+  for (const RejectedWorkerInfo& r : info.faults.rejectedWorkers) {
+    std::snprintf(line, sizeof line, "worker %d was REJECTED at %.2f s: ", r.worker, r.atSeconds);
+    out += line + r.reason + "; its " + std::to_string(r.pixelsTakenBack) +
+           " pixels were taken back and rendered again\n";
+  }
+  if (info.faults.verifyPercent > 0) {
+    std::snprintf(line, sizeof line, "spot checks: %llu pixels verified bit for bit (--verify %g)\n",
+                  static_cast<unsigned long long>(info.faults.verifiedPixels),
+                  info.faults.verifyPercent);
     out += line;
   }
   for (int w : info.faults.missingSummaries) {

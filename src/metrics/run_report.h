@@ -61,9 +61,22 @@ struct LostWorkerInfo {
   uint64_t unfinished = 0;  // tasks it held, not done, handed back for reissue
 };
 
+// A worker whose results were found wrong (a failed spot check, a message that cannot be
+// true): stopped, and every pixel it delivered taken back and rendered again.
+struct RejectedWorkerInfo {
+  int worker = 0;
+  double atSeconds = 0;  // on the master's clock
+  std::string reason;
+  uint64_t pixelsTakenBack = 0;
+};
+
 // How the run dealt with faults; all zero in a run without any.
 struct FaultInfo {
   std::vector<LostWorkerInfo> lostWorkers;
+  std::vector<RejectedWorkerInfo> rejectedWorkers;
+  double verifyPercent = 0;        // --verify: the spot checks' base rate (0: off)
+  uint64_t verifiedPixels = 0;     // spot checks that matched
+  uint64_t refereeChecks = 0;      // spot checks the master rendered itself
   uint64_t reissuedTasks = 0;    // tasks handed back to the strategy from lost workers
   uint64_t duplicatePixels = 0;  // result copies dropped (reissues raced, endgame copies)
   uint64_t endgameCopies = 0;    // tasks sent as endgame duplicates

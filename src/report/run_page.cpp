@@ -102,6 +102,30 @@ std::string lostWorkers(const json& r) {
          " lost</b>; the master gave the unfinished tasks to the others.</li>";
 }
 
+// "Worker 2 was rejected at 1.20 s: a spot check of pixel ... failed; its 4,000 pixels were
+// taken back and rendered again."
+std::string rejectedWorkers(const json& r) {
+  const json rejected = r.value("rejected_workers", json::array());
+  std::string s;
+  if (rejected.is_array()) {
+    for (const json& x : rejected) {
+      if (!x.is_object()) continue;
+      s += "<li><b class=\"fault-text\">Worker " + std::to_string(x.value("worker", 0)) +
+           " was rejected at " + formatSeconds(x.value("at_s", 0.0)) + "</b>: " +
+           escapeHtml(x.value("reason", std::string())) + "; its " +
+           formatCount(x.value("pixels_taken_back", uint64_t{0})) +
+           " pixels were taken back and rendered again.</li>";
+    }
+  }
+  const double percent = r.value("verify_percent", 0.0);
+  if (percent > 0) {
+    s += "<li>Spot checks (--verify " + genericValue(json(percent)) + "): " +
+         formatCount(r.value("verified_pixels", uint64_t{0})) +
+         " pixels rendered again elsewhere came out bit for bit the same.</li>";
+  }
+  return s;
+}
+
 // "Workers 1, 2 joined mid-render (at 0.50 s) ...", with the ideal for that schedule.
 std::string joinedWorkers(const json& r) {
   const json joined = r.value("joined_workers", json::array());
@@ -175,7 +199,7 @@ std::string glance(const json& r) {
   s += "<li>On average a worker was rendering <b>" + formatPercent(numberOr(r, "efficiency", 0)) +
        "</b> of the run (efficiency); the rest it waited for the scene, for work, or for the "
        "others to finish.</li>";
-  s += lostWorkers(r) + joinedWorkers(r) + balanceEstimate(r) + finishSpread(r);
+  s += lostWorkers(r) + rejectedWorkers(r) + joinedWorkers(r) + balanceEstimate(r) + finishSpread(r);
   return s + "</ul></section>\n";
 }
 
@@ -251,6 +275,10 @@ std::string measures(const json& r) {
   static const std::map<std::string, Label> kLabels = {
       {"lost_workers", {kFaults, "lost workers", "declared lost by the master; their tasks went to others"}},
       {"reissued_tasks", {kFaults, "reissued tasks", "handed out again after a loss"}},
+      {"rejected_workers", {kFaults, "rejected workers", "results found wrong by a spot check: stopped, every pixel they delivered rendered again"}},
+      {"verified_pixels", {kFaults, "verified pixels", "rendered again by another worker (or the master) and found bit for bit the same"}},
+      {"verify_percent", {kFaults, "spot-check rate", "the share of each worker's pixels checked (--verify; more for new workers)"}},
+      {"referee_checks", {kFaults, "checks by the master", "spot checks the master rendered itself (no other worker to do them)"}},
       {"duplicate_pixels", {kFaults, "duplicate pixels", "results that came twice; the first was kept"}},
       {"endgame_copies", {kFaults, "endgame copies", "tasks copied to idle workers at the end (--endgame)"}},
       {"missing_summaries", {kFaults, "missing summaries", "live workers whose times never came: their rows lack busy and idle times"}},
@@ -269,7 +297,7 @@ std::string measures(const json& r) {
       {"frame_count", {kFrames, "frames", "in the sequence, rendered as one job"}},
       {"fps", {kFrames, "frames per second", "the animation's speed (--fps)"}},
       {"seconds_per_frame", {kFrames, "per frame", "the job's time over its frames"}}};
-  static const std::set<std::string> kFaultKeys = {"lost_workers", "reissued_tasks",
+  static const std::set<std::string> kFaultKeys = {"lost_workers", "reissued_tasks", "rejected_workers",
                                                    "missing_summaries", "duplicate_pixels"};
   const auto humanValue = [](const std::string& key, const json& value) {
     if (value.is_string()) {

@@ -13,6 +13,10 @@
 #   joins          for every strategy: workers that join mid-render (--join-at), alone and
 #                  with losses in the same run (a starting worker crashes, a joiner hangs):
 #                  the serial image, and the report says who joined when
+#   corrupt        workers that return wrong pixels (--inject-fault W:PIXELS:corrupt), early
+#                  and late, one and two of them, threaded or not, for several strategies: each
+#                  is rejected (and no other), its pixels are rendered again, and the image is
+#                  the serial one; with --verify 0 the same fault does reach the image
 set -eu
 
 prt=$1 scene=$2 work=$3 mode=$4
@@ -116,6 +120,61 @@ assert lost in ([0], [0, 3]), r["lost_workers"]
 PY
       echo "ok: $strategy"
     done
+    ;;
+  corrupt)
+    size="--width 64 --height 48 --spp 2"
+    # shellcheck disable=SC2086
+    "$prt" render "$scene" -q $size -o serial.pfm
+    # The report names exactly the corrupt workers as rejected, with pixels verified.
+    rejected() {
+      python3 - "$1" <<'PY'
+import json, sys
+r = json.load(open("r.json"))
+want = sorted(int(w) for w in sys.argv[1].split(",") if w)
+got = sorted(x["worker"] for x in r["rejected_workers"])
+assert got == want, (got, want, r["rejected_workers"])
+assert r["verified_pixels"] > 0, r["verified_pixels"]
+for x in r["rejected_workers"]:
+    assert "spot check" in x["reason"], x
+PY
+    }
+    # The fault reaches the image when nothing checks.
+    # shellcheck disable=SC2086
+    run $size --workers 3 --inject-fault 1:0:corrupt --verify 0 -o out.pfm
+    [ "$status" -eq 0 ] || fail "--verify 0: exit $status"
+    if cmp -s serial.pfm out.pfm; then fail "the corrupt worker changed nothing"; fi
+    for strategy in adaptive hybrid scatter reservoir stealing; do
+      # Early, at the default rate: a new worker is checked in every batch.
+      # shellcheck disable=SC2086
+      run $size --workers 3 --strategy "$strategy" --batch 16 --inject-fault 1:0:corrupt \
+        -o out.pfm --report r.json
+      [ "$status" -eq 0 ] || fail "$strategy, corrupt from the start: exit $status"
+      cmp serial.pfm out.pfm || fail "$strategy, corrupt from the start: image differs"
+      rejected 1
+      # Late (after most of its share), and two corrupt workers, one of them with two
+      # threads: a higher rate, so that the few wrong pixels are surely sampled.
+      # shellcheck disable=SC2086
+      run $size --workers 4 --strategy "$strategy" --batch 16 --verify 10 \
+        --inject-fault 0:600:corrupt --inject-fault 2:100:corrupt --threads 2 \
+        -o out.pfm --report r.json
+      [ "$status" -eq 0 ] || fail "$strategy, two corrupt workers: exit $status"
+      cmp serial.pfm out.pfm || fail "$strategy, two corrupt workers: image differs"
+      python3 - <<'PY'
+import json
+r = json.load(open("r.json"))
+# Worker 0 turns corrupt only after 600 pixels: it may finish its share before.
+got = sorted(x["worker"] for x in r["rejected_workers"])
+assert got in ([2], [0, 2]), r["rejected_workers"]
+PY
+      echo "ok: $strategy"
+    done
+    # Every worker but one corrupt: the master checks the last one itself.
+    # shellcheck disable=SC2086
+    run $size --workers 3 --inject-fault 0:0:corrupt --inject-fault 2:0:corrupt --verify 5 \
+      -o out.pfm --report r.json
+    [ "$status" -eq 0 ] || fail "two of three corrupt: exit $status"
+    cmp serial.pfm out.pfm || fail "two of three corrupt: image differs"
+    rejected 0,2
     ;;
   resume-local)
     # shellcheck disable=SC2086

@@ -29,6 +29,9 @@ int main(int argc, char** argv) {
       prt::TransferOrderMsg{2, 64},
       prt::TransferNoticeMsg{1, TaskSet::range(100, 50)},
       prt::StopMsg{},
+      prt::HeartbeatMsg{},
+      prt::CheckMsg{TaskSet::strided(5, 3, 11)},
+      prt::CheckResultsMsg{TaskSet::range(20, 1), {0.5f, 1e-40f, 2}},
   };
   for (size_t i = 0; i < messages.size(); ++i) {
     const prt::Bytes bytes = prt::encode(messages[i]);
