@@ -155,7 +155,7 @@ TEST_F(Robustness, FlagsOutOfRangeAreRefusedWithReadableMessages) {
   refused("--workers 2 --slowdown 1e300,1", "(got 1e+300)");
   refused("--workers 2 --inject-fault 2:10:crash", "workers are numbered 0 to 1");
   refused("--workers 2 --inject-fault 1:-5:crash", "PIXELS must be a whole number");
-  refused("--workers 2 --inject-fault 1:5:explode", "the fault must be crash or hang");
+  refused("--workers 2 --inject-fault 1:5:explode", "the fault must be crash, hang or corrupt");
   refused("--workers 2 --inject-fault 1:5", "three fields");
   refused("--inject-fault 0:10:crash", "describe a parallel run; add --workers N");
   refused("-o ''", "needs a file name; found an empty string");

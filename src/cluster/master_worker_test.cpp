@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <deque>
 #include <memory>
@@ -16,6 +17,7 @@ namespace {
 
 struct InMemoryRun {
   std::vector<int> deliveries;  // per pixel: how many times results arrived
+  std::vector<float> values;    // per pixel: the red channel in the image (-1: none)
   bool complete = false;
   uint64_t steps = 0;
   uint64_t messages = 0;
@@ -28,16 +30,27 @@ struct InMemoryRun {
 InMemoryRun runInMemory(const std::string& strategy, int workers, uint64_t pixels,
                         std::vector<int> loseAfterBatches = {}, MasterOptions options = {},
                         StrategyOptions strategyOptions = StrategyOptions{80, 5},
-                        const std::vector<uint64_t>& joinRounds = {}) {
+                        const std::vector<uint64_t>& joinRounds = {},
+                        std::vector<bool> corrupt = {}) {
   InMemoryRun run;
   run.deliveries.assign(pixels, 0);
+  run.values.assign(pixels, -1);
   loseAfterBatches.resize(static_cast<size_t>(workers) + joinRounds.size(), 0);
+  corrupt.resize(loseAfterBatches.size(), false);
+  const bool anyCorrupt = std::find(corrupt.begin(), corrupt.end(), true) != corrupt.end();
+  options.takenBack = [&](int, const TaskSet& tasks) {
+    tasks.forEach([&](uint64_t p) { run.values[p] = -1; });
+  };
   Master master(makeStrategy(strategy, strategyOptions), workers, pixels,
                 SceneMsg{"scene", 1, 1}, [&](int, const TaskSet& tasks, const std::vector<float>& rgb) {
                   size_t i = 0;
                   tasks.forEach([&](uint64_t p) {
-                    EXPECT_EQ(rgb[i], static_cast<float>(p));  // colours travel with positions
+                    // Colours travel with positions.
+                    if (!anyCorrupt) {
+                      EXPECT_EQ(rgb[i], static_cast<float>(p));
+                    }
                     ++run.deliveries[p];
+                    run.values[p] = rgb[i];
                     i += 3;
                   });
                 }, std::move(options));
@@ -79,7 +92,11 @@ InMemoryRun runInMemory(const std::string& strategy, int workers, uint64_t pixel
       } else if (worker.hasWork() && round % static_cast<uint64_t>(1 + w % 3) == 0) {
         const TaskSet batch = worker.nextBatch();
         std::vector<float> rgb;
-        batch.forEach([&](uint64_t p) { rgb.insert(rgb.end(), 3, static_cast<float>(p)); });
+        batch.forEach([&](uint64_t p) {
+          // A corrupt worker gets every third pixel wrong (by a little: a bit of it).
+          const bool wrong = corrupt[static_cast<size_t>(w)] && p % 3 == 0;
+          rgb.insert(rgb.end(), 3, static_cast<float>(p) + (wrong ? 0.5f : 0.0f));
+        });
         post(w, worker.batchDone(batch, std::move(rgb)));
         const int limit = loseAfterBatches[static_cast<size_t>(w)];
         if (limit > 0 && ++batches[static_cast<size_t>(w)] == limit) {
@@ -297,6 +314,86 @@ TEST(MasterTest, AJoinerGetsTheSceneThenTasksAndOneAfterTheEndIsStopped) {
   EXPECT_TRUE(std::holds_alternative<StopMsg>(late[0].message));
 }
 
+// Spot checks find corrupt workers, whatever the strategy: each is rejected (and no correct
+// worker ever is), what it delivered is taken back and rendered again, and the image ends up
+// right in every pixel.
+TEST_P(MasterWorkerTest, CorruptWorkersAreCaughtAndTheirPixelsRenderedAgain) {
+  for (const std::vector<bool>& corrupt :
+       {std::vector<bool>{false, true, false, false}, std::vector<bool>{true, false, true, false},
+        std::vector<bool>{false, true}}) {
+    MasterOptions options;
+    options.checks = {10, 7};
+    int refereed = 0;
+    options.referee = [&](const TaskSet& pixels) {
+      std::vector<float> rgb;
+      pixels.forEach([&](uint64_t p) { rgb.insert(rgb.end(), 3, static_cast<float>(p)); });
+      refereed += static_cast<int>(pixels.size());
+      return rgb;
+    };
+    const int workers = static_cast<int>(corrupt.size());
+    auto run = runInMemory(GetParam(), workers, 999, {}, options, StrategyOptions{80, 5}, {},
+                           corrupt);
+    ASSERT_TRUE(run.complete) << workers << " workers";
+    for (uint64_t p = 0; p < 999; ++p) {
+      ASSERT_EQ(run.values[p], static_cast<float>(p)) << "pixel " << p << ", " << workers;
+    }
+    EXPECT_GT(refereed, 0);
+  }
+}
+
+TEST(MasterTest, ARejectedWorkerIsStoppedAndListedWithWhatWasTakenBack) {
+  MasterOptions options;
+  options.checks = {100, 1};
+  options.referee = [](const TaskSet& pixels) {
+    return std::vector<float>(3 * pixels.size(), 1.0f);  // the truth: every pixel is 1
+  };
+  TaskSet back;
+  options.takenBack = [&](int w, const TaskSet& t) {
+    EXPECT_EQ(w, 1);
+    back.append(t);
+  };
+  Master master(makeStrategy("blocks", {}), 3, 30, SceneMsg{"s", 1, 1},
+                [](int, const TaskSet&, const std::vector<float>&) {}, options);
+  master.start(0);
+  for (int w = 0; w < 3; ++w) master.onMessage(w, SpeedIndexMsg{0.1}, 0);  // 10 pixels each
+  // Worker 1 delivers its block wrong; every pixel is checked (100 %) by worker 0 or 2.
+  Outbox out = master.onMessage(1, ResultsMsg{TaskSet::range(10, 10), std::vector<float>(30, 2.f)}, 1);
+  const auto checksIn = [](const Outbox& o) {
+    std::vector<Envelope> checks;
+    for (const Envelope& e : o) {
+      if (std::holds_alternative<CheckMsg>(e.message)) checks.push_back(e);
+    }
+    return checks;
+  };
+  EXPECT_TRUE(checksIn(out).empty()) << "busy checkers get theirs when next heard from";
+  out = master.onMessage(0, HeartbeatMsg{}, 1.5);
+  const std::vector<Envelope> checks = checksIn(out);
+  ASSERT_EQ(checks.size(), 1u);
+  EXPECT_EQ(checks[0].to, 0);
+  // The first checker answers right: the referee agrees with it, worker 1 is rejected.
+  const auto& first = std::get<CheckMsg>(checks[0].message);
+  out = master.onMessage(checks[0].to,
+                         CheckResultsMsg{first.tasks, std::vector<float>(3 * first.tasks.size(), 1.f)}, 2);
+  ASSERT_EQ(master.rejections().size(), 1u);
+  const RejectedWorker& r = master.rejections()[0];
+  EXPECT_EQ(r.worker, 1);
+  EXPECT_EQ(r.pixelsTakenBack, 10u);
+  EXPECT_NE(r.reason.find("spot check"), std::string::npos) << r.reason;
+  EXPECT_EQ(back, TaskSet::range(10, 10));
+  EXPECT_FALSE(master.isLive(1));
+  EXPECT_EQ(master.ledger().doneCount(), 0u);
+  bool stopped = false, reissued = false;
+  for (const Envelope& e : out) {
+    stopped = stopped || (e.to == 1 && std::holds_alternative<StopMsg>(e.message));
+    if (const auto* t = std::get_if<TasksMsg>(&e.message)) reissued = reissued || (e.to != 1 && !t->tasks.empty());
+  }
+  EXPECT_TRUE(stopped) << "the rejected worker is told to stop";
+  EXPECT_TRUE(reissued) << "its pixels go to the others";
+  // Nothing from it counts any more.
+  master.onMessage(1, ResultsMsg{TaskSet::range(10, 10), std::vector<float>(30, 1.f)}, 3);
+  EXPECT_EQ(master.ledger().doneCount(), 0u);
+}
+
 TEST(MasterTest, AMessageThatCannotBeTrueLosesItsWorkerAndCrashesNothing) {
   auto master = [] {
     auto m = std::make_unique<Master>(makeStrategy("blocks", {}), 2, 10, SceneMsg{},
@@ -323,6 +420,7 @@ TEST(MasterTest, AMessageThatCannotBeTrueLosesItsWorkerAndCrashesNothing) {
     EXPECT_TRUE(run->isLive(1));
     ASSERT_EQ(run->ledger().losses().size(), 1u);
     EXPECT_NE(run->ledger().losses()[0].reason.find("invalid"), std::string::npos);
+    ASSERT_EQ(run->rejections().size(), 1u) << "what it sent before is as doubtful";
     // Once it has lied, nothing from it counts: a lost worker's late results otherwise do.
     run->onMessage(0, ResultsMsg{TaskSet::range(0, 1), std::vector<float>(3, 0.f)}, 2.0);
     EXPECT_FALSE(run->ledger().isDone(0)) << messageName(m);

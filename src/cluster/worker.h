@@ -50,6 +50,7 @@ class Worker {
   // as CheckResultsMsg: they are not this worker's tasks.
   bool hasWork() const { return setUp_ && (!queue_.empty() || !checks_.empty()) && !stopped_; }
   TaskSet nextBatch();
+  bool batchIsCheck() const { return checking_; }  // the batch out is a spot check
   // computeSeconds: the measured time the batch took, for adaptive strategies (0: unmeasured).
   Outbox batchDone(const TaskSet& batch, std::vector<float> rgb, double computeSeconds = 0);
   // The simulator renders nothing: it returns the batch's results without colours (an empty

@@ -188,8 +188,9 @@ class WorkerLoop {
       corruptPixels(batch_, rgb_);
     }
     lastBatchSeconds_ = computeSeconds_;
+    // A spot check is work of this worker's, but not its pixels: labelled apart.
     log_.add({EventKind::Compute, id_, effectStart_, effectStart_ + computeSeconds_,
-              batch_.size(), 0, 0, ""});
+              batch_.size(), 0, 0, worker_.batchIsCheck() ? kCheckLabel : ""});
     rendered_ += batch_.size();
     sendOut(worker_.batchDone(batch_, std::move(rgb_), computeSeconds_));
     rgb_.clear();

@@ -26,8 +26,11 @@ struct Event {
   uint64_t pixels = 0;  // Compute: pixels rendered
   uint64_t bytes = 0;   // messages: encoded size
   int peer = 0;         // messages: the other endpoint
-  std::string label;    // messages: the message type ("Tasks", "Results", ...)
+  std::string label;    // messages: the message type ("Tasks", "Results", ...); Compute:
+                        // kCheckLabel for a batch of spot checks (not the worker's pixels)
 };
+
+inline constexpr const char* kCheckLabel = "check";
 
 // The kind's name in reports and pages ("compute", "worker_lost"). No default case: a new
 // kind fails to compile (-Wswitch) until it is named here.

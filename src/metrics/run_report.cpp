@@ -89,7 +89,11 @@ RunReport makeReport(const RunInfo& info, const std::vector<Event>& events,
     switch (e.kind) {
       case EventKind::Compute:
         wr.busySeconds += e.end - e.start;
-        wr.pixels += e.pixels;
+        if (e.label == kCheckLabel) {
+          wr.checkPixels += e.pixels;
+        } else {
+          wr.pixels += e.pixels;
+        }
         break;
       case EventKind::MessageSent:
         ++wr.messagesSent;
@@ -206,6 +210,7 @@ std::string RunReport::toJson() const {
                   {"tasks", w.tasks},
                   {"threads", w.threads},
                   {"pixels", w.pixels},
+                  {"check_pixels", w.checkPixels},
                   {"busy_s", w.busySeconds},
                   {"idle_s", w.idleSeconds},
                   {"messages_sent", w.messagesSent},

@@ -47,6 +47,7 @@ struct WorkerReport {
                         // came, a lost one, the pixels the master accepted from it)
   double busySeconds = 0;
   double idleSeconds = 0;
+  uint64_t checkPixels = 0;  // rendered for spot checks of others' pixels (busy time, too)
   uint64_t messagesSent = 0, messagesReceived = 0;
   uint64_t bytesSent = 0, bytesReceived = 0;
   bool lost = false;

@@ -31,6 +31,9 @@
 #   exit-codes      under --enable-recovery through scripts/prt-mpirun (ARG): a missing
 #                   scene 2, every worker lost 1, the master killed mid-render non-zero,
 #                   prt join with a missing or stale port file 2 and 1, success 0
+#   corrupt         workers that return wrong pixels (--inject-fault W:PIXELS:corrupt), a
+#                   threaded rank among them (mpirun's MPMD form), early and late, one and two:
+#                   each is rejected and no other, and the image is the serial one
 #   changing        the default (adaptive) strategy with a worker slowing down part-way
 #                   (--slowdown-at): the image is still the serial one
 set -eu
@@ -234,6 +237,38 @@ assert [l["worker"] for l in lost] == [1], lost
 assert r["workers"][1]["lost"], r["workers"][1]
 assert r["reissued_tasks"] > 0, r["reissued_tasks"]
 PY
+    ;;
+  corrupt)
+    geometry="--width 48 --height 36 --spp 2"
+    # shellcheck disable=SC2086
+    "$prt" render "$scene" $geometry -q -o serial.pfm
+    for faults in "1:0:corrupt" "0:300:corrupt 2:0:corrupt"; do
+      set -- "$prt" render "$scene" $geometry -q --batch 16 --verify 10 -o mpi.pfm \
+        --report report.json
+      for f in $faults; do set -- "$@" --inject-fault "$f"; done
+      set +e
+      # Rank 0 (the master) and worker 0 with one thread, workers 1 and 2 with two.
+      # shellcheck disable=SC2086
+      timeout -k 5 90 "$mpiexec" $launcher_flags -np 2 "$@" --threads 1 : -np $((np - 2)) "$@" \
+        --threads 2 >out.txt 2>err.txt
+      status=$?
+      set -e
+      cat err.txt >&2
+      [ "$status" -eq 0 ] || fail "$faults: mpirun exited with $status"
+      cmp serial.pfm mpi.pfm || fail "$faults: the image differs from the serial one"
+      python3 - "$faults" <<'PY'
+import json, sys
+r = json.load(open("report.json"))
+got = sorted(x["worker"] for x in r["rejected_workers"])
+faults = sys.argv[1].split()
+# An early fault is always caught; worker 0's late one only if it rendered past 300 pixels.
+early = sorted(int(f.split(":")[0]) for f in faults if f.split(":")[1] == "0")
+late = [int(f.split(":")[0]) for f in faults if f.split(":")[1] != "0"]
+assert got == early or got == sorted(early + late), (got, faults, r["rejected_workers"])
+assert r["verified_pixels"] > 0
+assert all(x["pixels_taken_back"] >= 0 and "spot check" in x["reason"] for x in r["rejected_workers"])
+PY
+    done
     ;;
   crash-checkpoint)
     # shellcheck disable=SC2086
