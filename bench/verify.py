@@ -8,7 +8,7 @@ the rate after, half of it once trusted), plus a message each way per check batc
 render cannot end before the last checks are back. Two figures per rate, as ratios to
 --verify 0 measured in the same round: the elapsed time (what a user waits) and the workers'
 busy time summed (the CPU spent, less noisy on a shared machine). Medians over --runs rounds,
-with the range.
+with the range; the rates take turns at running first in a round.
 
 The scene is scenes/complex.scene (--case A) on --workers worker threads at full speed; on this
 2-core machine the workers and the master share the cores, so elapsed times carry the
@@ -58,8 +58,10 @@ def main():
     rounds = []
     with tempfile.TemporaryDirectory() as tmp:
         for i in range(a.runs):
+            # Each round in another order: the first run of a round is not always the same rate.
+            order = rates[i % len(rates):] + rates[:i % len(rates)]
             rounds.append({rate: render(a.prt, a.scene, a.size, a.workers, rate, tmp)
-                           for rate in rates})
+                           for rate in order})
     print(f"spot checks on {a.scene} (case A, {a.size}, {a.workers} workers), "
           f"{a.runs} rounds; ratios to --verify 0 in the same round")
     print(f"{'--verify':>8} {'checked':>8} {'share':>7} {'elapsed':>22} {'busy (CPU)':>22}")

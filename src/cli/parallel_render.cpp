@@ -7,6 +7,7 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 #include <optional>
 #include <string_view>
 #include <tuple>
@@ -205,6 +206,12 @@ void addParallelOptions(CLI::App& cmd, RenderOptions& o) {
       ->check(finiteIn(0, 100))
       ->capture_default_str()
       ->group(parallel);
+  cmd.add_option("--verify-seed", o.verifySeed,
+                 "Which pixels the spot checks sample: the report's verify_seed repeats a run's "
+                 "sample (default: drawn at random for each run, so that no worker can know "
+                 "which of its pixels are checked)")
+      ->check(CLI::Range(uint64_t{1}, std::numeric_limits<uint64_t>::max()))
+      ->group(parallel);
   cmd.add_option("--inject-fault", o.faults,
                  "WORKER:PIXELS:crash|hang|corrupt makes worker WORKER (rank WORKER+1 under MPI) "
                  "fail after rendering that many pixels; corrupt: return wrong pixels from then "
@@ -245,6 +252,7 @@ ParallelOptions toParallelOptions(const RenderOptions& o, int workers) {
   p.checkpointEverySeconds = o.checkpointEverySeconds;
   p.faults = parseFaults(o.faults);
   p.verifyPercent = o.verifyPercent;
+  p.verifySeed = o.verifySeed;
   return p;
 }
 

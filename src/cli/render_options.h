@@ -62,6 +62,7 @@ struct RenderOptions {
   std::string commandLine;                 // as typed, recorded in the report and the page
   std::vector<std::string> faults;         // --inject-fault W:PIXELS:crash|hang|corrupt
   double verifyPercent = 1;                // --verify: spot-check rate (0: off)
+  uint64_t verifySeed = 0;                 // --verify-seed: the sample's seed (0: random)
 };
 
 }  // namespace prt::cli

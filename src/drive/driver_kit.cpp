@@ -3,6 +3,7 @@
 
 #include <cstdio>
 #include <memory>
+#include <random>
 
 #include "cluster/master.h"
 #include "core/cpu_time.h"
@@ -58,7 +59,10 @@ ParallelRun runMasterSide(Transport& net, const RunRequest& request, const std::
   masterOptions.endgame = options.endgame;
   // Spot checks: the referee is the master's own render, built when first needed (a
   // disagreement, or no other worker to check), on one thread of this machine.
-  masterOptions.checks = {options.verifyPercent, options.verifySeed};
+  // The seed is drawn here unless given: no worker can know which of its pixels are checked.
+  uint64_t seed = options.verifySeed;
+  while (seed == 0) seed = (uint64_t{std::random_device{}()} << 32) ^ std::random_device{}();
+  masterOptions.checks = {options.verifyPercent, seed};
   std::unique_ptr<FrameRenderer> referee;
   masterOptions.referee = [&](const TaskSet& checked) {
     if (!referee) referee = std::make_unique<FrameRenderer>(scene, request.settings, frames);
@@ -231,6 +235,7 @@ ParallelRun runMasterSide(Transport& net, const RunRequest& request, const std::
     info.faults.rejectedWorkers.push_back({r.worker, r.atSeconds, r.reason, r.pixelsTakenBack});
   }
   info.faults.verifyPercent = master.spotChecks().enabled() ? options.verifyPercent : 0;
+  info.faults.verifySeed = seed;
   info.faults.verifiedPixels = master.spotChecks().verifiedPixels();
   info.faults.refereeChecks = master.spotChecks().refereeChecks();
   info.faults.reissuedTasks = ledger.reissuedTasks();

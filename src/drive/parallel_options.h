@@ -50,7 +50,8 @@ struct ParallelOptions {
   std::vector<FaultInjection> faults;  // worker W is rank W+1 under MPI
   bool endgame = false;                // copies of the last tasks for workers left idle
   double verifyPercent = 1;            // --verify: spot checks (cluster/spot_checks.h); 0: off
-  uint64_t verifySeed = 0x5eed;        // which pixels are checked
+  uint64_t verifySeed = 0;             // which pixels are checked; 0: drawn at random per run
+                                       // (the report gives it: --verify-seed repeats it)
   std::string checkpointPath;          // empty: no checkpoints
   // The path is the automatic one: nothing is written until the run is expected to take
   // more than kAutomaticCheckpointSeconds, or is stopped with pixels done.

@@ -246,6 +246,7 @@ std::string RunReport::toJson() const {
   }
   j["rejected_workers"] = rejected;
   j["verify_percent"] = f.verifyPercent;
+  j["verify_seed"] = f.verifySeed;
   j["verified_pixels"] = f.verifiedPixels;
   j["referee_checks"] = f.refereeChecks;
   j["reissued_tasks"] = f.reissuedTasks;

@@ -76,6 +76,7 @@ struct FaultInfo {
   std::vector<LostWorkerInfo> lostWorkers;
   std::vector<RejectedWorkerInfo> rejectedWorkers;
   double verifyPercent = 0;        // --verify: the spot checks' base rate (0: off)
+  uint64_t verifySeed = 0;         // which pixels were checked (--verify-seed repeats it)
   uint64_t verifiedPixels = 0;     // spot checks that matched
   uint64_t refereeChecks = 0;      // spot checks the master rendered itself
   uint64_t reissuedTasks = 0;    // tasks handed back to the strategy from lost workers

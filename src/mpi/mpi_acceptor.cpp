@@ -1,7 +1,11 @@
 #include "mpi/mpi_acceptor.h"
 
+#include <sys/stat.h>
+
+#include <cerrno>
 #include <chrono>
 #include <cstdio>
+#include <cstring>
 
 #include "core/thread_start.h"
 #include "core/input_error.h"
@@ -23,7 +27,15 @@ MpiAcceptor::MpiAcceptor(const std::string& portFile) : file_(portFile) {
   check(MPI_Open_port(MPI_INFO_NULL, name), "MPI_Open_port", -1);
   state_->port = name;
   try {
-    writeFileAtomically(file_, state_->port + "\n");
+    // Readable by its owner only: whoever reads the port can try to join. The mode is set on
+    // the temporary file before anything is written, so the name is never readable by others.
+    writeFileAtomically(file_, [&](std::FILE* f) {
+      if (::fchmod(::fileno(f), 0600) != 0) {
+        throw InputError("cannot make the port file '" + file_ + "' private: " +
+                         std::strerror(errno));
+      }
+      std::fputs((state_->port + "\n").c_str(), f);
+    });
   } catch (...) {
     MPI_Close_port(name);
     throw;

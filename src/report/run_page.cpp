@@ -278,6 +278,7 @@ std::string measures(const json& r) {
       {"rejected_workers", {kFaults, "rejected workers", "results found wrong by a spot check: stopped, every pixel they delivered rendered again"}},
       {"verified_pixels", {kFaults, "verified pixels", "rendered again by another worker (or the master) and found bit for bit the same"}},
       {"verify_percent", {kFaults, "spot-check rate", "the share of each worker's pixels checked (--verify; more for new workers)"}},
+      {"verify_seed", {kFaults, "spot-check seed", "which pixels were checked: --verify-seed repeats the sample"}},
       {"referee_checks", {kFaults, "checks by the master", "spot checks the master rendered itself (no other worker to do them)"}},
       {"duplicate_pixels", {kFaults, "duplicate pixels", "results that came twice; the first was kept"}},
       {"endgame_copies", {kFaults, "endgame copies", "tasks copied to idle workers at the end (--endgame)"}},

@@ -85,6 +85,7 @@ start_master() {
   master=$!
   for i in $(seq 1 200); do [ -s port ] && break; sleep 0.05; done
   [ -s port ] || fail "the master wrote no port file"
+  [ "$(stat -c %a port)" = 600 ] || fail "the port file is readable by others: $(stat -c %a port)"
   cp port stale-port  # for the stale mode: the port of a render that will have ended
   # Some pixels first, so the joiners arrive mid-render.
   for i in $(seq 1 200); do
