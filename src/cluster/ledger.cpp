@@ -8,7 +8,7 @@
 namespace prt {
 
 Ledger::Ledger(int workerCount, uint64_t taskCount)
-    : workers_(static_cast<size_t>(workerCount)), liveCount_(workerCount), owner_(taskCount, kNotDone) {
+    : workers_(static_cast<size_t>(workerCount)), liveCount_(workerCount), owner_(taskCount, kNotDone), handedOut_(taskCount, false) {
   PRT_CHECK(workerCount >= 1);
 }
 
@@ -68,6 +68,16 @@ double Ledger::nextExpiry(double leaseSeconds) const {
 
 void Ledger::gave(int worker, const TaskSet& tasks) {
   workers_[index(worker)].given.append(tasks);
+  tasks.forEach([&](uint64_t t) {
+    PRT_CHECK(t < taskCount());
+    handedOut_[t] = true;
+  });
+}
+
+bool Ledger::allHandedOut(const TaskSet& tasks) const {
+  bool all = true;
+  tasks.forEach([&](uint64_t t) { all = all && t < taskCount() && (handedOut_[t] || owner_[t] == kResumed); });
+  return all;
 }
 
 void Ledger::movedOut(int from, const TaskSet& tasks) {

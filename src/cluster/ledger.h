@@ -53,6 +53,9 @@ class Ledger {
 
   // Holdings.
   void gave(int worker, const TaskSet& tasks);
+  // Whether every task of `tasks` was handed out to some worker (or resumed): a result for one
+  // that never was cannot come from a correct worker.
+  bool allHandedOut(const TaskSet& tasks) const;
   void movedOut(int from, const TaskSet& tasks);  // `from` sent them to a peer (diffusion)
   // Records results from `worker` (live or lost) and returns the tasks of `tasks` that were
   // not done before, in order; a task already done is dropped.
@@ -111,6 +114,7 @@ class Ledger {
   std::vector<Holding> workers_;
   int liveCount_;
   std::vector<int32_t> owner_;  // per task: who delivered its result (4 bytes a pixel)
+  std::vector<bool> handedOut_;  // per task: given to a worker at least once
   uint64_t doneCount_ = 0;
   uint64_t reissued_ = 0;
   uint64_t duplicates_ = 0;

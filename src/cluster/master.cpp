@@ -268,8 +268,10 @@ bool Master::plausible(const Message& message) const {
     for (const float c : r->rgb) {
       if (!std::isfinite(c)) return false;  // no render of PRT's gives such a colour
     }
-    // Without a sink (the simulator) results carry no colours; otherwise they must.
-    return r->tasks.allBelow(taskCount()) && (coloured || (!sink_ && r->rgb.empty()));
+    // Without a sink (the simulator) results carry no colours; otherwise they must. Pixels
+    // nobody was given yet cannot have been rendered for this run.
+    return r->tasks.allBelow(taskCount()) && (coloured || (!sink_ && r->rgb.empty())) &&
+           ledger_.allHandedOut(r->tasks);
   }
   if (const auto* n = std::get_if<TransferNoticeMsg>(&message)) {
     return n->to >= 0 && n->to < workerCount() && n->tasks.allBelow(taskCount());

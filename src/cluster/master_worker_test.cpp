@@ -427,6 +427,24 @@ TEST(MasterTest, AMessageThatCannotBeTrueLosesItsWorkerAndCrashesNothing) {
   }
 }
 
+// Results for pixels nobody was given yet (a process that joined only to paint the image) are
+// a lie: the sender is rejected and nothing of it stays.
+TEST(MasterTest, ResultsForPixelsNeverHandedOutRejectTheirSender) {
+  StrategyOptions options;
+  options.chunk = 10;
+  Master master(makeStrategy("self", options), 2, 1000, SceneMsg{"s", 1, 1},
+                [](int, const TaskSet&, const std::vector<float>&) {});
+  master.start(0);
+  master.onMessage(0, SpeedIndexMsg{0.1}, 0);
+  master.onMessage(1, SpeedIndexMsg{0.1}, 0);  // 10 pixels each, the rest in the pool
+  ASSERT_FALSE(master.ledger().allHandedOut(TaskSet::range(900, 1)));
+  master.onMessage(1, ResultsMsg{TaskSet::range(900, 100), std::vector<float>(300, 1.f)}, 1);
+  EXPECT_FALSE(master.isLive(1));
+  ASSERT_EQ(master.rejections().size(), 1u);
+  EXPECT_EQ(master.ledger().doneCount(), 0u);
+  EXPECT_TRUE(master.isLive(0));
+}
+
 // A joiner still measuring its speed index is unknown to the strategy: a diffusion round does
 // not ask it for its queue (it would answer only once measured, holding the round up that long).
 TEST(MasterTest, ADiffusionRoundDoesNotWaitForAJoinerStillMeasuring) {
