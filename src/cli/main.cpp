@@ -13,7 +13,7 @@
 #include "core/memory_budget.h"
 #include "core/thread_failures.h"
 #include "image/atomic_file.h"
-#include "trace/isa_level.h"
+#include "mpi/invitation.h"
 
 namespace {
 
@@ -23,8 +23,7 @@ int runPrt(int argc, char** argv) {
   CLI::App app{"PRT: a ray tracer for networks of computers of different speeds"};
   app.require_subcommand(1);
   // The trace library's build in use, as the loader picked it for this processor.
-  app.set_version_flag("--version",
-                       std::string("prt 0.1.0 (trace kernels: ") + prt::traceIsaLevel() + ")");
+  app.set_version_flag("--version", prt::buildDescription());
   std::string commandLine = "prt";
   // Quoted for a shell where needed: the report records it, and a stopped render prints it
   // back with --resume for the user to run.

@@ -245,6 +245,9 @@ std::string RunReport::toJson() const {
                         {"pixels_taken_back", r.pixelsTakenBack}});
   }
   j["rejected_workers"] = rejected;
+  json refused = json::array();
+  for (const std::string& why : f.refusedJoiners) refused.push_back({{"reason", why}});
+  j["refused_joiners"] = refused;
   j["verify_percent"] = f.verifyPercent;
   j["verify_seed"] = f.verifySeed;
   j["verified_pixels"] = f.verifiedPixels;
@@ -388,6 +391,9 @@ std::string RunReport::toTable() const {
     std::snprintf(line, sizeof line, "worker %d was REJECTED at %.2f s: ", r.worker, r.atSeconds);
     out += line + r.reason + "; its " + std::to_string(r.pixelsTakenBack) +
            " pixels were taken back and rendered again\n";
+  }
+  for (const std::string& why : info.faults.refusedJoiners) {
+    out += "a joining job was refused: " + why + "\n";
   }
   if (info.faults.verifyPercent > 0) {
     std::snprintf(line, sizeof line, "spot checks: %llu pixels verified bit for bit (--verify %g)\n",

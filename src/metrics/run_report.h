@@ -75,6 +75,7 @@ struct RejectedWorkerInfo {
 struct FaultInfo {
   std::vector<LostWorkerInfo> lostWorkers;
   std::vector<RejectedWorkerInfo> rejectedWorkers;
+  std::vector<std::string> refusedJoiners;  // why each joining job was turned away
   double verifyPercent = 0;        // --verify: the spot checks' base rate (0: off)
   uint64_t verifySeed = 0;         // which pixels were checked (--verify-seed repeats it)
   uint64_t verifiedPixels = 0;     // spot checks that matched

@@ -26,6 +26,7 @@ MpiAcceptor::MpiAcceptor(const std::string& portFile) : file_(portFile) {
   char name[MPI_MAX_PORT_NAME] = {};
   check(MPI_Open_port(MPI_INFO_NULL, name), "MPI_Open_port", -1);
   state_->port = name;
+  state_->secret = newSecret();
   try {
     // Readable by its owner only: whoever reads the port can try to join. The mode is set on
     // the temporary file before anything is written, so the name is never readable by others.
@@ -34,7 +35,7 @@ MpiAcceptor::MpiAcceptor(const std::string& portFile) : file_(portFile) {
         throw InputError("cannot make the port file '" + file_ + "' private: " +
                          std::strerror(errno));
       }
-      std::fputs((state_->port + "\n").c_str(), f);
+      std::fputs(portFileText(state_->port, state_->secret).c_str(), f);
     });
   } catch (...) {
     MPI_Close_port(name);
@@ -92,10 +93,78 @@ void MpiAcceptor::acceptLoop(const std::shared_ptr<State>& state) {
       if (wake) break;
       continue;
     }
+    const std::string refusal = admit(*state, inter);
+    if (!refusal.empty()) {
+      std::fprintf(stderr, "prt: a joiner was refused: %s\n", refusal.c_str());
+      int remote = 0;
+      MPI_Comm_remote_size(inter, &remote);
+      for (int k = 0; k < remote; ++k) {
+        MPI_Request request;
+        if (MPI_Isend(refusal.data(), static_cast<int>(refusal.size()), MPI_CHAR, k, kRefusedTag,
+                      inter, &request) == MPI_SUCCESS) {
+          MPI_Request_free(&request);
+        }
+      }
+      // Not MPI_Comm_disconnect: it waits for the other side, which may never come.
+      MPI_Comm_free(&inter);
+      std::lock_guard<std::mutex> lock(state->mutex);
+      state->refused.push_back(refusal);
+      continue;
+    }
     std::lock_guard<std::mutex> lock(state->mutex);
     state->accepted.push_back(inter);
   }
   state->finished = true;
+}
+
+std::string MpiAcceptor::admit(const State& state, MPI_Comm inter) {
+  int remote = 0;
+  if (MPI_Comm_remote_size(inter, &remote) != MPI_SUCCESS || remote < 1) {
+    return "its connection could not be read";
+  }
+  std::vector<Challenge> challenges(static_cast<size_t>(remote));
+  for (int k = 0; k < remote; ++k) {
+    challenges[static_cast<size_t>(k)] = newChallenge();
+    MPI_Request request;
+    if (MPI_Isend(challenges[static_cast<size_t>(k)].data(), 32, MPI_BYTE, k, kChallengeTag,
+                  inter, &request) != MPI_SUCCESS) {
+      return "its rank " + std::to_string(k) + " could not be reached";
+    }
+    MPI_Request_free(&request);
+  }
+  const auto until = std::chrono::steady_clock::now() +
+                     std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                         std::chrono::duration<double>(kProofSeconds));
+  for (int k = 0; k < remote; ++k) {
+    for (;;) {
+      int found = 0;
+      MPI_Status status;
+      if (MPI_Iprobe(k, kProofTag, inter, &found, &status) != MPI_SUCCESS) {
+        return "its rank " + std::to_string(k) + " failed";
+      }
+      if (found) {
+        int count = 0;
+        MPI_Get_count(&status, MPI_BYTE, &count);
+        if (count < 0 || count > 4096) return "its proof was not one";
+        std::vector<uint8_t> proof(static_cast<size_t>(count));
+        MPI_Recv(proof.data(), count, MPI_BYTE, k, kProofTag, inter, MPI_STATUS_IGNORE);
+        const std::string why = checkProof(state.secret, challenges[static_cast<size_t>(k)], proof);
+        if (!why.empty()) return why;
+        break;
+      }
+      if (std::chrono::steady_clock::now() > until) {
+        return "it did not prove it was invited within " +
+               std::to_string(static_cast<int>(kProofSeconds)) + " s";
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+  }
+  return "";
+}
+
+std::vector<std::string> MpiAcceptor::refused() const {
+  std::lock_guard<std::mutex> lock(state_->mutex);
+  return state_->refused;
 }
 
 std::optional<MPI_Comm> MpiAcceptor::take() {

@@ -16,6 +16,12 @@
 // to `graceSeconds` for the thread; when no worker could wake it (all lost) the thread is left
 // behind blocked, which Open MPI 4.1 tolerates at MPI_Finalize; what it uses is shared with
 // it, so it outlives this object. The port file is removed first, so no new joiner reads it.
+//
+// Invitations (mpi/invitation.h): the port file, readable by its owner only, also holds a
+// random secret. Before a joining job is queued, each of its ranks must answer a challenge
+// with proof of the secret and a compatible version, within kProofSeconds; a job with a rank
+// that does not is told why (kRefusedTag), dropped without a collective call (a hostile one
+// cannot hold the thread up) and listed in refused().
 // Needs MPI_THREAD_MULTIPLE.
 
 #include <mpi.h>
@@ -27,6 +33,9 @@
 #include <optional>
 #include <string>
 #include <thread>
+#include <vector>
+
+#include "mpi/invitation.h"
 
 namespace prt::mpi_detail {
 
@@ -39,7 +48,11 @@ class MpiAcceptor {
   MpiAcceptor(const MpiAcceptor&) = delete;
   MpiAcceptor& operator=(const MpiAcceptor&) = delete;
 
+  static constexpr double kProofSeconds = 10;
+
   const std::string& portName() const { return state_->port; }
+  // Why each joining job refused so far was turned away.
+  std::vector<std::string> refused() const;
   // The next accepted intercommunicator, if one is waiting.
   std::optional<MPI_Comm> take();
   // Stops accepting in two steps: beginStop() removes the port file and makes the next
@@ -53,12 +66,16 @@ class MpiAcceptor {
   // What the accepting thread uses: shared, so a thread left blocked outlives the acceptor.
   struct State {
     std::string port;
-    std::mutex mutex;
+    Secret secret{};
+    mutable std::mutex mutex;
     std::deque<MPI_Comm> accepted;
+    std::vector<std::string> refused;
     std::atomic<bool> stopping{false};
     std::atomic<bool> finished{false};
   };
   static void acceptLoop(const std::shared_ptr<State>& state);
+  // Empty when every rank of `inter` proved it was invited; otherwise why not.
+  static std::string admit(const State& state, MPI_Comm inter);
 
   std::string file_;
   std::shared_ptr<State> state_ = std::make_shared<State>();

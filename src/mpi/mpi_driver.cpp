@@ -23,6 +23,7 @@
 #include "core/input_error.h"
 #include "core/input_file.h"
 #include "core/byte_codec.h"
+#include "mpi/invitation.h"
 #include "mpi/mpi_acceptor.h"
 #include "mpi/mpi_comm.h"
 #include "mpi/mpi_transport.h"
@@ -170,6 +171,7 @@ ParallelRun renderMpiMaster(MpiSession& session, const RunRequest& request) {
   }
   comm.runStarted = true;
   ParallelRun run = runMasterSide(*comm.link, request, "mpi");
+  if (comm.acceptor) run.report.info.faults.refusedJoiners = comm.acceptor->refused();
   comm.link->flush(options.workerTimeoutSeconds);
   return run;
 }
@@ -308,29 +310,55 @@ int runMpiWorker(MpiSession& session, const ParallelOptions& options) {
 
 namespace {
 
-// Rank 0 of the joining job reads the port name; every rank gets it (empty: none).
-// `problem` says why rank 0 could not read the file (a FIFO, a device, too large).
-std::string sharedPortName(MpiSession& session, const std::string& file, std::string& problem) {
-  std::string port;
+// Rank 0 of the joining job reads the port file; every rank gets the port name (empty: none)
+// and the invitation's secret. `problem` says why rank 0 could not read the file (a FIFO, a
+// device, too large).
+PortFile sharedPortFile(MpiSession& session, const std::string& file, std::string& problem) {
+  PortFile read;
   std::error_code missing;
   if (session.rank() == 0 && std::filesystem::exists(file, missing)) {
     try {
-      port = readInputFile(file, "port file", 1 << 16);
-      port = port.substr(0, std::min<size_t>(port.find('\n'), MPI_MAX_PORT_NAME));
+      read = parsePortFile(readInputFile(file, "port file", 1 << 16));
+      if (read.port.size() >= MPI_MAX_PORT_NAME) read.port.resize(MPI_MAX_PORT_NAME - 1);
     } catch (const InputError& e) {
       problem = e.what();
     }
-    while (!port.empty() && (port.back() == '\n' || port.back() == '\r' || port.back() == ' ')) {
-      port.pop_back();
-    }
   }
-  int length = static_cast<int>(port.size());
+  int length = static_cast<int>(read.port.size());
   check(MPI_Bcast(&length, 1, MPI_INT, 0, session.comm().comm), "MPI_Bcast", -1);
-  port.resize(static_cast<size_t>(length));
+  read.port.resize(static_cast<size_t>(length));
   if (length > 0) {
-    check(MPI_Bcast(port.data(), length, MPI_CHAR, 0, session.comm().comm), "MPI_Bcast", -1);
+    check(MPI_Bcast(read.port.data(), length, MPI_CHAR, 0, session.comm().comm), "MPI_Bcast", -1);
   }
-  return port;
+  int hasSecret = read.secret.has_value() ? 1 : 0;
+  check(MPI_Bcast(&hasSecret, 1, MPI_INT, 0, session.comm().comm), "MPI_Bcast", -1);
+  if (hasSecret) {
+    if (!read.secret) read.secret = Secret{};
+    check(MPI_Bcast(read.secret->data(), 32, MPI_BYTE, 0, session.comm().comm), "MPI_Bcast", -1);
+  } else {
+    read.secret.reset();
+  }
+  return read;
+}
+
+// A joining rank answers the master's challenge (without a secret it still answers, and is
+// refused). False when no challenge came by `deadline` (MPI_Wtime).
+bool proveInvitation(MPI_Comm inter, const std::optional<Secret>& secret, double deadline) {
+  for (;;) {
+    int found = 0;
+    MPI_Status status;
+    check(MPI_Iprobe(0, kChallengeTag, inter, &found, &status), "MPI_Iprobe", 0);
+    if (found) break;
+    if (MPI_Wtime() > deadline) return false;
+    pollPause();
+  }
+  Challenge challenge{};
+  check(MPI_Recv(challenge.data(), 32, MPI_BYTE, 0, kChallengeTag, inter, MPI_STATUS_IGNORE),
+        "MPI_Recv", 0);
+  const std::vector<uint8_t> proof = proofFor(secret.value_or(Secret{}), challenge, buildDescription());
+  check(MPI_Send(proof.data(), static_cast<int>(proof.size()), MPI_BYTE, 0, kProofTag, inter),
+        "MPI_Send", 0);
+  return true;
 }
 
 }  // namespace
@@ -340,7 +368,8 @@ int runJoinedWorkers(MpiSession& session, const JoinRequest& request) {
     session.abort("prt join needs MPI_THREAD_MULTIPLE, which this MPI does not provide", 1);
   }
   std::string problem;
-  const std::string port = sharedPortName(session, request.portFile, problem);
+  const PortFile portFile = sharedPortFile(session, request.portFile, problem);
+  const std::string& port = portFile.port;
   if (port.empty()) {
     if (session.rank() == 0 && !problem.empty()) {
       std::fprintf(stderr, "prt: error: %s\n", problem.c_str());
@@ -351,6 +380,12 @@ int runJoinedWorkers(MpiSession& session, const JoinRequest& request) {
                    request.portFile.c_str(), request.portFile.c_str());
     }
     return 2;
+  }
+  if (!portFile.secret && session.rank() == 0) {
+    std::fprintf(stderr,
+                 "prt: warning: '%s' holds no invitation secret: the render will refuse this "
+                 "job (use the port file the render wrote, as it wrote it)\n",
+                 request.portFile.c_str());
   }
   // A port nobody answers (the render ended) makes MPI_Comm_connect wait for ever: a
   // watchdog ends the job if the connection has not come by the deadline.
@@ -385,14 +420,27 @@ int runJoinedWorkers(MpiSession& session, const JoinRequest& request) {
   }
   try {
     check(MPI_Comm_set_errhandler(inter, MPI_ERRORS_RETURN), "MPI_Comm_set_errhandler", -1);
-    // The welcome: this worker's endpoint and the run's options.
+    // The invitation, then the welcome: this worker's endpoint and the run's options.
+    const double deadline = MPI_Wtime() + request.connectTimeoutSeconds;
+    if (!proveInvitation(inter, portFile.secret, deadline)) {
+      session.abort("joined the render but its master asked for no invitation: is it an "
+                    "older prt?", 1);
+    }
     ParallelOptions options;
     int id = -1;
     {
       MpiTransport net(inter);
-      const double deadline = MPI_Wtime() + request.connectTimeoutSeconds;
       while (id < 0) {
-        if (std::optional<Packet> p = net.poll(); p && p->tag == kWelcomeTag) {
+        std::optional<Packet> p = net.poll();
+        if (p && p->tag == kRefusedTag) {
+          const std::string why(p->bytes.begin(), p->bytes.end());
+          if (session.rank() == 0) {
+            std::fprintf(stderr, "prt: error: the render refused this job: %s\n", why.c_str());
+          }
+          session.comm().skipFinalize = true;
+          return 1;
+        }
+        if (p && p->tag == kWelcomeTag) {
           id = decodeWelcome(p->bytes, options);
         } else if (MPI_Wtime() > deadline) {
           session.abort("joined the render but its master sent no welcome", 1);

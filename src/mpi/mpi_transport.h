@@ -32,6 +32,9 @@ enum Tag : int {
   kRelayTag = 4,    // worker -> master: for another worker it cannot reach (see MpiLink)
   kRelayedTag = 5,  // master -> worker: relayed from another worker
   kWelcomeTag = 6,  // master -> joiner: its endpoint and the run's worker options
+  kChallengeTag = 8,  // master -> joiner: 32 random bytes to prove the invitation on
+  kProofTag = 9,      // joiner -> master: the proof (mpi/invitation.h)
+  kRefusedTag = 10,   // master -> joiner: why it was refused (text)
 };
 
 // What a release tells a worker rank to do.

@@ -278,6 +278,7 @@ std::string measures(const json& r) {
       {"rejected_workers", {kFaults, "rejected workers", "results found wrong by a spot check: stopped, every pixel they delivered rendered again"}},
       {"verified_pixels", {kFaults, "verified pixels", "rendered again by another worker (or the master) and found bit for bit the same"}},
       {"verify_percent", {kFaults, "spot-check rate", "the share of each worker's pixels checked (--verify; more for new workers)"}},
+      {"refused_joiners", {kFaults, "refused joiners", "jobs that tried to join without this render's invitation, or of another PRT version"}},
       {"verify_seed", {kFaults, "spot-check seed", "which pixels were checked: --verify-seed repeats the sample"}},
       {"referee_checks", {kFaults, "checks by the master", "spot checks the master rendered itself (no other worker to do them)"}},
       {"duplicate_pixels", {kFaults, "duplicate pixels", "results that came twice; the first was kept"}},
@@ -298,7 +299,7 @@ std::string measures(const json& r) {
       {"frame_count", {kFrames, "frames", "in the sequence, rendered as one job"}},
       {"fps", {kFrames, "frames per second", "the animation's speed (--fps)"}},
       {"seconds_per_frame", {kFrames, "per frame", "the job's time over its frames"}}};
-  static const std::set<std::string> kFaultKeys = {"lost_workers", "reissued_tasks", "rejected_workers",
+  static const std::set<std::string> kFaultKeys = {"lost_workers", "reissued_tasks", "rejected_workers", "refused_joiners",
                                                    "missing_summaries", "duplicate_pixels"};
   const auto humanValue = [](const std::string& key, const json& value) {
     if (value.is_string()) {

@@ -21,6 +21,10 @@
 #   stale     prt join against the port file of a render that has ended: a clear error within
 #             its --connect-timeout, never a hang
 #   missing   prt join of a file that does not exist: exit 2 and a message naming it
+#   uninvited prt join with the port but not the secret (an older port file, a copy of its
+#             first line), and with a wrong secret: each refused before it gets the scene
+#             (exit 1, the reason said), the render undisturbed; then an invited join finishes
+#             it: the serial image, refused_joiners lists the two
 set -eu
 
 prt=$1 mpiexec=$2 scene=$3 work=$4 mode=$5 strategy=${6:-adaptive} extra=${7:-}
@@ -218,6 +222,42 @@ PY
     [ "$status" -ne 0 ] && [ "$status" -ne 124 ] || fail "prt join of a stale port exited with $status"
     [ "$elapsed" -lt 30 ] || fail "prt join took $elapsed s to give up"
     grep -q "could not reach the render's master" join.err || fail "no clear message"
+    ;;
+  uninvited)
+    # shellcheck disable=SC2086
+    "$prt" render "$scene" $size -q -o serial.pfm
+    start_master
+    head -n 1 port >no-secret
+    { head -n 1 port; echo "secret $(printf '%064d' 7)"; } >wrong-secret
+    for file in no-secret wrong-secret; do
+      set +e
+      # shellcheck disable=SC2086
+      timeout -k 5 60 "$mpiexec" $mca $uri -np 1 "$prt" join "$work/$file" \
+        --slowdown $join_slowdown >join.out 2>join.err
+      status=$?
+      set -e
+      [ "$status" -ne 0 ] && [ "$status" -ne 124 ] || fail "$file: prt join exited with $status"
+      grep -q "the render refused this job: it did not prove it was invited" join.err ||
+        fail "$file: no reason given"
+    done
+    kill -0 "$master" 2>/dev/null || fail "the render ended when refusing joiners"
+    # shellcheck disable=SC2086
+    timeout -k 5 100 "$mpiexec" $mca $uri -np 2 "$prt" join "$work/port" \
+      --slowdown $join_slowdown >join.out 2>join.err &
+    joiner=$!
+    wait_for "$master" 100
+    [ "$status" -eq 0 ] || fail "the render exited with $status"
+    wait_for "$joiner" 60
+    [ "$status" -eq 0 ] || fail "the invited prt join exited with $status"
+    cmp serial.pfm mpi.pfm || fail "the image differs from the serial one"
+    python3 - <<'PY'
+import json
+r = json.load(open("report.json"))
+refused = r["refused_joiners"]
+assert len(refused) == 2, refused
+assert all("did not prove it was invited" in x["reason"] for x in refused), refused
+assert [j["worker"] for j in r["joined_workers"]] == [1, 2], r["joined_workers"]
+PY
     ;;
   missing)
     set +e

@@ -1,0 +1,133 @@
+#include "mpi/invitation.h"
+
+#include <openssl/crypto.h>
+#include <openssl/evp.h>
+#include <openssl/hmac.h>
+#include <openssl/rand.h>
+
+#include <cstring>
+#include <stdexcept>
+
+#include "trace/isa_level.h"
+
+namespace prt {
+namespace {
+
+constexpr const char* kVersion = "0.1.0";
+
+template <size_t N>
+std::array<uint8_t, N> randomBytes() {
+  std::array<uint8_t, N> out{};
+  if (RAND_bytes(out.data(), static_cast<int>(N)) != 1) {
+    throw std::runtime_error("the system's random generator failed");
+  }
+  return out;
+}
+
+std::array<uint8_t, 32> hmac(const Secret& secret, const Challenge& challenge,
+                             const std::string& build) {
+  // Sized first and copied into (GCC 12 misreads an insert after an array here).
+  std::vector<uint8_t> message(challenge.size() + build.size());
+  std::memcpy(message.data(), challenge.data(), challenge.size());
+  if (!build.empty()) std::memcpy(message.data() + challenge.size(), build.data(), build.size());
+  std::array<uint8_t, 32> out{};
+  unsigned int length = 0;
+  if (HMAC(EVP_sha256(), secret.data(), static_cast<int>(secret.size()), message.data(),
+           message.size(), out.data(), &length) == nullptr ||
+      length != out.size()) {
+    throw std::runtime_error("HMAC-SHA256 failed");
+  }
+  return out;
+}
+
+// "prt 0.1.0 (trace kernels: x86-64-v3)" -> "0.1.0".
+std::string versionOf(const std::string& build) {
+  if (build.rfind("prt ", 0) != 0) return "";
+  const size_t end = build.find(' ', 4);
+  return build.substr(4, end == std::string::npos ? std::string::npos : end - 4);
+}
+
+}  // namespace
+
+Secret newSecret() { return randomBytes<32>(); }
+Challenge newChallenge() { return randomBytes<32>(); }
+
+std::string secretHex(const Secret& secret) {
+  static const char* kDigits = "0123456789abcdef";
+  std::string out;
+  for (const uint8_t b : secret) {
+    out += kDigits[b >> 4];
+    out += kDigits[b & 15];
+  }
+  return out;
+}
+
+std::optional<Secret> secretFromHex(const std::string& hex) {
+  if (hex.size() != 64) return std::nullopt;
+  Secret out{};
+  const auto digit = [](char c) -> int {
+    if (c >= '0' && c <= '9') return c - '0';
+    if (c >= 'a' && c <= 'f') return c - 'a' + 10;
+    if (c >= 'A' && c <= 'F') return c - 'A' + 10;
+    return -1;
+  };
+  for (size_t i = 0; i < out.size(); ++i) {
+    const int hi = digit(hex[2 * i]), lo = digit(hex[2 * i + 1]);
+    if (hi < 0 || lo < 0) return std::nullopt;
+    out[i] = static_cast<uint8_t>(hi * 16 + lo);
+  }
+  return out;
+}
+
+std::string portFileText(const std::string& port, const Secret& secret) {
+  return port + "\nsecret " + secretHex(secret) + "\n";
+}
+
+PortFile parsePortFile(const std::string& text) {
+  PortFile out;
+  const auto trim = [](std::string s) {
+    while (!s.empty() && (s.back() == '\r' || s.back() == ' ')) s.pop_back();
+    return s;
+  };
+  const size_t end = text.find('\n');
+  out.port = trim(text.substr(0, end));
+  if (end == std::string::npos) return out;
+  const size_t next = text.find('\n', end + 1);
+  const std::string line = trim(text.substr(end + 1, next == std::string::npos ? next : next - end - 1));
+  if (line.rfind("secret ", 0) == 0) out.secret = secretFromHex(line.substr(7));
+  return out;
+}
+
+std::string prtVersion() { return kVersion; }
+
+std::string buildDescription() {
+  return std::string("prt ") + kVersion + " (trace kernels: " + traceIsaLevel() + ")";
+}
+
+std::vector<uint8_t> proofFor(const Secret& secret, const Challenge& challenge,
+                              const std::string& build) {
+  const std::array<uint8_t, 32> mac = hmac(secret, challenge, build);
+  std::vector<uint8_t> out(mac.size() + build.size());
+  std::memcpy(out.data(), mac.data(), mac.size());
+  if (!build.empty()) std::memcpy(out.data() + mac.size(), build.data(), build.size());
+  return out;
+}
+
+std::string checkProof(const Secret& secret, const Challenge& challenge,
+                       const std::vector<uint8_t>& proof) {
+  if (proof.size() < 32 || proof.size() > 32 + 256) return "it did not prove it was invited";
+  const std::string build(proof.begin() + 32, proof.end());
+  const std::array<uint8_t, 32> mac = hmac(secret, challenge, build);
+  if (CRYPTO_memcmp(mac.data(), proof.data(), mac.size()) != 0) {
+    return "it did not prove it was invited (no secret, or not this render's)";
+  }
+  if (versionOf(build) != kVersion) {
+    std::string shown;
+    for (const char c : build) shown += (c >= 32 && c < 127) ? c : '?';
+    return "it runs '" + shown + "', this render " + buildDescription() +
+           ": builds of another version may not mix pixels";
+  }
+  return "";
+}
+
+}  // namespace prt

@@ -1,0 +1,49 @@
+#pragma once
+// Invitations to join a running render: only a process that read the port file of
+// `--accept-workers` (readable by its owner only) may join. The file holds the MPI port and a
+// random secret; the master sends each joining rank a random challenge, and the rank answers
+// with HMAC-SHA256(secret, challenge || its version) and its version. A wrong proof, no proof
+// or another PRT version is refused before the joiner gets the scene.
+//
+// The version rule: the PRT version must be the same (`prt --version` up to the trace
+// kernels' build); the trace kernels' ISA level may differ, since every build renders the
+// same bits (tested; spot checks watch it at run time).
+// No MPI here: the bytes only. OpenSSL's HMAC and random generator, constant-time compare.
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace prt {
+
+using Secret = std::array<uint8_t, 32>;
+using Challenge = std::array<uint8_t, 32>;
+
+Secret newSecret();        // from the system's random generator
+Challenge newChallenge();
+std::string secretHex(const Secret& secret);
+std::optional<Secret> secretFromHex(const std::string& hex);  // none: not 64 hex digits
+
+// The port file: the port name, then "secret <hex>".
+std::string portFileText(const std::string& port, const Secret& secret);
+struct PortFile {
+  std::string port;
+  std::optional<Secret> secret;  // none: the file has no (valid) secret line
+};
+PortFile parsePortFile(const std::string& text);
+
+// This build's version ("0.1.0"), and what a joiner reports: the version and its kernels.
+std::string prtVersion();
+std::string buildDescription();  // "prt 0.1.0 (trace kernels: x86-64-v3)"
+
+// A joiner's answer: 32 bytes of HMAC, then its build description.
+std::vector<uint8_t> proofFor(const Secret& secret, const Challenge& challenge,
+                              const std::string& build);
+// Empty when `proof` answers `challenge` for `secret` from a compatible build; otherwise why
+// not, for the refusal ("it did not prove it was invited", "it runs prt 0.2.0 ...").
+std::string checkProof(const Secret& secret, const Challenge& challenge,
+                       const std::vector<uint8_t>& proof);
+
+}  // namespace prt
