@@ -8,7 +8,7 @@ set -euo pipefail
 demo_packages=(
   build-essential cmake ninja-build pkg-config
   libcli11-dev nlohmann-json3-dev libpng-dev libtbb-dev libassimp-dev
-  libopenexr-dev libjpeg-dev libcpp-httplib-dev libtinygltf-dev libstb-dev
+  libopenexr-dev libjpeg-dev libcpp-httplib-dev libtinygltf-dev libstb-dev libssl-dev
   openmpi-bin libopenmpi-dev
 )
 
@@ -17,6 +17,7 @@ packages=(
   libcli11-dev nlohmann-json3-dev libpng-dev libtbb-dev libassimp-dev
   libopenexr-dev libjpeg-dev  # .exr and .jpg images
   libcpp-httplib-dev  # prt render --serve: the live page
+  libssl-dev  # prt join: the invitation's HMAC and random secret
   libtinygltf-dev libstb-dev  # glTF 2.0 model files, and texture images
   libgtest-dev libgmock-dev libbenchmark-dev
   openmpi-bin libopenmpi-dev
