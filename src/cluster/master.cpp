@@ -25,7 +25,8 @@ Master::Master(std::unique_ptr<Strategy> strategy, int workerCount, uint64_t pix
       untrusted_(static_cast<size_t>(workerCount), false),
       endgameServed_(static_cast<size_t>(workerCount), false),
       // Checks compare colours: none without them (the simulator) or without a referee.
-      checks_(sink_ && options_.referee ? options_.checks : SpotCheckOptions{0, 0}, workerCount) {
+      checks_(sink_ && options_.referee ? options_.checks : SpotCheckOptions{0, 0}, workerCount),
+      identities_(static_cast<size_t>(workerCount)) {
   PRT_CHECK(strategy_ != nullptr);
   ledger_.seedDone(options_.resumedDone);
   resumed_ = ledger_.doneCount();
@@ -203,6 +204,7 @@ Outbox Master::onWorkerJoined(int worker, double now) {
   untrusted_.push_back(false);
   endgameServed_.push_back(false);
   checks_.addWorker();
+  identities_.emplace_back();
   if (stopped_) {
     out.push_back({worker, StopMsg{}});
     return out;
@@ -338,6 +340,14 @@ Outbox Master::onMessage(int from, const Message& message, double now) {
   }
   if (!isLive(from)) return out;  // a worker presumed lost: nothing else from it counts
   if (const auto* s = std::get_if<SpeedIndexMsg>(&message)) {
+    identities_[w] = s->identity;
+    if (options_.admit) {
+      if (const std::string why = options_.admit(s->identity); !why.empty()) {
+        reject(from, now, why, out);
+        finishIfComplete(out);
+        return out;
+      }
+    }
     const bool first = speedIndices_[w] == 0.0;
     speedIndices_[w] = s->seconds;
     if (!started_) {
@@ -457,7 +467,9 @@ void Master::reject(int worker, double now, const std::string& reason, Outbox& o
   checks_.workerGone(worker, true);
   if (isLive(worker)) lose(worker, now, "rejected: " + reason, out);
   const TaskSet back = ledger_.takeBack(worker);
-  rejections_.push_back({worker, now, reason, back.size()});
+  rejections_.push_back({worker, now, reason, back.size(),
+                         identities_[static_cast<size_t>(worker)].host});
+  if (options_.rejected) options_.rejected(rejections_.back());
   if (!back.empty()) {
     if (options_.takenBack) options_.takenBack(worker, back);
     returnToStrategy(worker, map_.toTasks(back), out);

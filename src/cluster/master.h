@@ -44,6 +44,15 @@ namespace prt {
 using ResultSink =
     std::function<void(int worker, const TaskSet& tasks, const std::vector<float>& rgb)>;
 
+// A worker whose results were found wrong: told to stop, its pixels taken back.
+struct RejectedWorker {
+  int worker = 0;
+  double atSeconds = 0;
+  std::string reason;
+  uint64_t pixelsTakenBack = 0;
+  std::string host;  // the machine it said it runs on (empty: unknown)
+};
+
 // Renders pixels on the master itself (3 floats a pixel), for spot checks no other worker
 // can do and to settle a disagreement between two workers.
 using Referee = std::function<std::vector<float>(const TaskSet& pixels)>;
@@ -58,15 +67,13 @@ struct MasterOptions {
   // The pixels of a rejected worker, taken back: they leave the image (the driver clears them)
   // and are rendered again.
   std::function<void(int worker, const TaskSet& pixels)> takenBack;
+  // Whether a worker may take part, by what it says of itself (its build): empty to admit it,
+  // else why not (it is then rejected). Null: everyone is admitted (the simulator).
+  std::function<std::string(const WorkerIdentity&)> admit;
+  // Told of each rejection as it happens (a driver's blocklist for later joiners).
+  std::function<void(const RejectedWorker&)> rejected;
 };
 
-// A worker whose results were found wrong: told to stop, its pixels taken back.
-struct RejectedWorker {
-  int worker = 0;
-  double atSeconds = 0;
-  std::string reason;
-  uint64_t pixelsTakenBack = 0;
-};
 
 class Master {
  public:
@@ -105,6 +112,8 @@ class Master {
   uint64_t endgameCopies() const { return endgameCopies_; }  // tasks sent as duplicates
   const SpotChecks& spotChecks() const { return checks_; }
   const std::vector<RejectedWorker>& rejections() const { return rejections_; }
+  // What a worker said of itself with its speed index (empty until then).
+  const WorkerIdentity& identity(int worker) const { return identities_[static_cast<size_t>(worker)]; }
 
  private:
   void startStrategy(Outbox& out);
@@ -150,6 +159,7 @@ class Master {
   uint64_t endgameCopies_ = 0;
   SpotChecks checks_;
   std::vector<RejectedWorker> rejections_;
+  std::vector<WorkerIdentity> identities_;
   bool dispatching_ = false;
 };
 

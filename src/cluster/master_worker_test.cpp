@@ -427,6 +427,29 @@ TEST(MasterTest, AMessageThatCannotBeTrueLosesItsWorkerAndCrashesNothing) {
   }
 }
 
+// A worker of another build is rejected when it says so, with its speed index; the others go
+// on, and the machine it named is passed on for the blocklist.
+TEST(MasterTest, AWorkerOfAnotherVersionIsRejectedAtItsSpeedIndex) {
+  MasterOptions options;
+  options.admit = [](const WorkerIdentity& id) {
+    return id.build == "prt 1" ? std::string() : "it runs '" + id.build + "'";
+  };
+  std::vector<std::string> blocked;
+  options.rejected = [&](const RejectedWorker& r) { blocked.push_back(r.host); };
+  Master master(makeStrategy("blocks", {}), 2, 10, SceneMsg{"s", 1, 1}, nullptr, options);
+  master.start(0);
+  master.onMessage(0, SpeedIndexMsg{0.1, {"prt 1", "a"}}, 0);
+  const Outbox out = master.onMessage(1, SpeedIndexMsg{0.1, {"prt 2", "b"}}, 0);
+  EXPECT_FALSE(master.isLive(1));
+  ASSERT_EQ(master.rejections().size(), 1u);
+  EXPECT_EQ(master.rejections()[0].reason, "it runs 'prt 2'");
+  EXPECT_EQ(blocked, std::vector<std::string>{"b"});
+  bool started = false;
+  for (const Envelope& e : out) started = started || (e.to == 0 && std::holds_alternative<TasksMsg>(e.message));
+  EXPECT_TRUE(started) << "the run starts without it";
+  EXPECT_EQ(master.identity(0).host, "a");
+}
+
 // Results for pixels nobody was given yet (a process that joined only to paint the image) are
 // a lie: the sender is rejected and nothing of it stays.
 TEST(MasterTest, ResultsForPixelsNeverHandedOutRejectTheirSender) {

@@ -81,6 +81,8 @@ Bytes encode(const Message& message) {
           w.pod(static_cast<uint8_t>(m.frames.animated));
         } else if constexpr (std::is_same_v<M, SpeedIndexMsg>) {
           w.pod(m.seconds);
+          w.text(m.identity.build);
+          w.text(m.identity.host);
         } else if constexpr (std::is_same_v<M, TasksMsg>) {
           writeTasks(w, m.tasks);
         } else if constexpr (std::is_same_v<M, ResultsMsg>) {
@@ -139,9 +141,14 @@ Message decode(const uint8_t* data, size_t size) {
       m = std::move(s);
       break;
     }
-    case 1:
-      m = SpeedIndexMsg{r.pod<double>()};
+    case 1: {
+      SpeedIndexMsg s;
+      s.seconds = r.pod<double>();
+      s.identity.build = r.text();
+      s.identity.host = r.text();
+      m = std::move(s);
       break;
+    }
     case 2:
       m = TasksMsg{readTasks(r)};
       break;

@@ -2,7 +2,7 @@
 // The master-worker protocol as typed messages, with an explicit binary encoding so every
 // transport (threads, MPI) moves and counts the same bytes. The flow, as in the paper:
 //   master -> worker  SceneMsg            the scene text and render settings
-//   worker -> master  SpeedIndexMsg       the worker's Towers of Hanoi time
+//   worker -> master  SpeedIndexMsg       the worker's Towers of Hanoi time, and who it is
 //   master -> worker  TasksMsg            pixels to render (also worker -> worker, diffusion)
 //   worker -> master  ResultsMsg          a batch of rendered pixels with their positions
 //   worker -> master  RequestMsg          "request for more": the worker's queue is empty
@@ -38,8 +38,16 @@ struct SceneMsg {
   FrameSequence frames = {};  // the frames to render: task i*P + p is pixel p of the i-th frame
   bool operator==(const SceneMsg&) const = default;
 };
+// What a worker says of itself: its build (`prt --version`) and its machine's name, for the
+// master's version rule and its blocklist; empty in the simulator.
+struct WorkerIdentity {
+  std::string build;
+  std::string host;
+  bool operator==(const WorkerIdentity&) const = default;
+};
 struct SpeedIndexMsg {
   double seconds = 0;
+  WorkerIdentity identity = {};
   bool operator==(const SpeedIndexMsg&) const = default;
 };
 struct TasksMsg {

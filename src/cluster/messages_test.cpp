@@ -15,6 +15,7 @@ TEST(MessagesTest, EveryTypeRoundTrips) {
       SceneMsg{"camera { }\n", 8, 2, {}},
       SceneMsg{"camera { }\n", 8, 2, {1, 2, 3, 250}},
       SpeedIndexMsg{0.123456789},
+      SpeedIndexMsg{0.5, {"prt 0.1.0 (trace kernels: baseline)", "node-7"}},
       TasksMsg{tasks},
       ResultsMsg{TaskSet::range(3, 2), {0.1f, 0.2f, 0.3f, 1.5f, 2.5f, -0.0f}, 0.125},
       RequestMsg{},

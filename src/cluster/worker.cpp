@@ -11,10 +11,10 @@ Worker::Worker(int id, WorkerOptions options) : id_(id), options_(options) {
   PRT_CHECK(options_.batchSeconds >= 0);
 }
 
-Outbox Worker::setupDone(double speedIndexSeconds) {
+Outbox Worker::setupDone(double speedIndexSeconds, WorkerIdentity identity) {
   PRT_CHECK(needsSetup());
   setUp_ = true;
-  return {Envelope{kMaster, SpeedIndexMsg{speedIndexSeconds}}};
+  return {Envelope{kMaster, SpeedIndexMsg{speedIndexSeconds, std::move(identity)}}};
 }
 
 TaskSet Worker::nextBatch() {

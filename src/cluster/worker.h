@@ -43,7 +43,7 @@ class Worker {
   // After the scene arrives: the driver loads it, measures the speed index, then reports.
   bool needsSetup() const { return scene_.has_value() && !setUp_; }
   const SceneMsg& scene() const { return *scene_; }
-  Outbox setupDone(double speedIndexSeconds);
+  Outbox setupDone(double speedIndexSeconds, WorkerIdentity identity = {});
 
   // Rendering: take the next batch off the front of the queue, render it, hand it back. Spot
   // checks the master asked for (CheckMsg) come first, as a batch of their own, and go back

@@ -7,6 +7,7 @@
 
 #include "cluster/master.h"
 #include "core/cpu_time.h"
+#include "drive/build_info.h"
 #include "drive/frame_renderer.h"
 #include "drive/master_loop.h"
 #include "drive/parallel_run.h"
@@ -69,6 +70,17 @@ ParallelRun runMasterSide(Transport& net, const RunRequest& request, const std::
     std::vector<Color> colors;
     referee->render(checked, 1, colors);
     return asFloats(colors);
+  };
+  // The version rule (drive/build_info.h): the same PRT version, any trace kernels.
+  masterOptions.admit = [](const WorkerIdentity& id) -> std::string {
+    if (versionOf(id.build) == prtVersion()) return "";
+    std::string shown;
+    for (const char c : id.build.substr(0, 120)) shown += (c >= 32 && c < 127) ? c : '?';
+    return "it runs '" + shown + "', this render " + buildDescription() +
+           ": workers of another version may not mix pixels";
+  };
+  masterOptions.rejected = [&](const RejectedWorker& r) {
+    if (request.rejectedHost && !r.host.empty()) request.rejectedHost(r.host);
   };
   masterOptions.takenBack = [&](int, const TaskSet& t) {
     assembler.takeBack(t);
@@ -232,7 +244,8 @@ ParallelRun runMasterSide(Transport& net, const RunRequest& request, const std::
     info.faults.lostWorkers.push_back({l.worker, l.atSeconds, l.reason, l.unfinished});
   }
   for (const RejectedWorker& r : master.rejections()) {
-    info.faults.rejectedWorkers.push_back({r.worker, r.atSeconds, r.reason, r.pixelsTakenBack});
+    info.faults.rejectedWorkers.push_back(
+        {r.worker, r.atSeconds, r.reason, r.pixelsTakenBack, r.host});
   }
   info.faults.verifyPercent = master.spotChecks().enabled() ? options.verifyPercent : 0;
   info.faults.verifySeed = seed;

@@ -49,6 +49,9 @@ struct RunRequest {
   // Where the master publishes its progress while it runs (see drive/progress_board.h);
   // null: nowhere.
   ProgressBoard* progress = nullptr;
+  // Called on the master's thread with the machine of each worker rejected (its results were
+  // wrong): a driver that admits joiners refuses that machine from then on. May be null.
+  std::function<void(const std::string& host)> rejectedHost;
 };
 
 // The run could not finish (every worker lost, interrupted). The message says what survived

@@ -7,6 +7,8 @@
 #include <string>
 
 #include "cluster/worker.h"
+#include "core/machine.h"
+#include "drive/build_info.h"
 #include "drive/effect_thread.h"
 #include "drive/worker_summary.h"
 #include "metrics/events.h"
@@ -169,7 +171,7 @@ class WorkerLoop {
     if (doing_ == Doing::Setup) {
       log_.add({EventKind::Setup, id_, effectStart_, net_.now(), 0, 0, 0, ""});
       worker_.limitTasks(engine_.taskCount());
-      sendOut(worker_.setupDone(speedIndex_));
+      sendOut(worker_.setupDone(speedIndex_, {buildDescription(), hostName()}));
       doing_ = Doing::Nothing;
     } else {
       finishBatch();

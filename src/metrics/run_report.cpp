@@ -242,7 +242,8 @@ std::string RunReport::toJson() const {
     rejected.push_back({{"worker", r.worker},
                         {"at_s", r.atSeconds},
                         {"reason", r.reason},
-                        {"pixels_taken_back", r.pixelsTakenBack}});
+                        {"pixels_taken_back", r.pixelsTakenBack},
+                        {"host", r.host}});
   }
   j["rejected_workers"] = rejected;
   json refused = json::array();

@@ -69,6 +69,7 @@ struct RejectedWorkerInfo {
   double atSeconds = 0;  // on the master's clock
   std::string reason;
   uint64_t pixelsTakenBack = 0;
+  std::string host;  // the machine it said it runs on (empty: unknown)
 };
 
 // How the run dealt with faults; all zero in a run without any.

@@ -8,12 +8,10 @@
 #include <cstring>
 #include <stdexcept>
 
-#include "trace/isa_level.h"
+#include "drive/build_info.h"
 
 namespace prt {
 namespace {
-
-constexpr const char* kVersion = "0.1.0";
 
 template <size_t N>
 std::array<uint8_t, N> randomBytes() {
@@ -24,12 +22,15 @@ std::array<uint8_t, N> randomBytes() {
   return out;
 }
 
+// The message signed: the challenge, then the build and the host with a zero byte between.
 std::array<uint8_t, 32> hmac(const Secret& secret, const Challenge& challenge,
-                             const std::string& build) {
+                             const std::string& identity) {
   // Sized first and copied into (GCC 12 misreads an insert after an array here).
-  std::vector<uint8_t> message(challenge.size() + build.size());
+  std::vector<uint8_t> message(challenge.size() + identity.size());
   std::memcpy(message.data(), challenge.data(), challenge.size());
-  if (!build.empty()) std::memcpy(message.data() + challenge.size(), build.data(), build.size());
+  if (!identity.empty()) {
+    std::memcpy(message.data() + challenge.size(), identity.data(), identity.size());
+  }
   std::array<uint8_t, 32> out{};
   unsigned int length = 0;
   if (HMAC(EVP_sha256(), secret.data(), static_cast<int>(secret.size()), message.data(),
@@ -40,12 +41,6 @@ std::array<uint8_t, 32> hmac(const Secret& secret, const Challenge& challenge,
   return out;
 }
 
-// "prt 0.1.0 (trace kernels: x86-64-v3)" -> "0.1.0".
-std::string versionOf(const std::string& build) {
-  if (build.rfind("prt ", 0) != 0) return "";
-  const size_t end = build.find(' ', 4);
-  return build.substr(4, end == std::string::npos ? std::string::npos : end - 4);
-}
 
 }  // namespace
 
@@ -98,30 +93,30 @@ PortFile parsePortFile(const std::string& text) {
   return out;
 }
 
-std::string prtVersion() { return kVersion; }
-
-std::string buildDescription() {
-  return std::string("prt ") + kVersion + " (trace kernels: " + traceIsaLevel() + ")";
-}
-
 std::vector<uint8_t> proofFor(const Secret& secret, const Challenge& challenge,
-                              const std::string& build) {
-  const std::array<uint8_t, 32> mac = hmac(secret, challenge, build);
-  std::vector<uint8_t> out(mac.size() + build.size());
+                              const std::string& build, const std::string& host) {
+  std::string identity = build;
+  identity += '\0';
+  identity += host;
+  const std::array<uint8_t, 32> mac = hmac(secret, challenge, identity);
+  std::vector<uint8_t> out(mac.size() + identity.size());
   std::memcpy(out.data(), mac.data(), mac.size());
-  if (!build.empty()) std::memcpy(out.data() + mac.size(), build.data(), build.size());
+  std::memcpy(out.data() + mac.size(), identity.data(), identity.size());
   return out;
 }
 
 std::string checkProof(const Secret& secret, const Challenge& challenge,
-                       const std::vector<uint8_t>& proof) {
-  if (proof.size() < 32 || proof.size() > 32 + 256) return "it did not prove it was invited";
-  const std::string build(proof.begin() + 32, proof.end());
-  const std::array<uint8_t, 32> mac = hmac(secret, challenge, build);
+                       const std::vector<uint8_t>& proof, std::string* host) {
+  if (proof.size() < 32 || proof.size() > 32 + 512) return "it did not prove it was invited";
+  const std::string identity(proof.begin() + 32, proof.end());
+  const std::array<uint8_t, 32> mac = hmac(secret, challenge, identity);
   if (CRYPTO_memcmp(mac.data(), proof.data(), mac.size()) != 0) {
     return "it did not prove it was invited (no secret, or not this render's)";
   }
-  if (versionOf(build) != kVersion) {
+  const size_t zero = identity.find('\0');
+  const std::string build = identity.substr(0, zero);
+  if (host) *host = zero == std::string::npos ? "" : identity.substr(zero + 1);
+  if (versionOf(build) != prtVersion()) {
     std::string shown;
     for (const char c : build) shown += (c >= 32 && c < 127) ? c : '?';
     return "it runs '" + shown + "', this render " + buildDescription() +

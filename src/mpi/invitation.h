@@ -5,9 +5,7 @@
 // with HMAC-SHA256(secret, challenge || its version) and its version. A wrong proof, no proof
 // or another PRT version is refused before the joiner gets the scene.
 //
-// The version rule: the PRT version must be the same (`prt --version` up to the trace
-// kernels' build); the trace kernels' ISA level may differ, since every build renders the
-// same bits (tested; spot checks watch it at run time).
+// The version rule is drive/build_info.h's.
 // No MPI here: the bytes only. OpenSSL's HMAC and random generator, constant-time compare.
 
 #include <array>
@@ -34,16 +32,14 @@ struct PortFile {
 };
 PortFile parsePortFile(const std::string& text);
 
-// This build's version ("0.1.0"), and what a joiner reports: the version and its kernels.
-std::string prtVersion();
-std::string buildDescription();  // "prt 0.1.0 (trace kernels: x86-64-v3)"
-
-// A joiner's answer: 32 bytes of HMAC, then its build description.
+// A joiner's answer: 32 bytes of HMAC of (challenge, build, host), then its build
+// description (drive/build_info.h), a zero byte and its machine's name.
 std::vector<uint8_t> proofFor(const Secret& secret, const Challenge& challenge,
-                              const std::string& build);
+                              const std::string& build, const std::string& host);
 // Empty when `proof` answers `challenge` for `secret` from a compatible build; otherwise why
-// not, for the refusal ("it did not prove it was invited", "it runs prt 0.2.0 ...").
+// not, for the refusal ("it did not prove it was invited", "it runs prt 0.2.0 ..."). `host`
+// receives the machine's name the proof gives (for the blocklist).
 std::string checkProof(const Secret& secret, const Challenge& challenge,
-                       const std::vector<uint8_t>& proof);
+                       const std::vector<uint8_t>& proof, std::string* host = nullptr);
 
 }  // namespace prt

@@ -1,5 +1,7 @@
 #include "mpi/invitation.h"
 
+#include "drive/build_info.h"
+
 #include <gtest/gtest.h>
 
 namespace prt {
@@ -10,20 +12,22 @@ TEST(InvitationTest, TheRightSecretAndVersionAreAdmittedAndNothingElse) {
   EXPECT_NE(secret, newSecret()) << "secrets are random";
   const Challenge challenge = newChallenge();
   const std::string build = buildDescription();
-  EXPECT_EQ(checkProof(secret, challenge, proofFor(secret, challenge, build)), "");
+  std::string host;
+  EXPECT_EQ(checkProof(secret, challenge, proofFor(secret, challenge, build, "host-a"), &host), "");
+  EXPECT_EQ(host, "host-a");
   // Another secret, another challenge (a replayed proof), no proof, a tampered version.
-  EXPECT_NE(checkProof(secret, challenge, proofFor(newSecret(), challenge, build)), "");
-  EXPECT_NE(checkProof(secret, newChallenge(), proofFor(secret, challenge, build)), "");
+  EXPECT_NE(checkProof(secret, challenge, proofFor(newSecret(), challenge, build, "host-a")), "");
+  EXPECT_NE(checkProof(secret, newChallenge(), proofFor(secret, challenge, build, "host-a")), "");
   EXPECT_NE(checkProof(secret, challenge, {}), "");
-  std::vector<uint8_t> tampered = proofFor(secret, challenge, build);
+  std::vector<uint8_t> tampered = proofFor(secret, challenge, build, "host-a");
   tampered.back() ^= 1;
   EXPECT_NE(checkProof(secret, challenge, tampered), "");
   // Another version, with the right secret: refused, and said so.
-  const std::string why = checkProof(secret, challenge, proofFor(secret, challenge, "prt 9.9.9 (trace kernels: baseline)"));
+  const std::string why = checkProof(secret, challenge, proofFor(secret, challenge, "prt 9.9.9 (trace kernels: baseline)", "host-a"));
   EXPECT_NE(why.find("prt 9.9.9"), std::string::npos) << why;
   // The same version on other trace kernels: admitted (every build renders the same bits).
   EXPECT_EQ(checkProof(secret, challenge,
-                       proofFor(secret, challenge, "prt " + prtVersion() + " (trace kernels: baseline)")),
+                       proofFor(secret, challenge, "prt " + prtVersion() + " (trace kernels: baseline)", "host-a")),
             "");
 }
 

@@ -148,8 +148,14 @@ std::string MpiAcceptor::admit(const State& state, MPI_Comm inter) {
         if (count < 0 || count > 4096) return "its proof was not one";
         std::vector<uint8_t> proof(static_cast<size_t>(count));
         MPI_Recv(proof.data(), count, MPI_BYTE, k, kProofTag, inter, MPI_STATUS_IGNORE);
-        const std::string why = checkProof(state.secret, challenges[static_cast<size_t>(k)], proof);
+        std::string host;
+        const std::string why =
+            checkProof(state.secret, challenges[static_cast<size_t>(k)], proof, &host);
         if (!why.empty()) return why;
+        std::lock_guard<std::mutex> lock(state.mutex);
+        if (state.blocked.count(host)) {
+          return "its machine '" + host + "' had a worker rejected earlier in this run";
+        }
         break;
       }
       if (std::chrono::steady_clock::now() > until) {
@@ -160,6 +166,11 @@ std::string MpiAcceptor::admit(const State& state, MPI_Comm inter) {
     }
   }
   return "";
+}
+
+void MpiAcceptor::block(const std::string& host) {
+  std::lock_guard<std::mutex> lock(state_->mutex);
+  state_->blocked.insert(host);
 }
 
 std::vector<std::string> MpiAcceptor::refused() const {

@@ -31,6 +31,7 @@
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <set>
 #include <string>
 #include <thread>
 #include <vector>
@@ -53,6 +54,8 @@ class MpiAcceptor {
   const std::string& portName() const { return state_->port; }
   // Why each joining job refused so far was turned away.
   std::vector<std::string> refused() const;
+  // Refuses joiners from `host` from now on (a machine whose worker was rejected).
+  void block(const std::string& host);
   // The next accepted intercommunicator, if one is waiting.
   std::optional<MPI_Comm> take();
   // Stops accepting in two steps: beginStop() removes the port file and makes the next
@@ -70,6 +73,7 @@ class MpiAcceptor {
     mutable std::mutex mutex;
     std::deque<MPI_Comm> accepted;
     std::vector<std::string> refused;
+    std::set<std::string> blocked;  // machines refused
     std::atomic<bool> stopping{false};
     std::atomic<bool> finished{false};
   };

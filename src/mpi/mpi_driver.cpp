@@ -23,6 +23,8 @@
 #include "core/input_error.h"
 #include "core/input_file.h"
 #include "core/byte_codec.h"
+#include "core/machine.h"
+#include "drive/build_info.h"
 #include "mpi/invitation.h"
 #include "mpi/mpi_acceptor.h"
 #include "mpi/mpi_comm.h"
@@ -170,7 +172,13 @@ ParallelRun renderMpiMaster(MpiSession& session, const RunRequest& request) {
     comm.link->setAcceptSource([acceptor] { return acceptor->take(); }, encodeWelcome(options));
   }
   comm.runStarted = true;
-  ParallelRun run = runMasterSide(*comm.link, request, "mpi");
+  RunRequest withBlocklist = request;
+  if (comm.acceptor) {
+    // A machine whose worker was rejected may not join again in this run.
+    MpiAcceptor* acceptor = comm.acceptor.get();
+    withBlocklist.rejectedHost = [acceptor](const std::string& host) { acceptor->block(host); };
+  }
+  ParallelRun run = runMasterSide(*comm.link, withBlocklist, "mpi");
   if (comm.acceptor) run.report.info.faults.refusedJoiners = comm.acceptor->refused();
   comm.link->flush(options.workerTimeoutSeconds);
   return run;
@@ -355,7 +363,7 @@ bool proveInvitation(MPI_Comm inter, const std::optional<Secret>& secret, double
   Challenge challenge{};
   check(MPI_Recv(challenge.data(), 32, MPI_BYTE, 0, kChallengeTag, inter, MPI_STATUS_IGNORE),
         "MPI_Recv", 0);
-  const std::vector<uint8_t> proof = proofFor(secret.value_or(Secret{}), challenge, buildDescription());
+  const std::vector<uint8_t> proof = proofFor(secret.value_or(Secret{}), challenge, buildDescription(), hostName());
   check(MPI_Send(proof.data(), static_cast<int>(proof.size()), MPI_BYTE, 0, kProofTag, inter),
         "MPI_Send", 0);
   return true;

@@ -21,6 +21,8 @@
 #   stale     prt join against the port file of a render that has ended: a clear error within
 #             its --connect-timeout, never a hang
 #   missing   prt join of a file that does not exist: exit 2 and a message naming it
+#   blocked   a starting worker returns wrong pixels and is rejected: a later prt join from
+#             its machine (this one) is refused, the render ends with the serial image
 #   uninvited prt join with the port but not the secret (an older port file, a copy of its
 #             first line), and with a wrong secret: each refused before it gets the scene
 #             (exit 1, the reason said), the render undisturbed; then an invited join finishes
@@ -222,6 +224,35 @@ PY
     [ "$status" -ne 0 ] && [ "$status" -ne 124 ] || fail "prt join of a stale port exited with $status"
     [ "$elapsed" -lt 30 ] || fail "prt join took $elapsed s to give up"
     grep -q "could not reach the render's master" join.err || fail "no clear message"
+    ;;
+  blocked)
+    # shellcheck disable=SC2086
+    "$prt" render "$scene" $size -q -o serial.pfm
+    # shellcheck disable=SC2086
+    timeout -k 5 120 "$mpiexec" $mca $uri -np 3 "$prt" render "$scene" $size -q \
+      --speed-index slowdown --slowdown 1,200 --batch 8 --verify 10 --inject-fault 0:0:corrupt \
+      -o mpi.pfm --accept-workers "$work/port" --report report.json >master.out 2>master.err &
+    master=$!
+    for i in $(seq 1 200); do [ -s port ] && break; sleep 0.05; done
+    [ -s port ] || fail "the master wrote no port file"
+    sleep 1  # worker 0 is caught at its first checked batch
+    set +e
+    # shellcheck disable=SC2086
+    timeout -k 5 60 "$mpiexec" $mca $uri -np 1 "$prt" join "$work/port" >join.out 2>join.err
+    status=$?
+    set -e
+    [ "$status" -ne 0 ] && [ "$status" -ne 124 ] || fail "prt join exited with $status"
+    grep -q "had a worker rejected earlier in this run" join.err || fail "not refused as blocked"
+    wait_for "$master" 100
+    [ "$status" -eq 0 ] || fail "the render exited with $status"
+    cmp serial.pfm mpi.pfm || fail "the image differs from the serial one"
+    python3 - <<'PY'
+import json
+r = json.load(open("report.json"))
+assert [x["worker"] for x in r["rejected_workers"]] == [0], r["rejected_workers"]
+assert r["rejected_workers"][0]["host"], r["rejected_workers"]
+assert len(r["refused_joiners"]) == 1 and "rejected earlier" in r["refused_joiners"][0]["reason"]
+PY
     ;;
   uninvited)
     # shellcheck disable=SC2086
