@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets (CMake preset `fuzz`, in build-fuzz/) and runs each for SECONDS
 # (default 60): the scene parser, seeded with the example scenes and the malformed corpus, the
-# message decoder, seeded with one message of each kind, the glTF reader, seeded with the .glb
+# message decoder, seeded with one message of each kind, the master's and a worker's state
+# machines on hostile traffic (tests/fuzz/protocol_fuzz.cpp), the glTF reader, seeded with the .glb
 # and .gltf files of tests/models and scenes/models, and the asset pack's decoder, seeded with
 # the packs of scenes/chess.scene and scenes/street.scene. Fails (non-zero exit) on any crash,
 # sanitizer report, leak or input slower than 10 s; the input that failed is left in
@@ -18,7 +19,8 @@ cmake --preset fuzz >/dev/null
 cmake --build --preset fuzz -- -j"$(nproc)" >/dev/null
 
 corpus=build-fuzz/corpus
-mkdir -p "$corpus/scene" "$corpus/message" "$corpus/model" "$corpus/pack" "$corpus/checkpoint"
+mkdir -p "$corpus/scene" "$corpus/message" "$corpus/protocol" "$corpus/model" "$corpus/pack" \
+  "$corpus/checkpoint"
 cp scenes/*.scene tests/malformed/*.scene "$corpus/scene/"
 build-fuzz/fuzz/prt_fuzz_message_seeds "$corpus/message" scenes/fig08-basic-features.scene
 cp tests/models/*.glb tests/models/*.gltf scenes/models/*.glb scenes/models/*.gltf \
@@ -44,6 +46,7 @@ run() {
 status=0
 run prt_fuzz_scene_parser "$corpus/scene" || status=1
 run prt_fuzz_message_decoder "$corpus/message" || status=1
+run prt_fuzz_protocol "$corpus/protocol" || status=1
 run prt_fuzz_model_reader "$corpus/model" 131072 || status=1
 run prt_fuzz_asset_pack "$corpus/pack" 1048576 || status=1
 run prt_fuzz_checkpoint "$corpus/checkpoint" || status=1
