@@ -169,12 +169,17 @@ TaskSet Ledger::takeBack(int worker) {
   return back;
 }
 
-TaskSet Ledger::doneSet() const {
+TaskSet Ledger::doneSet(const std::vector<uint64_t>& except) const {
   TaskSet out;
+  size_t skip = 0;  // the next of `except` not passed yet
+  const auto excluded = [&](uint64_t t) {
+    while (skip < except.size() && except[skip] < t) ++skip;
+    return skip < except.size() && except[skip] == t;
+  };
   for (uint64_t t = 0; t < taskCount(); ++t) {
-    if (owner_[t] == kNotDone) continue;
+    if (owner_[t] == kNotDone || excluded(t)) continue;
     uint64_t end = t;
-    while (end < taskCount() && owner_[end] != kNotDone) ++end;
+    while (end < taskCount() && owner_[end] != kNotDone && !excluded(end)) ++end;
     out.append(TaskRun{t, end - t, 1});
     t = end;
   }

@@ -96,7 +96,9 @@ class Ledger {
   uint64_t acceptedFrom(int worker) const { return workers_[index(worker)].accepted; }
   uint64_t doneCount() const { return doneCount_; }
   bool complete() const { return doneCount_ == taskCount(); }
-  TaskSet doneSet() const;  // every task done, ascending
+  // Every task done, ascending, but those of `except` (ascending: tasks not to count as done,
+  // such as pixels whose spot checks are still open).
+  TaskSet doneSet(const std::vector<uint64_t>& except = {}) const;
   uint64_t duplicates() const { return duplicates_; }  // result copies dropped
 
  private:

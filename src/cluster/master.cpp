@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <optional>
 
 #include "core/check.h"
 
@@ -270,10 +271,8 @@ bool Master::plausible(const Message& message) const {
     for (const float c : r->rgb) {
       if (!std::isfinite(c)) return false;  // no render of PRT's gives such a colour
     }
-    // Without a sink (the simulator) results carry no colours; otherwise they must. Pixels
-    // nobody was given yet cannot have been rendered for this run.
-    return r->tasks.allBelow(taskCount()) && (coloured || (!sink_ && r->rgb.empty())) &&
-           ledger_.allHandedOut(r->tasks);
+    // Without a sink (the simulator) results carry no colours; otherwise they must.
+    return r->tasks.allBelow(taskCount()) && (coloured || (!sink_ && r->rgb.empty()));
   }
   if (const auto* n = std::get_if<TransferNoticeMsg>(&message)) {
     return n->to >= 0 && n->to < workerCount() && n->tasks.allBelow(taskCount());
@@ -290,6 +289,23 @@ bool Master::plausible(const Message& message) const {
   return true;
 }
 
+ResultsMsg Master::onlyHandedOut(const ResultsMsg& r) const {
+  ResultsMsg out;
+  out.computeSeconds = r.computeSeconds;
+  size_t i = 0;
+  r.tasks.forEach([&](uint64_t t) {
+    if (ledger_.allHandedOut(TaskSet::range(t, 1))) {
+      out.tasks.append(TaskRun{t, 1, 1});
+      if (!r.rgb.empty()) {
+        const auto at = r.rgb.begin() + static_cast<std::ptrdiff_t>(3 * i);
+        out.rgb.insert(out.rgb.end(), at, at + 3);
+      }
+    }
+    ++i;
+  });
+  return out;
+}
+
 Outbox Master::onMessage(int from, const Message& message, double now) {
   Outbox out;
   PRT_CHECK(from >= 0 && from < workerCount());
@@ -302,7 +318,13 @@ Outbox Master::onMessage(int from, const Message& message, double now) {
     finishIfComplete(out);
     return out;
   }
-  if (const auto* r = std::get_if<ResultsMsg>(&message)) {
+  if (const auto* given = std::get_if<ResultsMsg>(&message)) {
+    // Pixels nobody was handed yet cannot be this run's: dropped. Not the sender's fault
+    // necessarily (another process may have sent it those tasks as a peer's transfer), so it
+    // is not rejected; what it rendered of its own counts.
+    std::optional<ResultsMsg> filtered;
+    if (!ledger_.allHandedOut(given->tasks)) filtered = onlyHandedOut(*given);
+    const ResultsMsg* r = filtered ? &*filtered : given;
     // Results count from anyone, lost or not: the first copy of a pixel wins.
     const TaskSet fresh = ledger_.accept(from, r->tasks);
     // Adaptive strategies learn the worker's rate from every batch it rendered, copies
@@ -340,9 +362,15 @@ Outbox Master::onMessage(int from, const Message& message, double now) {
   }
   if (!isLive(from)) return out;  // a worker presumed lost: nothing else from it counts
   if (const auto* s = std::get_if<SpeedIndexMsg>(&message)) {
-    identities_[w] = s->identity;
+    // Text from the network, bound for reports and terminals: printable ASCII, bounded.
+    const auto clean = [](const std::string& text) {
+      std::string shown;
+      for (const char c : text.substr(0, 120)) shown += (c >= 32 && c < 127) ? c : '?';
+      return shown;
+    };
+    identities_[w] = {clean(s->identity.build), clean(s->identity.host)};
     if (options_.admit) {
-      if (const std::string why = options_.admit(s->identity); !why.empty()) {
+      if (const std::string why = options_.admit(identities_[w]); !why.empty()) {
         reject(from, now, why, out);
         finishIfComplete(out);
         return out;
@@ -403,12 +431,12 @@ void Master::dispatchChecks(int heardFrom, double now, Outbox& out) {
     const std::vector<int> waiting = checks_.checkersWaiting();
     for (const int c : waiting) {
       if (c == SpotChecks::kReferee) {
-        const TaskSet pixels = checks_.take(c);
+        const TaskSet pixels = checks_.take(c, now);
         if (pixels.empty()) continue;
         settle(checks_.results(c, pixels, options_.referee(pixels)), now, out);
         again = true;
       } else if (c == heardFrom || ledger_.complete() || !ledger_.holdsWork(c)) {
-        TaskSet pixels = checks_.take(c);
+        TaskSet pixels = checks_.take(c, now);
         if (!pixels.empty()) out.push_back({c, CheckMsg{std::move(pixels)}});
       }
     }
@@ -512,6 +540,8 @@ Outbox Master::onWorkerLost(int worker, double now, const std::string& reason) {
 Outbox Master::expireLeases(double now, double leaseSeconds) {
   Outbox out;
   if (stopped_) return out;
+  // A check unanswered for a lease (its checker there, but silent on it) is the master's.
+  if (checks_.expire(now, leaseSeconds) > 0) dispatchChecks(-1, now, out);
   for (int w : ledger_.expired(now, leaseSeconds)) {
     char reason[64];
     std::snprintf(reason, sizeof reason, "silent for %.1f s", ledger_.silentSeconds(w, now));

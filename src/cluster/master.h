@@ -107,6 +107,8 @@ class Master {
   uint64_t doneCount() const { return ledger_.doneCount(); }
   uint64_t resumedCount() const { return resumed_; }
   const Ledger& ledger() const { return ledger_; }
+  // The pixels a checkpoint may keep: every one done whose spot check is not still open.
+  TaskSet checkedDoneSet() const { return ledger_.doneSet(checks_.openPixels()); }
   const std::vector<double>& speedIndices() const { return speedIndices_; }
   const Strategy& strategy() const { return *strategy_; }
   uint64_t endgameCopies() const { return endgameCopies_; }  // tasks sent as duplicates
@@ -126,6 +128,7 @@ class Master {
   void endgameCopy(int worker, Outbox& out);
   void introduceJoiners(Outbox& out);
   bool plausible(const Message& message) const;
+  ResultsMsg onlyHandedOut(const ResultsMsg& results) const;
   double slowestSpeedIndex() const;
   void check(int author, const TaskSet& fresh, const std::vector<float>& rgb);
   void dispatchChecks(int heardFrom, double now, Outbox& out);

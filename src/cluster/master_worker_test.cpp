@@ -450,9 +450,10 @@ TEST(MasterTest, AWorkerOfAnotherVersionIsRejectedAtItsSpeedIndex) {
   EXPECT_EQ(master.identity(0).host, "a");
 }
 
-// Results for pixels nobody was given yet (a process that joined only to paint the image) are
-// a lie: the sender is rejected and nothing of it stays.
-TEST(MasterTest, ResultsForPixelsNeverHandedOutRejectTheirSender) {
+// Results for pixels nobody was given yet (a process that joined only to paint the image, or a
+// correct worker another process sent those tasks to) are dropped; the rest of the batch, and
+// the sender, count.
+TEST(MasterTest, ResultsForPixelsNeverHandedOutAreDropped) {
   StrategyOptions options;
   options.chunk = 10;
   Master master(makeStrategy("self", options), 2, 1000, SceneMsg{"s", 1, 1},
@@ -462,10 +463,17 @@ TEST(MasterTest, ResultsForPixelsNeverHandedOutRejectTheirSender) {
   master.onMessage(1, SpeedIndexMsg{0.1}, 0);  // 10 pixels each, the rest in the pool
   ASSERT_FALSE(master.ledger().allHandedOut(TaskSet::range(900, 1)));
   master.onMessage(1, ResultsMsg{TaskSet::range(900, 100), std::vector<float>(300, 1.f)}, 1);
-  EXPECT_FALSE(master.isLive(1));
-  ASSERT_EQ(master.rejections().size(), 1u);
   EXPECT_EQ(master.ledger().doneCount(), 0u);
-  EXPECT_TRUE(master.isLive(0));
+  EXPECT_TRUE(master.isLive(1));
+  EXPECT_TRUE(master.rejections().empty());
+  // Its own pixels with others: the own ones count.
+  const TaskSet own = master.ledger().unfinished(1);
+  ASSERT_FALSE(own.empty());
+  TaskSet mixed = own;
+  mixed.append(TaskSet::range(950, 3));
+  master.onMessage(1, ResultsMsg{mixed, std::vector<float>(3 * mixed.size(), 1.f)}, 2);
+  EXPECT_EQ(master.ledger().doneCount(), own.size());
+  EXPECT_FALSE(master.ledger().holdsWork(1));
 }
 
 // A joiner still measuring its speed index is unknown to the strategy: a diffusion round does

@@ -112,7 +112,7 @@ uint64_t SpotChecks::sample(int author, const TaskSet& tasks, const std::vector<
   return chosen;
 }
 
-TaskSet SpotChecks::take(int checker) {
+TaskSet SpotChecks::take(int checker, double now) {
   std::vector<uint64_t>& list = waitingFor(checker);
   std::sort(list.begin(), list.end());
   TaskSet out;
@@ -121,6 +121,7 @@ TaskSet SpotChecks::take(int checker) {
     // Only what is still open and still this checker's (workerGone may have moved it).
     if (it == open_.end() || it->second.checker != checker || it->second.sent) continue;
     it->second.sent = true;
+    it->second.sentAt = now;
     out.append(TaskRun{pixel, 1, 1});
   }
   list.clear();
@@ -151,6 +152,29 @@ std::vector<Disagreement> SpotChecks::results(int checker, const TaskSet& tasks,
     out.push_back(d);
   });
   return out;
+}
+
+std::vector<uint64_t> SpotChecks::openPixels() const {
+  std::vector<uint64_t> out;
+  out.reserve(open_.size());
+  for (const auto& entry : open_) out.push_back(entry.first);
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+uint64_t SpotChecks::expire(double now, double seconds) {
+  std::vector<uint64_t> overdue;
+  for (const auto& [pixel, o] : open_) {
+    if (o.sent && o.checker != kReferee && now - o.sentAt > seconds) overdue.push_back(pixel);
+  }
+  std::sort(overdue.begin(), overdue.end());
+  for (const uint64_t pixel : overdue) {
+    Open& o = open_[pixel];
+    o.checker = kReferee;
+    o.sent = false;
+    queueFor(kReferee, pixel);
+  }
+  return overdue.size();
 }
 
 void SpotChecks::workerGone(int worker, bool rejected) {

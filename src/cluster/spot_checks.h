@@ -62,8 +62,11 @@ class SpotChecks {
   uint64_t sample(int author, const TaskSet& tasks, const std::vector<float>& rgb);
   // Workers with checks waiting to be sent (kReferee included), in the order they got them.
   const std::vector<int>& checkersWaiting() const { return checkersWaiting_; }
-  // The checks waiting for `checker`, now sent.
-  TaskSet take(int checker);
+  // The checks waiting for `checker`, now sent (at `now`, on the master's clock).
+  TaskSet take(int checker, double now = 0);
+  // Checks sent more than `seconds` before `now` and not answered go to the referee: a checker
+  // that is there but never answers cannot hold the run up. Returns how many.
+  uint64_t expire(double now, double seconds);
 
   // Renders of checked pixels by `checker`: a match is a pass for the pixel's author; a
   // mismatch is returned for the master to settle. Pixels not asked of `checker` (a check
@@ -76,6 +79,7 @@ class SpotChecks {
   void workerGone(int worker, bool rejected);
 
   bool idle() const { return open_.empty(); }  // no check open
+  std::vector<uint64_t> openPixels() const;      // the pixels of open checks, ascending
   uint64_t openChecks() const { return open_.size(); }
   uint64_t verifiedPixels() const { return verified_; }  // checks that matched
   uint64_t refereeChecks() const { return byReferee_; }  // of all checks, those the master rendered
@@ -88,6 +92,7 @@ class SpotChecks {
     int author = 0;
     int checker = 0;
     bool sent = false;
+    double sentAt = 0;
     Rgb rgb{};  // what the author delivered
   };
   int chooseChecker(int author);

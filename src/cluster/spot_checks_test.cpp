@@ -130,6 +130,25 @@ TEST(SpotChecksTest, AGoneCheckersChecksMoveAndARejectedAuthorsAreDropped) {
   EXPECT_TRUE(checks.idle()) << checks.openChecks() << " open after " << left;
 }
 
+TEST(SpotChecksTest, AnUnansweredCheckGoesToTheRefereeAfterItsTime) {
+  SpotChecks checks({100, 1}, 2);
+  checks.setEligible(0, true);
+  checks.setEligible(1, true);
+  const TaskSet batch = TaskSet::range(0, 2);
+  checks.sample(0, batch, colours(batch));
+  const TaskSet sent = checks.take(1, 10.0);
+  EXPECT_EQ(checks.expire(14.0, 5.0), 0u) << "not overdue yet";
+  EXPECT_EQ(checks.expire(15.5, 5.0), 2u);
+  ASSERT_EQ(checks.checkersWaiting(), std::vector<int>{SpotChecks::kReferee});
+  EXPECT_TRUE(checks.results(1, sent, colours(sent)).empty()) << "a late answer is ignored";
+  EXPECT_EQ(checks.verifiedPixels(), 0u);
+  const TaskSet mine = checks.take(SpotChecks::kReferee, 16.0);
+  EXPECT_EQ(mine, sent);
+  checks.results(SpotChecks::kReferee, mine, colours(mine));
+  EXPECT_TRUE(checks.idle());
+  EXPECT_EQ(checks.expire(100, 5.0), 0u) << "the referee's own are never overdue";
+}
+
 TEST(SpotChecksTest, OffChecksNothing) {
   SpotChecks checks({0, 1}, 2);
   EXPECT_FALSE(checks.enabled());

@@ -1,12 +1,18 @@
 // The two sides of a parallel render over any transport: what the local driver runs on its
 // threads and the MPI driver on its ranks (see parallel_run.h).
 
+#include <chrono>
+#include <condition_variable>
 #include <cstdio>
+#include <exception>
+#include <mutex>
+#include <thread>
 #include <memory>
 #include <random>
 
 #include "cluster/master.h"
 #include "core/cpu_time.h"
+#include "core/thread_start.h"
 #include "drive/build_info.h"
 #include "drive/frame_renderer.h"
 #include "drive/master_loop.h"
@@ -49,13 +55,21 @@ ParallelRun runMasterSide(Transport& net, const RunRequest& request, const std::
   // run's length.
   ProgressBoard ownBoard;
   std::optional<RunProgress> progress;
+  // The master's own renderer: for the progress probe, and the spot checks' referee. Built
+  // before the leases start when it is needed at once (a probe; a single worker, whose checks
+  // the master renders), else when a check first needs it.
+  std::unique_ptr<FrameRenderer> own;
+  const auto ownRenderer = [&]() -> FrameRenderer& {
+    if (!own) own = std::make_unique<FrameRenderer>(scene, request.settings, frames);
+    return *own;
+  };
   if (request.progress || options.checkpointAutomatic) {
     progress.emplace(request.progress ? *request.progress : ownBoard, scene.image.width,
                      scene.image.height, frames.count());
     // The cost of each part of the image, from a few pixels of frame 0 rendered here.
-    FrameRenderer probe(scene, request.settings, frames);
-    progress->probeCosts(probe.frame(0));
+    progress->probeCosts(ownRenderer().frame(0));
   }
+  if (options.verifyPercent > 0 && n == 1) ownRenderer().frame(0);
   MasterOptions masterOptions;
   masterOptions.endgame = options.endgame;
   // Spot checks: the referee is the master's own render, built when first needed (a
@@ -64,11 +78,41 @@ ParallelRun runMasterSide(Transport& net, const RunRequest& request, const std::
   uint64_t seed = options.verifySeed;
   while (seed == 0) seed = (uint64_t{std::random_device{}()} << 32) ^ std::random_device{}();
   masterOptions.checks = {options.verifyPercent, seed};
-  std::unique_ptr<FrameRenderer> referee;
+  // It renders on a thread of its own while this one heartbeats the workers, so that a long
+  // check (a few costly pixels can take seconds) does not make them think the master gone;
+  // the loop drains their messages before it looks at their leases.
+  const double beat = heartbeatSecondsFor(options.workerTimeoutSeconds);
+  std::function<int()> workerCount;  // set once the master exists
   masterOptions.referee = [&](const TaskSet& checked) {
-    if (!referee) referee = std::make_unique<FrameRenderer>(scene, request.settings, frames);
+    FrameRenderer& renderer = ownRenderer();
     std::vector<Color> colors;
-    referee->render(checked, 1, colors);
+    std::exception_ptr error;
+    std::mutex mutex;
+    std::condition_variable finished;
+    bool done = false;
+    std::thread render = startThread([&] {
+      try {
+        renderer.render(checked, 1, colors);
+      } catch (...) {
+        error = std::current_exception();
+      }
+      std::lock_guard<std::mutex> lock(mutex);
+      done = true;
+      finished.notify_one();
+    });
+    {
+      std::unique_lock<std::mutex> lock(mutex);
+      while (!finished.wait_for(lock, std::chrono::duration<double>(beat), [&] { return done; })) {
+        lock.unlock();
+        const Bytes heartbeat = encode(HeartbeatMsg{});
+        for (int w = 0; workerCount && w < workerCount(); ++w) {
+          net.send(w, Channel::Protocol, heartbeat);
+        }
+        lock.lock();
+      }
+    }
+    render.join();
+    if (error) std::rethrow_exception(error);
     return asFloats(colors);
   };
   // The version rule (drive/build_info.h): the same PRT version, any trace kernels.
@@ -115,6 +159,7 @@ ParallelRun runMasterSide(Transport& net, const RunRequest& request, const std::
                                                : std::function<void(uint64_t)>());
                 },
                 std::move(masterOptions));
+  workerCount = [&] { return master.workerCount(); };
 
   MasterLoopOptions loop;
   loop.leaseSeconds = options.workerTimeoutSeconds;
@@ -156,7 +201,7 @@ ParallelRun runMasterSide(Transport& net, const RunRequest& request, const std::
     if (!armed && (periodic || master.doneCount() == master.resumedCount())) return;
     armed = true;
     try {
-      writeCheckpoint(options.checkpointPath, key, master.ledger().doneSet(), assembler.image(),
+      writeCheckpoint(options.checkpointPath, key, master.checkedDoneSet(), assembler.image(),
                       assembler.owner());
     } catch (const std::exception& e) {
       // The render goes on: a checkpoint that cannot be written loses nothing yet.
@@ -171,7 +216,7 @@ ParallelRun runMasterSide(Transport& net, const RunRequest& request, const std::
     loop.checkpoint = saveCheckpoint;
   } else if (!options.checkpointPath.empty()) {
     // Written before any rendering: a path that cannot take it fails now, not hours later.
-    writeCheckpoint(options.checkpointPath, key, master.ledger().doneSet(), assembler.image(),
+    writeCheckpoint(options.checkpointPath, key, master.checkedDoneSet(), assembler.image(),
                     assembler.owner());
     loop.checkpoint = saveCheckpoint;
   }

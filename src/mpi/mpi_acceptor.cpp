@@ -98,12 +98,9 @@ void MpiAcceptor::acceptLoop(const std::shared_ptr<State>& state) {
       std::fprintf(stderr, "prt: a joiner was refused: %s\n", refusal.c_str());
       int remote = 0;
       MPI_Comm_remote_size(inter, &remote);
+      // Small enough to go out at once (eager), whether or not anyone receives it.
       for (int k = 0; k < remote; ++k) {
-        MPI_Request request;
-        if (MPI_Isend(refusal.data(), static_cast<int>(refusal.size()), MPI_CHAR, k, kRefusedTag,
-                      inter, &request) == MPI_SUCCESS) {
-          MPI_Request_free(&request);
-        }
+        MPI_Send(refusal.data(), static_cast<int>(refusal.size()), MPI_CHAR, k, kRefusedTag, inter);
       }
       // Not MPI_Comm_disconnect: it waits for the other side, which may never come.
       MPI_Comm_free(&inter);
@@ -125,12 +122,10 @@ std::string MpiAcceptor::admit(const State& state, MPI_Comm inter) {
   std::vector<Challenge> challenges(static_cast<size_t>(remote));
   for (int k = 0; k < remote; ++k) {
     challenges[static_cast<size_t>(k)] = newChallenge();
-    MPI_Request request;
-    if (MPI_Isend(challenges[static_cast<size_t>(k)].data(), 32, MPI_BYTE, k, kChallengeTag,
-                  inter, &request) != MPI_SUCCESS) {
+    if (MPI_Send(challenges[static_cast<size_t>(k)].data(), 32, MPI_BYTE, k, kChallengeTag,
+                 inter) != MPI_SUCCESS) {
       return "its rank " + std::to_string(k) + " could not be reached";
     }
-    MPI_Request_free(&request);
   }
   const auto until = std::chrono::steady_clock::now() +
                      std::chrono::duration_cast<std::chrono::steady_clock::duration>(
@@ -158,6 +153,7 @@ std::string MpiAcceptor::admit(const State& state, MPI_Comm inter) {
         }
         break;
       }
+      if (state.stopping) return "the render was ending";
       if (std::chrono::steady_clock::now() > until) {
         return "it did not prove it was invited within " +
                std::to_string(static_cast<int>(kProofSeconds)) + " s";
