@@ -56,6 +56,7 @@ void SpotChecks::setEligible(int worker, bool eligible) {
 
 double SpotChecks::rateFor(int worker) const {
   const double rate = options_.percent / 100;
+  if (rate >= 1) return 1;  // --verify 100: every pixel, trusted or not
   const int passed = passes_[static_cast<size_t>(worker)];
   if (passed < kNewPasses) return std::min(1.0, 4 * rate);
   if (passed >= kTrustedPasses) return rate / 2;

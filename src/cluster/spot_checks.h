@@ -9,7 +9,7 @@
 //   new       fewer than kNewPasses passes: 4 times the rate, and at least one pixel of every
 //             batch it delivers;
 //   regular   the rate (--verify PERCENT, 1 % by default);
-//   trusted   kTrustedPasses passes or more: half the rate.
+//   trusted   kTrustedPasses passes or more: half the rate (but 100 % stays every pixel).
 // Which pixels: pixel p is sampled when a hash of (seed, p) falls below the rate; a new
 // worker's batch with none below it gives its pixel of least hash. The sample therefore
 // depends on the seed, the pixels and the worker's standing, never on the clock.
