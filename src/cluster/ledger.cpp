@@ -76,7 +76,7 @@ void Ledger::gave(int worker, const TaskSet& tasks) {
 
 bool Ledger::allHandedOut(const TaskSet& tasks) const {
   bool all = true;
-  tasks.forEach([&](uint64_t t) { all = all && t < taskCount() && (handedOut_[t] || owner_[t] == kResumed); });
+  tasks.forEach([&](uint64_t t) { all = all && handedOut(t); });
   return all;
 }
 

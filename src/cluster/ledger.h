@@ -56,6 +56,9 @@ class Ledger {
   // Whether every task of `tasks` was handed out to some worker (or resumed): a result for one
   // that never was cannot come from a correct worker.
   bool allHandedOut(const TaskSet& tasks) const;
+  bool handedOut(uint64_t task) const {
+    return task < taskCount() && (handedOut_[task] || owner_[task] == kResumed);
+  }
   void movedOut(int from, const TaskSet& tasks);  // `from` sent them to a peer (diffusion)
   // Records results from `worker` (live or lost) and returns the tasks of `tasks` that were
   // not done before, in order; a task already done is dropped.

@@ -294,7 +294,7 @@ ResultsMsg Master::onlyHandedOut(const ResultsMsg& r) const {
   out.computeSeconds = r.computeSeconds;
   size_t i = 0;
   r.tasks.forEach([&](uint64_t t) {
-    if (ledger_.allHandedOut(TaskSet::range(t, 1))) {
+    if (ledger_.handedOut(t)) {
       out.tasks.append(TaskRun{t, 1, 1});
       if (!r.rgb.empty()) {
         const auto at = r.rgb.begin() + static_cast<std::ptrdiff_t>(3 * i);
