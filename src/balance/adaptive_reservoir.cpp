@@ -60,70 +60,110 @@ uint64_t AdaptiveReservoirStrategy::initialSize(int worker) {
   return firstBlocks_[static_cast<size_t>(worker)];
 }
 
-std::vector<double> AdaptiveReservoirStrategy::rates() const {
-  const int workerCount = workers().workerCount();
-  std::vector<double> out(static_cast<size_t>(workerCount), 0.0);
-  const std::vector<double>& index = speedIndexSeconds();
-  double rateTimesIndex = 0;
-  int measured = 0;
-  for (int w : workers().liveList()) {
-    if (throughput().measured(w)) {
-      out[static_cast<size_t>(w)] = throughput().rate(w);
-      rateTimesIndex += out[static_cast<size_t>(w)] * index[static_cast<size_t>(w)];
-      ++measured;
-    }
+void AdaptiveReservoirStrategy::onWorkerChanged(int worker) {
+  const auto w = static_cast<size_t>(worker);
+  if (w >= held_.size()) held_.resize(w + 1, 0);
+  heldSum_ -= held_[w];
+  held_[w] = 0;
+  measured_.erase(worker);
+  unmeasured_.erase(worker);
+  if (!workers().isLive(worker)) return;
+  const uint64_t held = throughput().held(worker);
+  held_[w] = held;
+  heldSum_ += held;
+  const double index = speedIndexSeconds()[w];
+  const auto h = static_cast<double>(held);
+  // A victim must hold something and have no steal on its way to it.
+  const bool eligible = held > 0 && !awaitingSteal(worker);
+  if (throughput().measured(worker)) {
+    const double r = throughput().rate(worker);
+    if (r > 0) measured_.set(worker, {h / r, r, h, r * index, eligible});
+  } else {
+    unmeasured_.set(worker, {h * index, 1 / index, h, 0, eligible});
   }
-  if (measured == 0) return out;
-  // A worker not measured yet (one that just joined, above all) is taken to run as the
-  // measured ones do per unit of speed index: rate x speed index averaged over them, divided
-  // by its own index. With equal indices (no index run) that is their mean rate.
-  for (int w : workers().liveList()) {
-    if (!throughput().measured(w)) {
-      out[static_cast<size_t>(w)] = rateTimesIndex / measured / index[static_cast<size_t>(w)];
-    }
-  }
-  return out;
+}
+
+double AdaptiveReservoirStrategy::unmeasuredFactor() const {
+  const FinishOrder::Sums m = measured_.total();
+  return m.count == 0 ? 0 : m.c / m.count;
+}
+
+double AdaptiveReservoirStrategy::rateOf(int worker) const {
+  if (measured_.contains(worker)) return measured_.entry(worker).a;
+  if (unmeasured_.contains(worker)) return unmeasuredFactor() * unmeasured_.entry(worker).a;
+  return 0;
+}
+
+double AdaptiveReservoirStrategy::finishSeconds(uint64_t remaining) const {
+  // T solves g(T) = sum_i max(0, r_i T - h_i) - R = 0, g increasing; a worker takes part
+  // exactly when its own finishing time is below T, i.e. when g(its time) < 0. The measured
+  // take part in order of h_i / r_i, the unmeasured (rate K / index_i) of h_i index_i / K.
+  const double k = unmeasuredFactor();
+  const auto r = static_cast<double>(remaining);
+  auto unmeasuredPart = [&](double t) {  // sum over the unmeasured at time t
+    const FinishOrder::Sums s = unmeasured_.below(k * t);
+    return k * t * s.a - s.b;
+  };
+  auto measuredPart = [&](double t) {
+    const FinishOrder::Sums s = measured_.below(t);
+    return t * s.a - s.b;
+  };
+  const FinishOrder::Sums m = measured_.prefixWhile([&](const FinishOrder::Sums& before, double t) {
+    return t * before.a - before.b + unmeasuredPart(t) - r < 0;
+  });
+  const FinishOrder::Sums u = k > 0 ? unmeasured_.prefixWhile([&](const FinishOrder::Sums& before,
+                                                                  double key) {
+    const double t = key / k;
+    return measuredPart(t) + key * before.a - before.b - r < 0;
+  })
+                                    : FinishOrder::Sums{};
+  const double rateSum = m.a + k * u.a;
+  return rateSum > 0 ? (r + m.b + u.b) / rateSum : 0;
 }
 
 uint64_t AdaptiveReservoirStrategy::handOutSize(int worker) {
-  const std::vector<double> rate = rates();
-  const double mine = rate[static_cast<size_t>(worker)];
+  const double mine = rateOf(worker);
   if (mine <= 0) return minChunk_;  // results without times: fall back to small hand-outs
-  std::vector<uint64_t> held(rate.size(), 0);
-  for (int w : workers().liveList()) held[static_cast<size_t>(w)] = throughput().held(w);
-  const double t = commonFinishSeconds(rate, held, remaining());
-  const double share = mine * t - static_cast<double>(held[static_cast<size_t>(worker)]);
+  const double t = finishSeconds(remaining());
+  const double share = mine * t - static_cast<double>(throughput().held(worker));
   const double take = share * (1 - reservePercent_ / 100);
   return std::max(minChunk_, ceilCount(take));
 }
 
 std::optional<Transfer> AdaptiveReservoirStrategy::stealFor(int worker) {
-  const std::vector<double> rate = rates();
-  const double mine = rate[static_cast<size_t>(worker)];
+  const double mine = rateOf(worker);
   if (mine <= 0) return std::nullopt;
+  const double k = unmeasuredFactor();
+  // The eligible worker expected to finish last (ties: the lowest-numbered), never the thief.
   int victim = -1;
   double latest = 0;
-  for (int w : workers().liveList()) {
-    if (w == worker || rate[static_cast<size_t>(w)] <= 0 || awaitingSteal(w)) continue;
-    const double finish =
-        static_cast<double>(throughput().held(w)) / rate[static_cast<size_t>(w)];
-    if (finish > latest) {
+  auto consider = [&](int w, double finish) {
+    if (w < 0 || w == worker) return;
+    if (finish > latest || (finish == latest && victim >= 0 && w < victim)) {
       latest = finish;
       victim = w;
     }
+  };
+  int a = measured_.lastEligible();
+  int b = unmeasured_.lastEligible();
+  if (a == worker || b == worker) {  // the thief holds something itself: look past it
+    FinishOrder& order = a == worker ? measured_ : unmeasured_;
+    FinishOrder::Entry e = order.entry(worker);
+    e.eligible = false;
+    order.set(worker, e);
+    (a == worker ? a : b) = order.lastEligible();
+    e.eligible = true;
+    order.set(worker, e);
   }
+  if (a >= 0) consider(a, measured_.entry(a).key);
+  if (b >= 0 && k > 0) consider(b, unmeasured_.entry(b).key / k);
   if (victim < 0) return std::nullopt;
-  const double theirs = rate[static_cast<size_t>(victim)];
+  const double theirs = rateOf(victim);
   const double held = static_cast<double>(throughput().held(victim));
   // The thief's part of what everyone holds were it shared so that all finish together: the
   // other idle workers will take their parts from the same victim.
-  double heldSum = 0;
-  double rateSum = 0;
-  for (int w : workers().liveList()) {
-    heldSum += static_cast<double>(throughput().held(w));
-    rateSum += rate[static_cast<size_t>(w)];
-  }
-  const double fair = mine * heldSum / rateSum;
+  const double rateSum = measured_.total().a + k * unmeasured_.total().a;
+  const double fair = mine * static_cast<double>(heldSum_) / rateSum;
   const auto count = static_cast<uint64_t>(std::min(held * mine / (theirs + mine), fair));
   if (count < minChunk_) return std::nullopt;
   return Transfer{victim, worker, count};

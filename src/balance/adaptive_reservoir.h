@@ -31,12 +31,22 @@
 //
 // Lost and joining workers: see PooledStrategy. A newcomer's first request is sized from its
 // speed index as above, or steals once the reserve is empty.
+//
+// Cost: no decision walks the workers. The live workers with a rate are kept in two
+// FinishOrders (finish_order.h): the measured ones by their finishing time h_i / r_i (summing
+// r_i, h_i and r_i x index_i), the unmeasured ones by h_i x index_i, their finishing time
+// times the common factor K of their assumed rate K / index_i (summing 1 / index_i and h_i).
+// T is found by descending one order while asking the other for its sums below the same
+// time: O(log^2 W) per hand-out; the victim is the last eligible entry of either order,
+// O(log W). The answers are those of commonFinishSeconds() up to the rounding of sums taken
+// in another order.
 
 #include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "balance/finish_order.h"
 #include "balance/pooled_strategy.h"
 
 namespace prt {
@@ -59,11 +69,21 @@ class AdaptiveReservoirStrategy final : public PooledStrategy {
   uint64_t handOutSize(int worker) override;
   std::optional<Transfer> stealFor(int worker) override;
   bool waitsForSteals() const override { return true; }
+  void onWorkerChanged(int worker) override;
 
  private:
-  // Measured rates of the live workers, the unmeasured at the mean measured rate; 0 for lost
-  // workers. All 0 when nothing is measured yet.
-  std::vector<double> rates() const;
+  // The factor K of the unmeasured workers' rates K / index_i: the mean over the measured of
+  // rate x speed index. 0 when nothing is measured yet (then every rate is 0).
+  double unmeasuredFactor() const;
+  // Worker's rate as the sizing uses it (measured, or K / index); 0 for lost workers.
+  double rateOf(int worker) const;
+  // The common finishing time T for `remaining` tasks in the pool (commonFinishSeconds()).
+  double finishSeconds(uint64_t remaining) const;
+
+  FinishOrder measured_;    // key h / r; a = r, b = h, c = r x index
+  FinishOrder unmeasured_;  // key h x index; a = 1 / index, b = h
+  std::vector<uint64_t> held_;  // what each live worker holds, as indexed
+  uint64_t heldSum_ = 0;        // over the live workers
 
   double firstPercent_;
   double reservePercent_;

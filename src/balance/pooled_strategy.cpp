@@ -10,14 +10,16 @@ namespace prt {
 Decisions PooledStrategy::start(const StartInfo& info) {
   validateStartInfo(info);
   const int workerCount = static_cast<int>(info.speedIndexSeconds.size());
-  pool_ = initialPool(info);
+  pool_ = TaskPool(initialPool(info));
   workers_.reset(workerCount);
   throughput_.reset(workerCount);
-  idle_.assign(static_cast<size_t>(workerCount), false);
+  idle_.clear();
   waiting_.assign(static_cast<size_t>(workerCount), false);
-  waitingCount_ = 0;
+  waitingByRate_.clear();
+  waitingRate_.assign(static_cast<size_t>(workerCount), 0.0);
   inbound_.assign(static_cast<size_t>(workerCount), false);
   victim_.assign(static_cast<size_t>(workerCount), -1);
+  thievesOf_.assign(static_cast<size_t>(workerCount), {});
   taskCount_ = info.taskCount;
   returnedCount_ = 0;
   speedIndexSeconds_ = info.speedIndexSeconds;
@@ -28,16 +30,18 @@ Decisions PooledStrategy::start(const StartInfo& info) {
     const uint64_t count = std::min(initialSize(w), pool_.size());
     if (count > 0) out.push_back(give(w, count));
   }
+  for (int w = 0; w < workerCount; ++w) onWorkerChanged(w);
   return out;
 }
 
 Decisions PooledStrategy::onRequest(int worker) {
   if (!workers_.isLive(worker)) return {NoMoreWork{worker}};
   throughput_.chunkDone(worker);
-  inbound_[static_cast<size_t>(worker)] = false;
+  setInbound(worker, -1);
+  onWorkerChanged(worker);
   if (pool_.empty()) {
     if (std::optional<Decision> transfer = steal(worker)) return {*transfer};
-    idle_[static_cast<size_t>(worker)] = true;
+    setIdle(worker, true);
     if (waitsForSteals() && returnedCount_ < taskCount_) {
       setWaiting(worker, true);
       return {};
@@ -49,29 +53,36 @@ Decisions PooledStrategy::onRequest(int worker) {
 
 Decisions PooledStrategy::onWorkerLost(int worker, const TaskSet& unfinished) {
   workers_.markLost(worker);
-  if (worker >= 0 && worker < workers_.workerCount()) {
+  const bool known = worker >= 0 && worker < workers_.workerCount();
+  if (known) {
     throughput_.lost(worker);
     setWaiting(worker, false);
+    setIdle(worker, false);
+    setInbound(worker, -1);
+    onWorkerChanged(worker);
   }
-  TaskSet pool = unfinished;
-  pool.append(pool_);
-  pool_ = std::move(pool);
+  pool_.putFront(unfinished);
   if (workers_.liveCount() == 0) return {};
   // A steal from the lost worker never arrives (the master drops transfers from the lost):
   // its thief is idle again, and is served below like the others.
-  for (int w : workers_.liveList()) {
-    const auto i = static_cast<size_t>(w);
-    if (inbound_[i] && victim_[i] == worker) {
-      inbound_[i] = false;
-      idle_[i] = true;
+  if (known) {
+    std::vector<int> thieves = std::move(thievesOf_[static_cast<size_t>(worker)]);
+    thievesOf_[static_cast<size_t>(worker)].clear();
+    for (int w : thieves) {
+      const auto i = static_cast<size_t>(w);
+      if (workers_.isLive(w) && inbound_[i] && victim_[i] == worker) {
+        setInbound(w, -1);
+        setIdle(w, true);
+        onWorkerChanged(w);
+      }
     }
   }
   onLiveWorkersChanged();
 
   Decisions out;
-  for (int w : workers_.liveList()) {
-    if (pool_.empty()) break;
-    if (idle_[static_cast<size_t>(w)]) out.push_back(give(w, handOutSize(w)));
+  while (!pool_.empty() && !idle_.empty()) {
+    const int w = *idle_.begin();  // in worker order; give() takes it out of the set
+    out.push_back(give(w, handOutSize(w)));
   }
   return out;
 }
@@ -80,11 +91,13 @@ Decisions PooledStrategy::onWorkerJoined(int worker, double speedIndexSeconds) {
   validateJoin(worker, workers_.workerCount(), speedIndexSeconds);
   workers_.add();
   throughput_.add();
-  idle_.push_back(false);
   waiting_.push_back(false);
+  waitingRate_.push_back(0.0);
   inbound_.push_back(false);
   victim_.push_back(-1);
+  thievesOf_.emplace_back();
   speedIndexSeconds_.push_back(speedIndexSeconds);
+  onWorkerChanged(worker);
   onLiveWorkersChanged();
   return {};
 }
@@ -93,28 +106,28 @@ Decisions PooledStrategy::onResults(int worker, const TaskSet& tasks, double com
   if (!workers_.isLive(worker)) return {};
   throughput_.returned(worker, tasks.size(), computeSeconds);
   returnedCount_ += tasks.size();
-  inbound_[static_cast<size_t>(worker)] = false;
+  setInbound(worker, -1);
+  if (waiting_[static_cast<size_t>(worker)]) {  // its place among the waiting follows its rate
+    setWaiting(worker, false);
+    setWaiting(worker, true);
+  }
+  onWorkerChanged(worker);
   Decisions out;
-  if (waitingCount_ == 0) return out;
+  if (waitingByRate_.empty()) return out;
   if (returnedCount_ >= taskCount_) {  // all back: nothing will ever be worth stealing
-    for (int w : workers_.liveList()) {
-      if (waiting_[static_cast<size_t>(w)]) out.push_back(NoMoreWork{w});
+    std::vector<int> waiting;
+    for (const auto& [rate, w] : waitingByRate_) waiting.push_back(w);
+    std::sort(waiting.begin(), waiting.end());
+    for (int w : waiting) {
+      setWaiting(w, false);
+      out.push_back(NoMoreWork{w});
     }
-    waiting_.assign(waiting_.size(), false);
-    waitingCount_ = 0;
     return out;
   }
   // The fastest waiting worker first; once one finds nothing worth taking, the slower ones
   // would not either (a steal's size grows with the thief's rate), so stop there.
-  std::vector<int> thieves;
-  for (int w : workers_.liveList()) {
-    if (waiting_[static_cast<size_t>(w)]) thieves.push_back(w);
-  }
-  std::stable_sort(thieves.begin(), thieves.end(), [&](int a, int b) {
-    return throughput_.rate(a) > throughput_.rate(b);
-  });
-  for (int w : thieves) {
-    std::optional<Decision> transfer = steal(w);
+  while (!waitingByRate_.empty()) {
+    std::optional<Decision> transfer = steal(waitingByRate_.begin()->second);
     if (!transfer) break;
     out.push_back(*transfer);
   }
@@ -127,17 +140,39 @@ std::optional<Decision> PooledStrategy::steal(int worker) {
   PRT_CHECK(transfer->to == worker && transfer->from != worker &&
             workers_.isLive(transfer->from) && transfer->count >= 1);
   throughput_.moved(transfer->from, worker, transfer->count);
-  idle_[static_cast<size_t>(worker)] = false;
+  setIdle(worker, false);
   setWaiting(worker, false);
-  inbound_[static_cast<size_t>(worker)] = true;
-  victim_[static_cast<size_t>(worker)] = transfer->from;
+  setInbound(worker, transfer->from);
+  onWorkerChanged(transfer->from);
+  onWorkerChanged(worker);
   return Decision{*transfer};
 }
 
 void PooledStrategy::setWaiting(int worker, bool waiting) {
   const auto w = static_cast<size_t>(worker);
-  if (waiting_[w] != waiting) waitingCount_ += waiting ? 1 : -1;
+  if (waiting_[w] == waiting) return;
   waiting_[w] = waiting;
+  if (waiting) {
+    waitingRate_[w] = throughput_.rate(worker);
+    waitingByRate_.emplace(-waitingRate_[w], worker);
+  } else {
+    waitingByRate_.erase({-waitingRate_[w], worker});
+  }
+}
+
+void PooledStrategy::setIdle(int worker, bool idle) {
+  if (idle) {
+    idle_.insert(worker);
+  } else {
+    idle_.erase(worker);
+  }
+}
+
+void PooledStrategy::setInbound(int worker, int victim) {
+  const auto w = static_cast<size_t>(worker);
+  inbound_[w] = victim >= 0;
+  victim_[w] = victim;
+  if (victim >= 0) thievesOf_[static_cast<size_t>(victim)].push_back(worker);
 }
 
 std::vector<double> PooledStrategy::liveDivisionOfLabor() const {
@@ -157,10 +192,12 @@ std::vector<double> PooledStrategy::liveDivisionOfLabor() const {
 Decision PooledStrategy::give(int worker, uint64_t count) {
   PRT_CHECK(workers_.isLive(worker) && !pool_.empty());
   count = std::clamp<uint64_t>(count, 1, pool_.size());
-  idle_[static_cast<size_t>(worker)] = false;
+  setIdle(worker, false);
   setWaiting(worker, false);
   throughput_.given(worker, count);
-  return Assign{worker, pool_.takeFront(count)};
+  Decision out = Assign{worker, pool_.takeFront(count)};
+  onWorkerChanged(worker);
+  return out;
 }
 
 }  // namespace prt

@@ -21,9 +21,12 @@
 
 #include <cstdint>
 #include <optional>
+#include <set>
+#include <utility>
 #include <vector>
 
 #include "balance/strategy.h"
+#include "balance/task_pool.h"
 #include "balance/task_split.h"
 #include "balance/throughput.h"
 
@@ -54,6 +57,10 @@ class PooledStrategy : public Strategy {
   // Called after a worker is marked lost and its tasks are back in the pool, and after a
   // worker joins (before its first request).
   virtual void onLiveWorkersChanged() {}
+  // Called after anything the strategy may index about `worker` changed: what it holds, its
+  // rate, whether it is live, whether a steal is on its way to it. Strategies that keep
+  // workers in indexed structures (so that no decision walks all workers) update them here.
+  virtual void onWorkerChanged(int /*worker*/) {}
   // The pool is empty and live `worker` asks: a Transfer of tasks from a live peer's queue to
   // it, with count >= 1, or nothing (NoMoreWork). Defaults to nothing.
   virtual std::optional<Transfer> stealFor(int /*worker*/) { return std::nullopt; }
@@ -75,16 +82,25 @@ class PooledStrategy : public Strategy {
   // A Transfer for waiting or requesting `worker` from stealFor(), recorded; or nothing.
   std::optional<Decision> steal(int worker);
 
-  TaskSet pool_;
+  TaskPool pool_;
   LiveWorkers workers_;
   Throughput throughput_;
-  std::vector<bool> idle_;     // told NoMoreWork, or waiting, and given nothing since
   void setWaiting(int worker, bool waiting);
+  void setIdle(int worker, bool idle);
+  void setInbound(int worker, int victim);  // victim -1: none on its way any more
 
+  // Every set below is kept so that no decision walks all workers.
+  std::set<int> idle_;  // told NoMoreWork, or waiting, and given nothing since; by worker
   std::vector<bool> waiting_;  // asked and not answered yet
-  int waitingCount_ = 0;
+  // The waiting workers, fastest first (by their rate when they began to wait), then by
+  // worker: the order in which results serve them.
+  std::set<std::pair<double, int>> waitingByRate_;
+  std::vector<double> waitingRate_;
   std::vector<bool> inbound_;  // a steal for it is on its way (until its next result or request)
   std::vector<int> victim_;    // whom that steal is from
+  // Thieves each victim was robbed for (entries go stale once the steal arrives; read only
+  // when the victim is lost).
+  std::vector<std::vector<int>> thievesOf_;
   uint64_t taskCount_ = 0;
   uint64_t returnedCount_ = 0;  // tasks returned by live workers
   std::vector<double> speedIndexSeconds_;

@@ -26,11 +26,10 @@ bool LiveWorkers::isLive(int worker) const {
 }
 
 void LiveWorkers::markLost(int worker) {
-  if (worker >= 0 && worker < workerCount()) live_[static_cast<size_t>(worker)] = false;
-}
-
-int LiveWorkers::liveCount() const {
-  return static_cast<int>(std::count(live_.begin(), live_.end(), true));
+  if (isLive(worker)) {
+    live_[static_cast<size_t>(worker)] = false;
+    --liveCount_;
+  }
 }
 
 std::vector<int> LiveWorkers::liveList() const {

@@ -18,20 +18,25 @@ std::vector<TaskSet> splitEvenly(const TaskSet& tasks, uint64_t parts);
 // worker that joins is added live at the end.
 class LiveWorkers {
  public:
-  void reset(int workerCount) { live_.assign(static_cast<size_t>(workerCount), true); }
+  void reset(int workerCount) {
+    live_.assign(static_cast<size_t>(workerCount), true);
+    liveCount_ = workerCount;
+  }
   // A worker joins: it is live, with the next index, which is returned.
   int add() {
     live_.push_back(true);
+    ++liveCount_;
     return workerCount() - 1;
   }
   int workerCount() const { return static_cast<int>(live_.size()); }
   bool isLive(int worker) const;
   void markLost(int worker);  // ignores unknown workers
-  int liveCount() const;
-  std::vector<int> liveList() const;  // in worker order
+  int liveCount() const { return liveCount_; }
+  std::vector<int> liveList() const;  // in worker order: O(W), not for every decision
 
  private:
   std::vector<bool> live_;
+  int liveCount_ = 0;
 };
 
 // Assign decisions that give `tasks` to the live workers, split evenly in worker order
