@@ -18,8 +18,31 @@ double adaptiveFactoringChunk(const std::vector<double>& mu, const std::vector<d
     d += variance[j] / mu[j];
     inverseSum += 1.0 / mu[j];
   }
+  return adaptiveFactoringChunk(d, inverseSum, mu[worker], remaining);
+}
+
+double adaptiveFactoringChunk(double d, double inverseSum, double muWorker, double remaining) {
   const double t = 1.0 / inverseSum;
-  return (d + 2 * t * remaining - std::sqrt(d * d + 4 * d * t * remaining)) / (2 * mu[worker]);
+  return (d + 2 * t * remaining - std::sqrt(d * d + 4 * d * t * remaining)) / (2 * muWorker);
+}
+
+void AdaptiveFactoringStrategy::prepare(const StartInfo& info) {
+  taskCount_ = info.taskCount;
+  byMu_.clear();
+  indexedMu_.clear();
+  varianceOverMu_.clear();
+  inverseMu_.clear();
+}
+
+void AdaptiveFactoringStrategy::onWorkerChanged(int worker) {
+  const auto w = static_cast<size_t>(worker);
+  if (w >= indexedMu_.size()) indexedMu_.resize(w + 1, 0);
+  if (indexedMu_[w] > 0) byMu_.erase({indexedMu_[w], worker});
+  const double mu = workers().isLive(worker) ? throughput().meanTaskSeconds(worker) : 0;
+  indexedMu_[w] = mu;
+  if (mu > 0) byMu_.emplace(mu, worker);
+  varianceOverMu_.set(worker, mu > 0 ? throughput().taskSecondsVariance(worker) / mu : 0);
+  inverseMu_.set(worker, mu > 0 ? 1.0 / mu : 0);
 }
 
 AdaptiveFactoringStrategy::AdaptiveFactoringStrategy(uint64_t minChunk) : minChunk_(minChunk) {
@@ -32,25 +55,18 @@ TaskSet AdaptiveFactoringStrategy::initialPool(const StartInfo& info) {
 
 uint64_t AdaptiveFactoringStrategy::handOutSize(int worker) {
   // The fastest measured worker stands in for those not measured yet.
-  const std::vector<int> live = workers().liveList();
-  int fastest = -1;
-  for (int w : live) {
-    const double mu = throughput().meanTaskSeconds(w);
-    if (mu > 0 && (fastest < 0 || mu < throughput().meanTaskSeconds(fastest))) fastest = w;
-  }
-  if (fastest < 0) return minChunk_;  // nothing measured (results without times)
-  std::vector<double> mu;
-  std::vector<double> variance;
-  size_t index = 0;
-  for (int w : live) {
-    const int from = throughput().meanTaskSeconds(w) > 0 ? w : fastest;
-    if (w == worker) index = mu.size();
-    mu.push_back(throughput().meanTaskSeconds(from));
-    variance.push_back(throughput().taskSecondsVariance(from));
-  }
+  if (byMu_.empty()) return minChunk_;  // nothing measured (results without times)
+  const int fastest = byMu_.begin()->second;
+  const double fastestMu = throughput().meanTaskSeconds(fastest);
+  const double fastestVariance = throughput().taskSecondsVariance(fastest);
+  const auto unmeasured = static_cast<double>(static_cast<size_t>(workers().liveCount()) - byMu_.size());
+  const double d = varianceOverMu_.total() + unmeasured * (fastestVariance / fastestMu);
+  const double inverseSum = inverseMu_.total() + unmeasured * (1.0 / fastestMu);
+  const double own = throughput().meanTaskSeconds(worker);
+  const double muWorker = own > 0 ? own : fastestMu;
   const double chunk =
-      adaptiveFactoringChunk(mu, variance, index, static_cast<double>(remaining())) + 0.5;
-  const auto p = static_cast<uint64_t>(live.size());
+      adaptiveFactoringChunk(d, inverseSum, muWorker, static_cast<double>(remaining())) + 0.5;
+  const auto p = static_cast<uint64_t>(workers().liveCount());
   const uint64_t maxChunk = std::max<uint64_t>(1, (taskCount_ + 2 * p - 1) / (2 * p));
   const auto rounded = chunk >= static_cast<double>(maxChunk) ? maxChunk
                                                                : static_cast<uint64_t>(chunk);

@@ -17,16 +17,21 @@
 // Lost workers: see PooledStrategy; P and the sums count live workers only.
 
 #include <cstdint>
+#include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "balance/pooled_strategy.h"
+#include "balance/worker_sums.h"
 
 namespace prt {
 
 // The formula above, before rounding and bounds; mu and variance per live worker (mu > 0).
 double adaptiveFactoringChunk(const std::vector<double>& mu, const std::vector<double>& variance,
                               size_t worker, double remaining);
+// The same from the sums it needs: d = sum_j sigma_j^2 / mu_j, inverseSum = sum_j 1 / mu_j.
+double adaptiveFactoringChunk(double d, double inverseSum, double muWorker, double remaining);
 
 class AdaptiveFactoringStrategy final : public PooledStrategy {
  public:
@@ -35,11 +40,17 @@ class AdaptiveFactoringStrategy final : public PooledStrategy {
 
  protected:
   TaskSet initialPool(const StartInfo& info) override;
-  void prepare(const StartInfo& info) override { taskCount_ = info.taskCount; }
+  void prepare(const StartInfo& info) override;
   uint64_t initialSize(int /*worker*/) override { return minChunk_; }
   uint64_t handOutSize(int worker) override;
+  void onWorkerChanged(int worker) override;
 
  private:
+  // Indexed so that no hand-out walks the workers: the live measured workers by mean time per
+  // task (the fastest first), and the sums of sigma^2 / mu and 1 / mu over them.
+  std::set<std::pair<double, int>> byMu_;
+  std::vector<double> indexedMu_;  // each worker's mu as entered in byMu_ (0: not there)
+  WorkerSums varianceOverMu_, inverseMu_;
   uint64_t minChunk_;
   uint64_t taskCount_ = 0;
 };

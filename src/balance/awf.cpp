@@ -40,15 +40,32 @@ TaskSet AwfStrategy::initialPool(const StartInfo& info) {
   return interleavedOrder(info.taskCount, info.frameTasks);
 }
 
+void AwfStrategy::prepare(const StartInfo& /*info*/) {
+  batchLeft_ = 0;
+  byWap_.clear();
+  indexedWap_.clear();
+  inverseWap_.clear();
+}
+
+void AwfStrategy::onWorkerChanged(int worker) {
+  const auto w = static_cast<size_t>(worker);
+  if (w >= indexedWap_.size()) indexedWap_.resize(w + 1, 0);
+  if (indexedWap_[w] > 0) byWap_.erase({indexedWap_[w], worker});
+  const double wap = workers().isLive(worker) ? throughput().weightedAverageTaskSeconds(worker) : 0;
+  indexedWap_[w] = wap;
+  if (wap > 0) byWap_.emplace(wap, worker);
+  inverseWap_.set(worker, wap > 0 ? 1.0 / wap : 0);
+}
+
 uint64_t AwfStrategy::handOutSize(int worker) {
-  const int workerCount = workers().workerCount();
-  std::vector<double> wap(static_cast<size_t>(workerCount));
-  std::vector<bool> live(static_cast<size_t>(workerCount));
-  for (int w = 0; w < workerCount; ++w) {
-    wap[static_cast<size_t>(w)] = throughput().weightedAverageTaskSeconds(w);
-    live[static_cast<size_t>(w)] = workers().isLive(w);
-  }
-  const double weight = awfWeights(wap, live)[static_cast<size_t>(worker)];
+  // awfWeights() for one worker, from the indexed sums: the unmeasured count as the fastest.
+  const double fastest = byWap_.empty() ? 0 : byWap_.begin()->first;
+  const double standIn = fastest > 0 ? 1.0 / fastest : 1.0;
+  const auto unmeasured = static_cast<double>(static_cast<size_t>(workers().liveCount()) - byWap_.size());
+  const double sum = inverseWap_.total() + unmeasured * standIn;
+  const double own = throughput().weightedAverageTaskSeconds(worker);
+  const double inverse = own > 0 ? 1.0 / own : standIn;
+  const double weight = sum > 0 ? workers().liveCount() * inverse / sum : 0.0;
   const auto p = static_cast<uint64_t>(workers().liveCount());
   const uint64_t r = remaining();
   const uint64_t half = (r + 2 * p - 1) / (2 * p);  // ceil(R / (2P))

@@ -18,10 +18,13 @@
 // Lost workers: see PooledStrategy; P counts live workers and AWF-B's open batch is closed.
 
 #include <cstdint>
+#include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "balance/pooled_strategy.h"
+#include "balance/worker_sums.h"
 
 namespace prt {
 
@@ -39,12 +42,18 @@ class AwfStrategy final : public PooledStrategy {
 
  protected:
   TaskSet initialPool(const StartInfo& info) override;
-  void prepare(const StartInfo& /*info*/) override { batchLeft_ = 0; }
+  void prepare(const StartInfo& info) override;
   uint64_t initialSize(int /*worker*/) override { return minChunk_; }
   uint64_t handOutSize(int worker) override;
   void onLiveWorkersChanged() override { batchLeft_ = 0; }
+  void onWorkerChanged(int worker) override;
 
  private:
+  // Indexed so that no hand-out walks the workers: the live workers with a weighted average
+  // time per task by that time (the fastest first), and the sum of its inverse over them.
+  std::set<std::pair<double, int>> byWap_;
+  std::vector<double> indexedWap_;  // each worker's wap as entered in byWap_ (0: not there)
+  WorkerSums inverseWap_;
   Variant variant_;
   uint64_t minChunk_;
   uint64_t batch_ = 0;      // AWF-B: the open batch's size

@@ -14,6 +14,8 @@ TaskSet StealingStrategy::initialPool(const StartInfo& info) {
 }
 
 void StealingStrategy::prepare(const StartInfo& info) {
+  victims_.clear();
+  indexed_.clear();
   taskCount_ = info.taskCount;
   workerCount_ = info.speedIndexSeconds.size();
 }
@@ -28,11 +30,22 @@ uint64_t StealingStrategy::handOutSize(int /*worker*/) {
   return (remaining() + p - 1) / p;
 }
 
+void StealingStrategy::onWorkerChanged(int worker) {
+  const auto w = static_cast<size_t>(worker);
+  if (w >= indexed_.size()) indexed_.resize(w + 1, 0);
+  victims_.erase({indexed_[w], -worker});
+  indexed_[w] = throughput().held(worker);
+  if (workers().isLive(worker) && !awaitingSteal(worker)) victims_.emplace(indexed_[w], -worker);
+}
+
 std::optional<Transfer> StealingStrategy::stealFor(int worker) {
+  // The fullest queue (ties: the lowest-numbered worker), not the thief's own.
   int victim = -1;
-  for (int w : workers().liveList()) {
-    if (w == worker || awaitingSteal(w)) continue;
-    if (victim < 0 || throughput().held(w) > throughput().held(victim)) victim = w;
+  for (const auto& [held, negated] : victims_) {
+    if (-negated != worker) {
+      victim = -negated;
+      break;
+    }
   }
   if (victim < 0) return std::nullopt;
   const uint64_t half = throughput().held(victim) / 2;

@@ -19,7 +19,11 @@
 
 #include <cstdint>
 #include <optional>
+#include <functional>
+#include <set>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "balance/pooled_strategy.h"
 
@@ -37,8 +41,13 @@ class StealingStrategy final : public PooledStrategy {
   uint64_t handOutSize(int worker) override;
   std::optional<Transfer> stealFor(int worker) override;
   bool waitsForSteals() const override { return true; }
+  void onWorkerChanged(int worker) override;
 
  private:
+  // The live workers with no steal on their way to them, fullest first, then by worker: the
+  // victim is the first that is not the thief (O(log W) per change, no walk).
+  std::set<std::pair<uint64_t, int>, std::greater<>> victims_;  // (held, -worker)
+  std::vector<uint64_t> indexed_;  // each worker's held as entered in victims_
   uint64_t minChunk_;
   uint64_t taskCount_ = 0;
   uint64_t workerCount_ = 1;
