@@ -37,6 +37,11 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+// A run stops once the strategy has spent this long deciding (a strategy that walks every
+// worker per decision would take many minutes at 65,536 workers); its figures are then over
+// the calls made, and cut_off says so.
+constexpr double kBudgetSeconds = 20;
+
 struct Timed {
   double seconds = 0;
   uint64_t calls = 0;
@@ -50,6 +55,7 @@ struct Timed {
 struct Figures {
   Timed handout, steal, results, query, lost, other;
   double startSeconds = 0;  // start(): once per run, O(tasks) (the pool's order)
+  bool cutOff = false;      // stopped at the time budget
   uint64_t decisions = 0;
   double totalSeconds() const {
     return handout.seconds + steal.seconds + results.seconds + query.seconds + lost.seconds +
@@ -84,6 +90,10 @@ class Driver {
   Figures run() {
     uint64_t finished = 0;
     while (!events_.empty() && calls_ < maxCalls_) {
+      if (figures_.totalSeconds() > kBudgetSeconds) {  // a walk per decision at scale
+        figures_.cutOff = true;
+        break;
+      }
       const auto [at, w] = events_.top();
       events_.pop();
       now_ = at;
@@ -228,6 +238,7 @@ void report(benchmark::State& state, const Figures& f) {
   state.counters["steals"] = static_cast<double>(f.steal.calls);
   state.counters["strategy_s"] = f.totalSeconds();
   state.counters["start_s"] = f.startSeconds;
+  state.counters["cut_off"] = f.cutOff ? 1 : 0;
 }
 
 uint64_t callLimit() {

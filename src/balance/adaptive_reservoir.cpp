@@ -65,20 +65,29 @@ void AdaptiveReservoirStrategy::onWorkerChanged(int worker) {
   if (w >= held_.size()) held_.resize(w + 1, 0);
   heldSum_ -= held_[w];
   held_[w] = 0;
-  measured_.erase(worker);
-  unmeasured_.erase(worker);
-  if (!workers().isLive(worker)) return;
+  if (!workers().isLive(worker)) {
+    measured_.erase(worker);
+    unmeasured_.erase(worker);
+    return;
+  }
   const uint64_t held = throughput().held(worker);
   held_[w] = held;
   heldSum_ += held;
   const double index = speedIndexSeconds()[w];
   const auto h = static_cast<double>(held);
-  // A victim must hold something and have no steal on its way to it.
+  // A victim must hold something and have no steal on its way to it. (set() leaves an entry
+  // that did not change alone.)
   const bool eligible = held > 0 && !awaitingSteal(worker);
   if (throughput().measured(worker)) {
+    unmeasured_.erase(worker);
     const double r = throughput().rate(worker);
-    if (r > 0) measured_.set(worker, {h / r, r, h, r * index, eligible});
+    if (r > 0) {
+      measured_.set(worker, {h / r, r, h, r * index, eligible});
+    } else {
+      measured_.erase(worker);
+    }
   } else {
+    measured_.erase(worker);
     unmeasured_.set(worker, {h * index, 1 / index, h, 0, eligible});
   }
 }

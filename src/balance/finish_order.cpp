@@ -76,6 +76,13 @@ const FinishOrder::Entry& FinishOrder::entry(int worker) const {
 
 void FinishOrder::set(int worker, const Entry& entry) {
   PRT_CHECK(worker >= 0);
+  if (contains(worker)) {
+    Node& old = nodes_[static_cast<size_t>(worker)];
+    if (old.entry.key == entry.key && old.entry.a == entry.a && old.entry.b == entry.b &&
+        old.entry.c == entry.c && old.entry.eligible == entry.eligible) {
+      return;  // nothing changed
+    }
+  }
   erase(worker);
   if (static_cast<size_t>(worker) >= nodes_.size()) nodes_.resize(static_cast<size_t>(worker) + 1);
   Node& n = nodes_[static_cast<size_t>(worker)];
@@ -93,7 +100,8 @@ void FinishOrder::set(int worker, const Entry& entry) {
 void FinishOrder::erase(int worker) {
   if (!contains(worker)) return;
   // Find the link that points at the node, then put its children's merge in its place.
-  std::vector<int> path;
+  std::vector<int>& path = path_;
+  path.clear();
   int x = root_;
   while (x != worker) {
     PRT_CHECK(x >= 0);
