@@ -14,6 +14,7 @@
 
 #include "core/input_error.h"
 #include "core/subprocess.h"
+#include "core/text.h"
 #include "image/atomic_file.h"
 
 namespace prt::cli {
@@ -24,12 +25,6 @@ namespace fs = std::filesystem;
 std::string ffmpegProgram() {
   const char* chosen = std::getenv("PRT_FFMPEG");
   return findProgram(chosen != nullptr && *chosen != '\0' ? chosen : "ffmpeg");
-}
-
-std::string lowerExtension(const std::string& path) {
-  std::string ext = fs::path(path).extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return ext;
 }
 
 // Containers whose players expect H.264 in yuv420p.

@@ -9,13 +9,10 @@
 
 #include "core/input_error.h"
 #include "core/memory_budget.h"
+#include "core/text.h"
 
 namespace prt {
 namespace {
-
-std::string quoted(const std::string& path) {
-  return "'" + path + "'";
-}
 
 class Descriptor {
  public:
@@ -33,7 +30,7 @@ class Descriptor {
 
 std::string tooLarge(const std::string& path, const std::string& what, uint64_t size,
                      uint64_t maxBytes) {
-  return what + " " + quoted(path) + " is " + formatMemorySize(size) + ", more than the " +
+  return what + " " + quote(path, '\'') + " is " + formatMemorySize(size) + ", more than the " +
          formatMemorySize(maxBytes) + " a " + what + " may be" +
          (maxBytes == memoryBudgetBytes() ? " (the memory budget; --max-memory sets it)" : "");
 }
@@ -62,17 +59,17 @@ uint64_t checkInputFile(const std::string& path, const std::string& what, uint64
   std::error_code error;
   const fs::file_status status = fs::status(path, error);
   if (status.type() == fs::file_type::not_found) {
-    throw InputError(what + " " + quoted(path) + " does not exist");
+    throw InputError(what + " " + quote(path, '\'') + " does not exist");
   }
   if (status.type() == fs::file_type::directory) {
-    throw InputError(what + " " + quoted(path) + " is a directory");
+    throw InputError(what + " " + quote(path, '\'') + " is a directory");
   }
   if (const std::string kind = specialFileKind(status.type()); !kind.empty()) {
-    throw InputError(what + " " + quoted(path) + " is " + kind + ", not a regular file");
+    throw InputError(what + " " + quote(path, '\'') + " is " + kind + ", not a regular file");
   }
   const uintmax_t size = fs::file_size(path, error);
   if (error) {
-    throw InputError("cannot read " + what + " " + quoted(path) + ": " + error.message());
+    throw InputError("cannot read " + what + " " + quote(path, '\'') + ": " + error.message());
   }
   if (size > maxBytes) throw InputError(tooLarge(path, what, size, maxBytes));
   return size;
@@ -88,11 +85,11 @@ std::string readInputFile(const std::string& path, const std::string& what, uint
   // not wait for a writer; fstat below then refuses it.
   const Descriptor fd(::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK | O_NOCTTY));
   if (fd.get() < 0) {
-    throw InputError("cannot open " + what + " " + quoted(path) + ": " + std::strerror(errno));
+    throw InputError("cannot open " + what + " " + quote(path, '\'') + ": " + std::strerror(errno));
   }
   struct stat info{};
   if (::fstat(fd.get(), &info) != 0 || !S_ISREG(info.st_mode)) {
-    throw InputError(what + " " + quoted(path) + " is not a regular file");
+    throw InputError(what + " " + quote(path, '\'') + " is not a regular file");
   }
   if (static_cast<uint64_t>(info.st_size) > maxBytes) {
     throw InputError(tooLarge(path, what, static_cast<uint64_t>(info.st_size), maxBytes));
@@ -105,7 +102,8 @@ std::string readInputFile(const std::string& path, const std::string& what, uint
     if (count == 0) break;
     if (count < 0) {
       if (errno == EINTR) continue;
-      throw InputError("cannot read " + what + " " + quoted(path) + ": " + std::strerror(errno));
+      throw InputError("cannot read " + what + " " + quote(path, '\'') + ": " +
+                       std::strerror(errno));
     }
     bytes.append(buffer, static_cast<size_t>(count));
     if (bytes.size() > maxBytes) throw InputError(tooLarge(path, what, bytes.size(), maxBytes));

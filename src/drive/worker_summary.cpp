@@ -9,7 +9,7 @@
 namespace prt {
 namespace {
 
-constexpr uint8_t kVersion = 3;  // 2: the thread count; 3: the slowdown
+constexpr uint8_t kSummaryVersion = 3;  // 2: the thread count; 3: the slowdown
 
 constexpr size_t kMinEventBytes = 1 + 4 + 8 + 8 + 8 + 8 + 4 + 2;
 
@@ -17,7 +17,7 @@ constexpr size_t kMinEventBytes = 1 + 4 + 8 + 8 + 8 + 8 + 4 + 2;
 
 Bytes encodeSummary(const WorkerSummary& summary) {
   ByteWriter w;
-  w.pod(kVersion);
+  w.pod(kSummaryVersion);
   w.pod(summary.rays);
   w.pod(summary.tasksReceived);
   w.pod(static_cast<int32_t>(summary.threads));
@@ -38,7 +38,8 @@ Bytes encodeSummary(const WorkerSummary& summary) {
 
 WorkerSummary decodeSummary(const uint8_t* data, size_t size) {
   ByteReader r(data, size, "worker summary");
-  if (r.pod<uint8_t>() != kVersion) throw std::runtime_error("worker summary: unknown version");
+  if (r.pod<uint8_t>() != kSummaryVersion)
+    throw std::runtime_error("worker summary: unknown version");
   WorkerSummary s;
   s.rays = r.pod<uint64_t>();
   s.tasksReceived = r.pod<uint64_t>();

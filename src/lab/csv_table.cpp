@@ -9,7 +9,7 @@
 namespace prt {
 namespace {
 
-std::string quoted(const std::string& cell) {
+std::string csvField(const std::string& cell) {
   if (cell.find_first_of(",\"\r\n") == std::string::npos) return cell;
   std::string out = "\"";
   for (char c : cell) {
@@ -22,7 +22,7 @@ std::string quoted(const std::string& cell) {
 void appendLine(std::string& out, const std::vector<std::string>& cells) {
   for (size_t i = 0; i < cells.size(); ++i) {
     if (i > 0) out += ',';
-    out += quoted(cells[i]);
+    out += csvField(cells[i]);
   }
   out += '\n';
 }

@@ -35,8 +35,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr size_t kMaxObjects = size_t{1} << 20;  // placed meshes, as for glTF
-constexpr int kMaxDepth = 1024;
 // assimp's light colours carry the exporter's intensity in the file's own units; Blender's
 // FBX and COLLADA exporters write the light's colour times its power in watts divided by a
 // factor that differs per format. Calibrated against Blender's render of the same scene
@@ -136,9 +134,9 @@ class AssimpReader {
 
  private:
   void visit(const aiNode* node, const Transform& parent, int depth) {
-    if (depth > kMaxDepth) {
+    if (depth > kMaxModelNodeDepth) {
       throw ModelFileError("model file \"" + path_ + "\": the node tree is deeper than " +
-                           std::to_string(kMaxDepth));
+                           std::to_string(kMaxModelNodeDepth));
     }
     const Transform world = parent * transformOf(node->mTransformation);
     nodeTransforms_.emplace(node->mName.C_Str(), world);
@@ -151,9 +149,9 @@ class AssimpReader {
       if (m >= scene_->mNumMeshes) continue;  // assimp's validation refuses these
       std::shared_ptr<const TriangleMesh> mesh = meshAt(m);
       if (mesh == nullptr) continue;
-      if (out_.objects.size() >= kMaxObjects) {
+      if (out_.objects.size() >= kMaxModelObjects) {
         throw ModelFileError("model file \"" + path_ + "\" places meshes more than " +
-                             std::to_string(kMaxObjects) + " times");
+                             std::to_string(kMaxModelObjects) + " times");
       }
       out_.objects.push_back({InstanceShape{std::move(mesh), world},
                               material(scene_->mMeshes[m]->mMaterialIndex)});

@@ -8,10 +8,6 @@ namespace prt {
 
 namespace {
 
-std::string at(const Token& token) {
-  return "line " + std::to_string(token.line) + ", column " + std::to_string(token.column);
-}
-
 const Token& expectOpen(TokenStream& in, const Token& keyword, const std::string& title) {
   const Token& open = in.next();
   if (open.kind != TokenKind::LeftBrace) {
@@ -40,8 +36,8 @@ const Token* BlockReader::next() {
     case TokenKind::Word:
       break;
     case TokenKind::End:
-      in_.fail(token, "unexpected end of file: the '" + title_ + "' block opened at " + at(open_) +
-                          " has no closing '}'");
+      in_.fail(token, "unexpected end of file: the '" + title_ + "' block opened at " +
+                          lineAndColumn(open_) + " has no closing '}'");
     case TokenKind::Number: {
       const bool afterNumber = index > 0 && in_.at(index - 1).kind == TokenKind::Number;
       in_.fail(token, "expected a parameter name or '}' in the '" + title_ + "' block, found " +
@@ -59,14 +55,15 @@ const Token* BlockReader::next() {
                           didYouMean(token.text, params_) +
                           "; valid parameters: " + joinNames(params_);
     if (isDirective(token.text)) {
-      message += " (is the '}' of the block opened at " + at(open_) + " missing?)";
+      message += " (is the '}' of the block opened at " + lineAndColumn(open_) + " missing?)";
     }
     in_.fail(token, message);
   }
   for (const Given& given : given_) {
     if (given.name == *known && *known != "key") {  // keyframes come one after another
       in_.fail(token, "duplicate parameter '" + token.text + "' in the '" + title_ +
-                          "' block; it was already given at " + at(in_.at(given.nameIndex)));
+                          "' block; it was already given at " +
+                          lineAndColumn(in_.at(given.nameIndex)));
     }
   }
   given_.push_back(Given{*known, index});

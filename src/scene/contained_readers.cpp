@@ -10,6 +10,7 @@
 #include "core/byte_codec.h"
 #include "core/contained_call.h"
 #include "core/memory_budget.h"
+#include "core/text.h"
 #include "scene/asset_pack.h"
 
 namespace prt {
@@ -60,10 +61,6 @@ std::vector<uint8_t> getPack(ByteReader& r) {
 int lineOf(const std::exception& e) {
   const auto* mesh = dynamic_cast<const MeshFileError*>(&e);
   return mesh != nullptr ? mesh->line() : 0;
-}
-
-std::string quoted(const std::string& path) {
-  return "\"" + path + "\"";
 }
 
 // What a failure of the child says, after "<what> FILE ".
@@ -129,7 +126,7 @@ LoadedMesh loadMeshFileContained(const MeshSource& source) {
         readerLimits(source.file, 0), lineOf);
   } catch (const ContainedFailure& f) {
     if (f.cause() == ContainedFailure::Cause::Threw) throw MeshFileError(f.what(), f.line());
-    throw MeshFileError("mesh file " + quoted(source.file) + " " + failureText(f));
+    throw MeshFileError("mesh file " + quote(source.file) + " " + failureText(f));
   }
   try {
     ByteReader r(bytes.data(), bytes.size(), "mesh from the reader");
@@ -143,7 +140,7 @@ LoadedMesh loadMeshFileContained(const MeshSource& source) {
   } catch (const std::bad_alloc&) {
     throw;
   } catch (const std::exception& e) {
-    throw MeshFileError("mesh file " + quoted(source.file) + " could not be read: " + e.what());
+    throw MeshFileError("mesh file " + quote(source.file) + " could not be read: " + e.what());
   }
 }
 
@@ -178,7 +175,7 @@ ImportedModel readAssimpFileContained(const std::string& path, const ModelReadOp
         readerLimits(path, options.textureBudgetBytes));
   } catch (const ContainedFailure& f) {
     if (f.cause() == ContainedFailure::Cause::Threw) throw ModelFileError(f.what());
-    throw ModelFileError("model file " + quoted(path) + " " + failureText(f));
+    throw ModelFileError("model file " + quote(path) + " " + failureText(f));
   }
   try {
     ByteReader r(bytes.data(), bytes.size(), "model from the reader");
@@ -206,7 +203,7 @@ ImportedModel readAssimpFileContained(const std::string& path, const ModelReadOp
   } catch (const std::bad_alloc&) {
     throw;
   } catch (const std::exception& e) {
-    throw ModelFileError("model file " + quoted(path) + " could not be read: " + e.what());
+    throw ModelFileError("model file " + quote(path) + " could not be read: " + e.what());
   }
 }
 

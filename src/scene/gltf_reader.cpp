@@ -36,10 +36,6 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr uintmax_t kMaxGltfFileBytes = uintmax_t{2} << 30;
-// Placements of meshes in one file: each costs its scene and every worker a few hundred bytes,
-// so a small file placing meshes many times over could ask for any amount of memory.
-constexpr size_t kMaxObjects = size_t{1} << 20;
-constexpr int kMaxDepth = 1024;                   // of the node tree
 // Photometric glTF units to PRT's: Blender writes 683 lm/W (its default, "Standard"
 // lighting mode) and renders a Lambertian surface with 1/pi of the irradiance.
 constexpr double kLightScale = 1.0 / (683.0 * std::numbers::pi);
@@ -318,9 +314,9 @@ class GltfReader {
                            " has more than one parent (glTF's nodes form trees)");
     }
     visited_[i] = 1;
-    if (depth > kMaxDepth) {
+    if (depth > kMaxModelNodeDepth) {
       throw ModelFileError("model file \"" + path_ + "\": the node tree is deeper than " +
-                           std::to_string(kMaxDepth));
+                           std::to_string(kMaxModelNodeDepth));
     }
     const tinygltf::Node& node = model_.nodes[i];
     const Transform world = parent * localTransform(node);
@@ -466,9 +462,9 @@ class GltfReader {
       if (!primitive.targets.empty()) ++notes_.morphed;
       std::shared_ptr<const TriangleMesh> triangles = primitiveMesh(node.mesh, p, primitive);
       if (triangles == nullptr) continue;
-      if (out_.objects.size() >= kMaxObjects) {
+      if (out_.objects.size() >= kMaxModelObjects) {
         throw ModelFileError("model file \"" + path_ + "\" places meshes more than " +
-                             std::to_string(kMaxObjects) + " times");
+                             std::to_string(kMaxModelObjects) + " times");
       }
       out_.objects.push_back({InstanceShape{std::move(triangles), world}, material(primitive.material)});
     }

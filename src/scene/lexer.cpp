@@ -165,6 +165,10 @@ std::string describe(const Token& token) {
   }
 }
 
+std::string lineAndColumn(const Token& token) {
+  return "line " + std::to_string(token.line) + ", column " + std::to_string(token.column);
+}
+
 std::vector<Token> tokenize(const SourceText& source) {
   return Lexer(source).run();
 }

@@ -33,6 +33,9 @@ struct Token {
 // How a token reads in an error message: 'radius', '1.5', "out.png", '{', end of file.
 std::string describe(const Token& token);
 
+// Where a token is, for messages that point elsewhere: "line 3, column 7".
+std::string lineAndColumn(const Token& token);
+
 // The whole text as tokens, always ending with one End token. Throws InputError at the
 // culprit for an unexpected character or a bad string.
 std::vector<Token> tokenize(const SourceText& source);

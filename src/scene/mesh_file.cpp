@@ -14,16 +14,13 @@
 #include "core/input_error.h"
 #include "core/input_file.h"
 #include "core/portable_math.h"
+#include "core/text.h"
 #include "scene/contained_readers.h"
 #include "scene/mesh_text_check.h"
 #include "scene/placed_meshes.h"
 
 namespace prt {
 namespace {
-
-std::string quoted(const std::string& path) {
-  return "\"" + path + "\"";
-}
 
 std::string readFile(const std::string& path) {
   std::string text;
@@ -32,7 +29,7 @@ std::string readFile(const std::string& path) {
   } catch (const InputError& e) {
     throw MeshFileError(e.what());
   }
-  if (text.empty()) throw MeshFileError("mesh file " + quoted(path) + " is empty");
+  if (text.empty()) throw MeshFileError("mesh file " + quote(path) + " is empty");
   return text;
 }
 
@@ -42,10 +39,6 @@ Vec3 rotated(Vec3 p, const double sines[3], const double cosines[3]) {
   p = {cosines[1] * p.x + sines[1] * p.z, p.y, cosines[1] * p.z - sines[1] * p.x};
   p = {cosines[2] * p.x - sines[2] * p.y, sines[2] * p.x + cosines[2] * p.y, p.z};
   return p;
-}
-
-bool finite(const Vec3& v) {
-  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
 
 void warnIf(std::vector<std::string>& warnings, size_t count, const std::string& what,
@@ -92,7 +85,7 @@ class VertexJoiner {
 LoadedMesh placeMesh(std::vector<Vec3> vertices, std::vector<std::array<uint32_t, 3>> triangles,
                      std::vector<Vec3> normals, const MeshSource& source) {
   const std::string where =
-      source.file.empty() ? std::string("triangles") : "mesh file " + quoted(source.file);
+      source.file.empty() ? std::string("triangles") : "mesh file " + quote(source.file);
   LoadedMesh out;
   auto mesh = std::make_shared<TriangleMesh>();
   double sines[3], cosines[3];
@@ -117,7 +110,7 @@ LoadedMesh placeMesh(std::vector<Vec3> vertices, std::vector<std::array<uint32_t
     const Vec3 m = scaled ? Vec3(n.x / s.x, n.y / s.y, n.z / s.z) : n;
     const Vec3 turned = rotating ? rotated(m, sines, cosines) : m;
     const double size = length(turned);
-    n = finite(turned) && size > 0 ? turned / size : Vec3();
+    n = isFinite(turned) && size > 0 ? turned / size : Vec3();
   }
 
   size_t outOfRange = 0, notFinite = 0, zeroArea = 0;
@@ -128,7 +121,7 @@ LoadedMesh placeMesh(std::vector<Vec3> vertices, std::vector<std::array<uint32_t
       continue;
     }
     const Vec3 &a = vertices[t[0]], &b = vertices[t[1]], &c = vertices[t[2]];
-    if (!finite(a) || !finite(b) || !finite(c)) {
+    if (!isFinite(a) || !isFinite(b) || !isFinite(c)) {
       ++notFinite;
       continue;
     }
@@ -194,7 +187,7 @@ LoadedMesh loadMeshFileHere(const MeshSource& source) {
   if (scene == nullptr) {
     // assimp catches an allocation that failed and keeps only its name.
     if (std::string(importer.GetErrorString()) == "std::bad_alloc") throw std::bad_alloc();
-    throw MeshFileError("mesh file " + quoted(path) +
+    throw MeshFileError("mesh file " + quote(path) +
                         " could not be read: " + importer.GetErrorString());
   }
   const std::vector<PlacedMesh> placed = placedMeshes(*scene, path);
@@ -235,12 +228,12 @@ LoadedMesh loadMeshFileHere(const MeshSource& source) {
   LoadedMesh loaded =
       placeMesh(std::move(vertices), std::move(triangles), std::move(normals), source);
   if (outOfRange > 0) {
-    loaded.warnings.push_back("mesh file " + quoted(path) + ": skipped " +
+    loaded.warnings.push_back("mesh file " + quote(path) + ": skipped " +
                               std::to_string(outOfRange) +
                               " triangles with a vertex index out of range");
   }
   if (notTriangles > 0) {
-    loaded.warnings.push_back("mesh file " + quoted(path) + ": skipped " +
+    loaded.warnings.push_back("mesh file " + quote(path) + ": skipped " +
                               std::to_string(notTriangles) + " points and lines (not triangles)");
   }
   return loaded;

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <vector>
 
+#include "core/text.h"
 #include "scene/mesh_file.h"
 
 namespace prt {
@@ -49,24 +50,16 @@ class Lines {
   throw MeshFileError(file + ":" + std::to_string(line) + ": " + message, line);
 }
 
-// Built by appending: GCC 12 warns falsely (-Wrestrict) about "'" + std::string(...).
-std::string quote(std::string_view word) {
-  std::string out = "'";
-  out += word;
-  out += '\'';
-  return out;
-}
-
 // A finite number, the whole word.
 double number(std::string_view word, const std::string& file, int line, const char* what) {
   const std::string text(word);
   char* end = nullptr;
   const double value = std::strtod(text.c_str(), &end);
   if (end == text.c_str() || *end != '\0') {
-    fail(file, line, std::string("expected a number for ") + what + ", found " + quote(word));
+    fail(file, line, std::string("expected a number for ") + what + ", found " + quote(word, '\''));
   }
   if (!std::isfinite(value)) {
-    fail(file, line, std::string(what) + " is " + quote(word) + ", not a finite number");
+    fail(file, line, std::string(what) + " is " + quote(word, '\'') + ", not a finite number");
   }
   return value;
 }
@@ -78,7 +71,8 @@ long long integer(std::string_view word, const std::string& file, int line, cons
   errno = 0;
   const long long value = std::strtoll(text.c_str(), &end, 10);
   if (end == text.c_str() || *end != '\0' || errno == ERANGE) {
-    fail(file, line, std::string("expected an integer for ") + what + ", found " + quote(word));
+    fail(file, line,
+         std::string("expected an integer for ") + what + ", found " + quote(word, '\''));
   }
   return value;
 }
@@ -109,7 +103,7 @@ void checkObj(std::string_view text, const std::string& file) {
                                        : "a texture coordinate";
       if (words.size() < least + 1) {
         fail(file, line,
-             quote(key) + " needs " + std::to_string(least) + " numbers, found " +
+             quote(key, '\'') + " needs " + std::to_string(least) + " numbers, found " +
                  std::to_string(words.size() - 1));
       }
       for (size_t i = 1; i < words.size(); ++i) number(words[i], file, line, what);
@@ -140,8 +134,9 @@ void checkObj(std::string_view text, const std::string& file) {
           const long long resolved = k < 0 ? seen[part] + 1 + k : k;
           if (k == 0 || resolved < 1 || resolved > counts[part]) {
             fail(file, line,
-                 std::string(kWhat[part]) + " " + quote(index) + " is out of range: the file has " +
-                     std::to_string(counts[part]) + " " + kNoun[part] +
+                 std::string(kWhat[part]) + " " + quote(index, '\'') +
+                     " is out of range: the file has " + std::to_string(counts[part]) + " " +
+                     kNoun[part] +
                      (k < 0 ? " (" + std::to_string(seen[part]) + " before this line)" : ""));
           }
         }
@@ -184,13 +179,13 @@ PlyHeader readPlyHeader(Lines& lines, const std::string& file) {
       h.format = words[1];
       if (h.format != "ascii" && h.format != "binary_little_endian" &&
           h.format != "binary_big_endian") {
-        fail(file, line, "unknown PLY format " + quote(h.format));
+        fail(file, line, "unknown PLY format " + quote(h.format, '\''));
       }
     } else if (words[0] == "end_header") {
       ended = true;
     } else if (words[0] == "element" && words.size() == 3) {
       const long long count = integer(words[2], file, line, "an element count");
-      if (count < 0) fail(file, line, "element " + quote(words[1]) + " has a negative count");
+      if (count < 0) fail(file, line, "element " + quote(words[1], '\'') + " has a negative count");
       h.elements.push_back({words[1], count, {}});
       if (words[1] == "vertex") h.vertices = count;
     } else if (words[0] == "property" && !h.elements.empty() && words.size() >= 3) {
@@ -200,7 +195,7 @@ PlyHeader readPlyHeader(Lines& lines, const std::string& file) {
       PlyProperty p{words.back(), list, list ? words[3] : words[1], list ? words[2] : ""};
       h.elements.back().properties.push_back(p);
     } else {
-      fail(file, line, "malformed PLY header line starting " + quote(words[0]));
+      fail(file, line, "malformed PLY header line starting " + quote(words[0], '\''));
     }
   }
   if (!ended) fail(file, lines.number(), "the PLY header has no 'end_header'");
@@ -246,7 +241,7 @@ void checkAsciiPly(Lines& lines, const PlyHeader& header, const std::string& fil
           const long long index = integer(words[w], file, line, "a vertex index");
           if (index < 0 || index >= vertices) {
             fail(file, line,
-                 "vertex index " + quote(words[w]) + " is out of range: the file has " +
+                 "vertex index " + quote(words[w], '\'') + " is out of range: the file has " +
                      std::to_string(vertices) + " vertices (indices 0 to " +
                      std::to_string(vertices - 1) + ")");
           }
@@ -308,7 +303,7 @@ void checkBinaryPly(std::string_view text, size_t at, const PlyHeader& header,
     for (const PlyProperty& p : e.properties) {
       if (plySize(p.type) == 0 ||
           (p.list && (plySize(p.countType) == 0 || plyIsFloat(p.countType)))) {
-        throw MeshFileError(file + ": unknown PLY type in property " + quote(p.name));
+        throw MeshFileError(file + ": unknown PLY type in property " + quote(p.name, '\''));
       }
     }
   }
@@ -352,12 +347,6 @@ void checkBinaryPly(std::string_view text, size_t at, const PlyHeader& header,
       }
     }
   }
-}
-
-std::string lowerExtension(const std::string& file) {
-  std::string e = std::filesystem::path(file).extension().string();
-  for (char& c : e) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return e;
 }
 
 }  // namespace

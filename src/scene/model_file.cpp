@@ -2,6 +2,7 @@
 
 #include "core/input_error.h"
 #include "core/input_file.h"
+#include "core/text.h"
 #include "scene/contained_readers.h"
 
 #include <assimp/Importer.hpp>
@@ -12,12 +13,6 @@
 
 namespace prt {
 namespace {
-
-std::string lowerExtension(const std::string& path) {
-  std::string e = std::filesystem::path(path).extension().string();
-  for (char& c : e) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return e;
-}
 
 bool isGltf(const std::string& path) {
   const std::string e = lowerExtension(path);

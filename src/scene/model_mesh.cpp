@@ -6,8 +6,6 @@
 namespace prt {
 namespace {
 
-bool finite(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
-
 void line(std::vector<std::string>& warnings, const std::string& file, size_t count,
           const std::string& what) {
   if (count == 0) return;
@@ -38,7 +36,7 @@ std::shared_ptr<const TriangleMesh> cleanMesh(RawMesh raw, MeshSkips& skips) {
       continue;
     }
     const Vec3 &a = raw.positions[t[0]], &b = raw.positions[t[1]], &c = raw.positions[t[2]];
-    if (!finite(a) || !finite(b) || !finite(c)) {
+    if (!isFinite(a) || !isFinite(b) || !isFinite(c)) {
       ++skips.notFinite;
       continue;
     }
@@ -59,7 +57,7 @@ std::shared_ptr<const TriangleMesh> cleanMesh(RawMesh raw, MeshSkips& skips) {
         if (!raw.normals.empty()) {
           const Vec3& normal = raw.normals[v];
           const double size = length(normal);
-          mesh->normals.push_back(finite(normal) && size > 0 ? normal / size : Vec3());
+          mesh->normals.push_back(isFinite(normal) && size > 0 ? normal / size : Vec3());
         }
         if (!raw.uvs.empty()) {
           auto uv = raw.uvs[v];

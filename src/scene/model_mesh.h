@@ -15,6 +15,12 @@
 
 namespace prt {
 
+// The readers' bounds on what one model file may ask for. Each placement of a mesh costs its
+// scene and every worker a few hundred bytes, so a small file placing meshes many times over
+// could ask for any amount of memory; and the node tree is walked recursively.
+inline constexpr size_t kMaxModelObjects = size_t{1} << 20;
+inline constexpr int kMaxModelNodeDepth = 1024;
+
 struct RawMesh {
   std::vector<Vec3> positions;
   std::vector<Vec3> normals;                 // empty or one per position

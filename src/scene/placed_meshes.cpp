@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "core/memory_budget.h"
+#include "core/text.h"
 #include "scene/mesh_file.h"
 
 namespace prt {
@@ -36,10 +37,6 @@ bool exactlyIdentity(const aiMatrix4x4& m) {
   return true;
 }
 
-std::string quoted(const std::string& path) {
-  return "\"" + path + "\"";
-}
-
 }  // namespace
 
 std::vector<PlacedMesh> placedMeshes(const aiScene& scene, const std::string& path) {
@@ -62,7 +59,7 @@ std::vector<PlacedMesh> placedMeshes(const aiScene& scene, const std::string& pa
     const Visit visit = stack.back();
     stack.pop_back();
     if (++visited > kMaxPlacedNodes || visit.depth > kMaxNodeDepth) {
-      throw MeshFileError("mesh file " + quoted(path) + ": its node tree is larger than " +
+      throw MeshFileError("mesh file " + quote(path) + ": its node tree is larger than " +
                           std::to_string(kMaxPlacedNodes) + " nodes or deeper than " +
                           std::to_string(kMaxNodeDepth));
     }
@@ -72,7 +69,7 @@ std::vector<PlacedMesh> placedMeshes(const aiScene& scene, const std::string& pa
     for (unsigned i = 0; i < node.mNumMeshes; ++i) {
       const unsigned index = node.mMeshes[i];
       if (index >= scene.mNumMeshes || scene.mMeshes[index] == nullptr) {
-        throw MeshFileError("mesh file " + quoted(path) + ": node \"" +
+        throw MeshFileError("mesh file " + quote(path) + ": node \"" +
                             std::string(node.mName.C_Str()) + "\" refers to mesh " +
                             std::to_string(index) + ", which the file does not have");
       }
@@ -80,7 +77,7 @@ std::vector<PlacedMesh> placedMeshes(const aiScene& scene, const std::string& pa
       // Each placement is a copy of the mesh's vertices (position and normal, in doubles).
       vertexBytes += uint64_t{mesh.mNumVertices} * 48 + uint64_t{mesh.mNumFaces} * 12;
       if (vertexBytes > budget) {
-        throw MeshFileError("mesh file " + quoted(path) + ": its placed meshes need more than " +
+        throw MeshFileError("mesh file " + quote(path) + ": its placed meshes need more than " +
                             formatMemorySize(budget) +
                             ", the memory budget (--max-memory sets it)");
       }

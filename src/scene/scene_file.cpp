@@ -12,6 +12,7 @@
 #include <memory>
 
 #include "core/input_file.h"
+#include "core/text.h"
 #include "scene/model_file.h"
 #include "scene/source_text.h"
 
@@ -21,31 +22,27 @@ namespace {
 // Far beyond any hand-written scene; stops /dev/zero or a wrong huge file from eating memory.
 constexpr size_t kMaxSceneFileBytes = size_t{64} << 20;
 
-std::string quoted(const std::string& path) {
-  return "'" + path + "'";
-}
-
 std::string readWholeFile(const std::string& path) {
   namespace fs = std::filesystem;
   if (path.empty()) throw InputError("no scene file name given");
   std::error_code error;
   const fs::file_status status = fs::status(path, error);
   if (status.type() == fs::file_type::not_found) {
-    throw InputError("scene file " + quoted(path) + " does not exist");
+    throw InputError("scene file " + quote(path, '\'') + " does not exist");
   }
   if (status.type() == fs::file_type::directory) {
-    throw InputError(quoted(path) + " is a directory, not a scene file");
+    throw InputError(quote(path, '\'') + " is a directory, not a scene file");
   }
   // A FIFO would block until some writer comes, a device may never end (/dev/zero) or wait
   // for input (a terminal): only regular files are read.
   if (const std::string kind = specialFileKind(status.type()); !kind.empty()) {
-    throw InputError(quoted(path) + " is " + kind + ", not a regular file; give a scene file");
+    throw InputError(quote(path, '\'') + " is " + kind + ", not a regular file; give a scene file");
   }
 
   const std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"),
                                                              &std::fclose);
   if (!file) {
-    throw InputError("cannot open scene file " + quoted(path) + ": " + std::strerror(errno));
+    throw InputError("cannot open scene file " + quote(path, '\'') + ": " + std::strerror(errno));
   }
   std::string text;
   char buffer[1 << 16];
@@ -53,12 +50,12 @@ std::string readWholeFile(const std::string& path) {
   while ((count = std::fread(buffer, 1, sizeof buffer, file.get())) > 0) {
     text.append(buffer, count);
     if (text.size() > kMaxSceneFileBytes) {
-      throw InputError("scene file " + quoted(path) + " is too large (over " +
+      throw InputError("scene file " + quote(path, '\'') + " is too large (over " +
                        std::to_string(kMaxSceneFileBytes >> 20) + " MiB); is it a scene?");
     }
   }
   if (std::ferror(file.get())) {
-    throw InputError("cannot read scene file " + quoted(path) + ": " + std::strerror(errno));
+    throw InputError("cannot read scene file " + quote(path, '\'') + ": " + std::strerror(errno));
   }
   return text;
 }
@@ -97,19 +94,20 @@ void checkIsText(std::string_view text, const std::string& path) {
     const auto u = static_cast<unsigned char>(c);
     const std::string where = " (line " + std::to_string(line) + ")";
     if (u == 0) {
-      throw InputError(quoted(path) + " is a binary file, not a scene: it contains NUL bytes" +
+      throw InputError(quote(path, '\'') + " is a binary file, not a scene: it contains NUL bytes" +
                        where);
     }
     const bool whiteSpace = c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\v';
     if ((u < 0x20 && !whiteSpace) || u == 0x7F) {
       char code[8];
       std::snprintf(code, sizeof code, "0x%02X", static_cast<unsigned>(u));
-      throw InputError(quoted(path) + " is not a text scene file: it contains control character " +
-                       code + where);
+      throw InputError(quote(path, '\'') +
+                       " is not a text scene file: it contains control character " + code + where);
     }
     const size_t length = utf8Length(text, i);
     if (length == 0) {
-      throw InputError(quoted(path) + " is not a text scene file: it is not valid UTF-8" + where);
+      throw InputError(quote(path, '\'') + " is not a text scene file: it is not valid UTF-8" +
+                       where);
     }
     if (endsLine(text, i)) ++line;
     i += length;
@@ -171,10 +169,10 @@ Scene loadSceneFile(const std::string& path, const SceneReadOptions& options) {
     std::error_code error;
     const auto status = std::filesystem::status(path, error);
     if (status.type() == std::filesystem::file_type::not_found) {
-      throw InputError("model file " + quoted(path) + " does not exist");
+      throw InputError("model file " + quote(path, '\'') + " does not exist");
     }
     if (status.type() != std::filesystem::file_type::regular) {
-      throw InputError(quoted(path) + " is not a regular file; give a scene or model file");
+      throw InputError(quote(path, '\'') + " is not a regular file; give a scene or model file");
     }
     ModelCache local;
     ModelCache& models = options.models != nullptr ? *options.models : local;
@@ -202,7 +200,7 @@ Scene loadSceneFile(const std::string& path, const SceneReadOptions& options) {
   if (body.starts_with("\xEF\xBB\xBF")) body.remove_prefix(3);
   checkIsText(body, path);
   if (!hasContent(body)) {
-    throw InputError("scene file " + quoted(path) + " is empty" +
+    throw InputError("scene file " + quote(path, '\'') + " is empty" +
                      (body.empty() ? "" : " (it has only comments and white space)"));
   }
   return parseScene(body, path, options);

@@ -27,10 +27,6 @@ constexpr int64_t kMaxImagePixels = int64_t{1} << 28;
 
 const Range kSize = Range{0, kMaxCoordinate, true, false};  // in (0, kMaxCoordinate]
 
-std::string at(const Token& token) {
-  return "line " + std::to_string(token.line) + ", column " + std::to_string(token.column);
-}
-
 bool isName(const std::string& word) {
   return std::all_of(word.begin(), word.end(), [](char c) {
     return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_';
@@ -106,8 +102,8 @@ class SceneParser {
   // Blocks that describe the whole scene may appear once.
   void once(const Token& keyword, const Token*& seen) {
     if (seen != nullptr) {
-      in_.fail(keyword,
-               "duplicate '" + keyword.text + "' block; the scene already has one at " + at(*seen));
+      in_.fail(keyword, "duplicate '" + keyword.text + "' block; the scene already has one at " +
+                            lineAndColumn(*seen));
     }
     seen = &keyword;
   }
@@ -328,8 +324,8 @@ class SceneParser {
                          "or '_'");
     }
     if (const auto found = materials_.find(name.text); found != materials_.end()) {
-      in_.fail(name,
-               "material '" + name.text + "' is already defined at " + at(*found->second.name));
+      in_.fail(name, "material '" + name.text + "' is already defined at " +
+                         lineAndColumn(*found->second.name));
     }
     Material material = readSurface(in_, name, "material " + name.text, materials_);
     materials_.emplace(name.text, NamedMaterial{material, &name});

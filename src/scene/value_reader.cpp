@@ -3,6 +3,7 @@
 #include <cctype>
 #include <cmath>
 
+#include "core/text.h"
 #include "scene/number_text.h"
 
 namespace prt {
@@ -11,16 +12,6 @@ namespace {
 std::string lowerCase(std::string_view text) {
   std::string out(text);
   for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return out;
-}
-
-// 'param', built by appending: GCC 12 warns falsely (-Wrestrict) about "'" + std::string(...).
-std::string quote(std::string_view param) {
-  std::string out;
-  out.reserve(param.size() + 2);
-  out += '\'';
-  out += param;
-  out += '\'';
   return out;
 }
 
@@ -86,7 +77,7 @@ std::string Range::describe() const {
 }
 
 double readNumber(TokenStream& in, std::string_view param, Range range) {
-  const std::string what = quote(param);
+  const std::string what = quote(param, '\'');
   const Token& token = in.next();
   const double value = parseDoubleToken(in, token, what);
   checkRange(in, token, what, value, range);
@@ -94,7 +85,7 @@ double readNumber(TokenStream& in, std::string_view param, Range range) {
 }
 
 int readInteger(TokenStream& in, std::string_view param, int min, int max) {
-  const std::string what = quote(param);
+  const std::string what = quote(param, '\'');
   const std::string allowed =
       "a whole number in [" + std::to_string(min) + ", " + std::to_string(max) + "]";
   const Token& token = in.next();
@@ -117,7 +108,7 @@ namespace {
 
 Vec3 readTriple(TokenStream& in, std::string_view param, const Range& componentRange,
                 const char* const (&axes)[3]) {
-  const std::string what = quote(param);
+  const std::string what = quote(param, '\'');
   Vec3 value;
   for (int i = 0; i < 3; ++i) {
     const Token& token = in.next();
@@ -149,8 +140,8 @@ Vec3 readColor(TokenStream& in, std::string_view param) {
 std::string readString(TokenStream& in, std::string_view param) {
   const Token& token = in.next();
   if (token.kind != TokenKind::String) {
-    in.fail(token,
-            quote(param) + " needs a quoted string such as \"out.png\", found " + describe(token));
+    in.fail(token, quote(param, '\'') + " needs a quoted string such as \"out.png\", found " +
+                       describe(token));
   }
   return token.text;
 }

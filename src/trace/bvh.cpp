@@ -8,7 +8,7 @@
 namespace prt {
 namespace {
 
-constexpr int kBins = 12;
+constexpr int kBvhBins = 12;
 constexpr uint32_t kMaxLeafItems = 4;
 
 }  // namespace
@@ -69,11 +69,11 @@ uint32_t Bvh::build(const std::vector<Bounds>& bounds, uint32_t begin, uint32_t 
   if (extent > 0) {
     // Binned surface-area heuristic along the longest centroid axis.
     auto binOf = [&](uint32_t item) {
-      const int b = static_cast<int>(kBins * (bounds[item].centroid()[axis] - lo) / extent);
-      return std::min(b, kBins - 1);
+      const int b = static_cast<int>(kBvhBins * (bounds[item].centroid()[axis] - lo) / extent);
+      return std::min(b, kBvhBins - 1);
     };
-    Bounds binBox[kBins];
-    uint32_t binCount[kBins] = {};
+    Bounds binBox[kBvhBins];
+    uint32_t binCount[kBvhBins] = {};
     for (uint32_t i = begin; i < end; ++i) {
       const int b = binOf(items_[i]);
       binBox[b].extend(bounds[items_[i]]);
@@ -81,11 +81,11 @@ uint32_t Bvh::build(const std::vector<Bounds>& bounds, uint32_t begin, uint32_t 
     }
     double bestCost = std::numeric_limits<double>::infinity();
     int bestSplit = -1;
-    for (int split = 1; split < kBins; ++split) {
+    for (int split = 1; split < kBvhBins; ++split) {
       Bounds left, right;
       uint32_t nl = 0, nr = 0;
       for (int b = 0; b < split; ++b) { left.extend(binBox[b]); nl += binCount[b]; }
-      for (int b = split; b < kBins; ++b) { right.extend(binBox[b]); nr += binCount[b]; }
+      for (int b = split; b < kBvhBins; ++b) { right.extend(binBox[b]); nr += binCount[b]; }
       if (nl == 0 || nr == 0) continue;
       const double cost = nl * left.surfaceArea() + nr * right.surfaceArea();
       if (cost < bestCost) { bestCost = cost; bestSplit = split; }
