@@ -29,18 +29,13 @@ double adaptiveFactoringChunk(double d, double inverseSum, double muWorker, doub
 void AdaptiveFactoringStrategy::prepare(const StartInfo& info) {
   taskCount_ = info.taskCount;
   byMu_.clear();
-  indexedMu_.clear();
   varianceOverMu_.clear();
   inverseMu_.clear();
 }
 
 void AdaptiveFactoringStrategy::onWorkerChanged(int worker) {
-  const auto w = static_cast<size_t>(worker);
-  if (w >= indexedMu_.size()) indexedMu_.resize(w + 1, 0);
-  if (indexedMu_[w] > 0) byMu_.erase({indexedMu_[w], worker});
   const double mu = workers().isLive(worker) ? throughput().meanTaskSeconds(worker) : 0;
-  indexedMu_[w] = mu;
-  if (mu > 0) byMu_.emplace(mu, worker);
+  byMu_.set(worker, mu);
   varianceOverMu_.set(worker, mu > 0 ? throughput().taskSecondsVariance(worker) / mu : 0);
   inverseMu_.set(worker, mu > 0 ? 1.0 / mu : 0);
 }
@@ -56,10 +51,10 @@ TaskSet AdaptiveFactoringStrategy::initialPool(const StartInfo& info) {
 uint64_t AdaptiveFactoringStrategy::handOutSize(int worker) {
   // The fastest measured worker stands in for those not measured yet.
   if (byMu_.empty()) return minChunk_;  // nothing measured (results without times)
-  const int fastest = byMu_.begin()->second;
+  const int fastest = byMu_.least();
   const double fastestMu = throughput().meanTaskSeconds(fastest);
   const double fastestVariance = throughput().taskSecondsVariance(fastest);
-  const auto unmeasured = static_cast<double>(static_cast<size_t>(workers().liveCount()) - byMu_.size());
+  const auto unmeasured = static_cast<double>(static_cast<size_t>(workers().liveCount()) - byMu_.count());
   const double d = varianceOverMu_.total() + unmeasured * (fastestVariance / fastestMu);
   const double inverseSum = inverseMu_.total() + unmeasured * (1.0 / fastestMu);
   const double own = throughput().meanTaskSeconds(worker);

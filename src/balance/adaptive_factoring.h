@@ -17,9 +17,7 @@
 // Lost workers: see PooledStrategy; P and the sums count live workers only.
 
 #include <cstdint>
-#include <set>
 #include <string>
-#include <utility>
 #include <vector>
 
 #include "balance/pooled_strategy.h"
@@ -48,8 +46,7 @@ class AdaptiveFactoringStrategy final : public PooledStrategy {
  private:
   // Indexed so that no hand-out walks the workers: the live measured workers by mean time per
   // task (the fastest first), and the sums of sigma^2 / mu and 1 / mu over them.
-  std::set<std::pair<double, int>> byMu_;
-  std::vector<double> indexedMu_;  // each worker's mu as entered in byMu_ (0: not there)
+  WorkerMinimum byMu_;
   WorkerSums varianceOverMu_, inverseMu_;
   uint64_t minChunk_;
   uint64_t taskCount_ = 0;

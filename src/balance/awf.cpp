@@ -43,25 +43,20 @@ TaskSet AwfStrategy::initialPool(const StartInfo& info) {
 void AwfStrategy::prepare(const StartInfo& /*info*/) {
   batchLeft_ = 0;
   byWap_.clear();
-  indexedWap_.clear();
   inverseWap_.clear();
 }
 
 void AwfStrategy::onWorkerChanged(int worker) {
-  const auto w = static_cast<size_t>(worker);
-  if (w >= indexedWap_.size()) indexedWap_.resize(w + 1, 0);
-  if (indexedWap_[w] > 0) byWap_.erase({indexedWap_[w], worker});
   const double wap = workers().isLive(worker) ? throughput().weightedAverageTaskSeconds(worker) : 0;
-  indexedWap_[w] = wap;
-  if (wap > 0) byWap_.emplace(wap, worker);
+  byWap_.set(worker, wap);
   inverseWap_.set(worker, wap > 0 ? 1.0 / wap : 0);
 }
 
 uint64_t AwfStrategy::handOutSize(int worker) {
   // awfWeights() for one worker, from the indexed sums: the unmeasured count as the fastest.
-  const double fastest = byWap_.empty() ? 0 : byWap_.begin()->first;
+  const double fastest = byWap_.empty() ? 0 : byWap_.leastValue();
   const double standIn = fastest > 0 ? 1.0 / fastest : 1.0;
-  const auto unmeasured = static_cast<double>(static_cast<size_t>(workers().liveCount()) - byWap_.size());
+  const auto unmeasured = static_cast<double>(static_cast<size_t>(workers().liveCount()) - byWap_.count());
   const double sum = inverseWap_.total() + unmeasured * standIn;
   const double own = throughput().weightedAverageTaskSeconds(worker);
   const double inverse = own > 0 ? 1.0 / own : standIn;

@@ -18,9 +18,7 @@
 // Lost workers: see PooledStrategy; P counts live workers and AWF-B's open batch is closed.
 
 #include <cstdint>
-#include <set>
 #include <string>
-#include <utility>
 #include <vector>
 
 #include "balance/pooled_strategy.h"
@@ -51,8 +49,7 @@ class AwfStrategy final : public PooledStrategy {
  private:
   // Indexed so that no hand-out walks the workers: the live workers with a weighted average
   // time per task by that time (the fastest first), and the sum of its inverse over them.
-  std::set<std::pair<double, int>> byWap_;
-  std::vector<double> indexedWap_;  // each worker's wap as entered in byWap_ (0: not there)
+  WorkerMinimum byWap_;
   WorkerSums inverseWap_;
   Variant variant_;
   uint64_t minChunk_;
