@@ -128,9 +128,11 @@ void addParallelOptions(CLI::App& cmd, RenderOptions& o) {
       ->group(parallel);
   cmd.add_option("--batch-seconds", o.batchSeconds,
                  "Batches grow past --batch pixels to what a worker renders in S seconds at its "
-                 "last batch's rate (at most 64 times --batch; 0: every batch --batch pixels)")
+                 "last batch's rate (0: every batch --batch pixels). Default: 0.03 s, longer "
+                 "past about 1,200 workers (25 us per worker) so that one master is never "
+                 "more than a fifth busy with results")
       ->check(finiteIn(0, 60))
-      ->capture_default_str()
+      ->default_str("auto")
       ->group(parallel);
   cmd.add_option("--batch", o.batchPixels, "Pixels a worker renders between returning results")
       ->check(CLI::Range(1ull, 1ull << 28))  // no image has more pixels; "-1" would wrap
@@ -242,7 +244,7 @@ ParallelOptions toParallelOptions(const RenderOptions& o, int workers) {
       automatic ? (runsSpeedIndexByDefault(p.strategy) ? SpeedIndexKind::Hanoi : SpeedIndexKind::None)
                 : parseSpeedIndexKind(o.speedIndex);
   p.batchPixels = o.batchPixels;
-  p.batchSeconds = o.batchSeconds;
+  p.batchSeconds = o.batchSeconds.value_or(defaultBatchSeconds(p.totalWorkers()));
   p.threads = o.threads;
   p.workerTimeoutSeconds = o.workerTimeoutSeconds;
   p.endgame = o.endgame == "on";

@@ -7,6 +7,7 @@
 
 #include "cli/commands.h"
 #include "cli/strategy_flags.h"
+#include "cluster/leases.h"
 #include "core/frame_sequence.h"
 #include "image/image_io.h"
 
@@ -43,8 +44,9 @@ struct RenderOptions {
   std::string acceptWorkersPath;           // --accept-workers FILE (MPI)
   std::string speedIndex = "auto";         // what workers measure: auto | hanoi | probe | none
   unsigned long long batchPixels = 128;    // pixels per returned batch
-  double batchSeconds = 0.03;              // batches grow to this much work
-  double workerTimeoutSeconds = 5;         // the lease: silence before a worker is lost
+  std::optional<double> batchSeconds;      // batches grow to this much work; none: by the
+                                           // worker count (defaultBatchSeconds)
+  double workerTimeoutSeconds = kDefaultLeaseSeconds;  // the lease: silence before a worker is lost
   double startupTimeoutSeconds = 120;      // --startup-timeout: MPI start-up's deadline
   std::string endgame = "off";             // on | off: copies of the last tasks
   std::string checkpointPath;              // --checkpoint FILE (or, resolved, OUTPUT.ckpt)

@@ -155,7 +155,8 @@ void writeRenderReportAndPage(const RenderOptions& o, const Scene& scene, const 
   context.parameters =
       strategyParameters(o.strategyFlags.name(), strategyOptionsFrom(o.strategyFlags));
   context.parameters.emplace_back("batch_pixels", std::to_string(o.batchPixels));
-  context.parameters.emplace_back("batch_seconds", formatDouble(o.batchSeconds));
+  context.parameters.emplace_back("batch_seconds",
+                                  o.batchSeconds ? formatDouble(*o.batchSeconds) : "auto");
   context.parameters.emplace_back("speed_index", o.speedIndex);
   std::string slowdowns;
   for (double k : o.slowdowns) {

@@ -13,6 +13,7 @@
 #include "cli/run_page_output.h"
 #include "cli/flag_checks.h"
 #include "cli/strategy_flags.h"
+#include "cluster/leases.h"
 #include "core/speed_schedule.h"
 #include "core/input_error.h"
 #include "core/machine.h"
@@ -51,6 +52,7 @@ struct SimulateOptions {
   double latencyMicroseconds = 50;
   double bandwidthMbps = 1000;
   double masterServiceMicroseconds = 5;
+  double workerTimeoutSeconds = kDefaultLeaseSeconds;  // the lease; sets the heartbeat interval
   std::string reportPath;
   std::string tracePath;
   std::string htmlPath;     // the run's page
@@ -124,6 +126,7 @@ int runSimulate(const SimulateOptions& o) {
   options.network.latencySeconds = o.latencyMicroseconds * 1e-6;
   options.network.bandwidthBytesPerSecond = o.bandwidthMbps * 1e6 / 8;
   options.network.masterServiceSeconds = o.masterServiceMicroseconds * 1e-6;
+  options.heartbeatSeconds = heartbeatSecondsFor(o.workerTimeoutSeconds);
   // Cheap checks before building the map: a 4K synthetic map takes a moment.
   validateSimulationOptions(options, ~0ull);
   checkHtmlPath(o.htmlPath);
@@ -300,7 +303,15 @@ Action addSimulateCommand(CLI::App& app, const std::string& commandLine) {
       ->capture_default_str()
       ->group(model);
   cmd->add_option("--master-service-us", o->masterServiceMicroseconds,
-                  "Master busy time per received message, microseconds")
+                  "Master busy time per received message, microseconds (a heartbeat, in or "
+                  "out, costs half of it)")
+      ->capture_default_str()
+      ->group(model);
+  cmd->add_option("--worker-timeout", o->workerTimeoutSeconds,
+                  "The lease, as prt render's: its heartbeat interval (a quarter of it, at "
+                  "most 1 s) sets how often silent workers and the master send heartbeats, "
+                  "which the master's modelled load counts; workers are never lost here")
+      ->check(finiteIn(0.1, 86400))
       ->capture_default_str()
       ->group(model);
 

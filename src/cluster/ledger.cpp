@@ -10,6 +10,7 @@ namespace prt {
 Ledger::Ledger(int workerCount, uint64_t taskCount)
     : workers_(static_cast<size_t>(workerCount)), liveCount_(workerCount), owner_(taskCount, kNotDone), handedOut_(taskCount, false) {
   PRT_CHECK(workerCount >= 1);
+  for (int w = 0; w < workerCount; ++w) byLastHeard_.emplace_hint(byLastHeard_.end(), 0.0, w);
 }
 
 size_t Ledger::index(int worker) const {
@@ -23,6 +24,7 @@ int Ledger::addWorker(double now) {
   h.joinedAt = now;
   workers_.push_back(std::move(h));
   ++liveCount_;
+  byLastHeard_.emplace(now, workerCount() - 1);
   return workerCount() - 1;
 }
 
@@ -36,13 +38,21 @@ void Ledger::seedDone(const TaskSet& done) {
   });
 }
 
+void Ledger::setLastHeard(int worker, double when) {
+  Holding& h = workers_[index(worker)];
+  if (h.live && h.lastHeard != when) {
+    byLastHeard_.erase({h.lastHeard, worker});
+    byLastHeard_.emplace(when, worker);
+  }
+  h.lastHeard = when;
+}
+
 void Ledger::startLeases(double now) {
-  for (Holding& h : workers_) h.lastHeard = now;
+  for (int w = 0; w < workerCount(); ++w) setLastHeard(w, now);
 }
 
 void Ledger::heard(int worker, double now) {
-  Holding& h = workers_[index(worker)];
-  h.lastHeard = std::max(h.lastHeard, now);
+  setLastHeard(worker, std::max(workers_[index(worker)].lastHeard, now));
 }
 
 double Ledger::silentSeconds(int worker, double now) const {
@@ -51,19 +61,17 @@ double Ledger::silentSeconds(int worker, double now) const {
 
 std::vector<int> Ledger::expired(double now, double leaseSeconds) const {
   std::vector<int> out;
-  for (int w = 0; w < workerCount(); ++w) {
-    const Holding& h = workers_[static_cast<size_t>(w)];
-    if (h.live && now - h.lastHeard > leaseSeconds) out.push_back(w);
+  for (const auto& [lastHeard, w] : byLastHeard_) {
+    if (!(now - lastHeard > leaseSeconds)) break;
+    out.push_back(w);
   }
+  std::sort(out.begin(), out.end());
   return out;
 }
 
 double Ledger::nextExpiry(double leaseSeconds) const {
-  double next = std::numeric_limits<double>::infinity();
-  for (const Holding& h : workers_) {
-    if (h.live) next = std::min(next, h.lastHeard + leaseSeconds);
-  }
-  return next;
+  if (byLastHeard_.empty()) return std::numeric_limits<double>::infinity();
+  return byLastHeard_.begin()->first + leaseSeconds;
 }
 
 void Ledger::gave(int worker, const TaskSet& tasks) {
@@ -144,6 +152,7 @@ TaskSet Ledger::unfinishedTail(int worker, uint64_t count) const {
 TaskSet Ledger::markLost(int worker, double now, const std::string& reason) {
   Holding& h = workers_[index(worker)];
   PRT_CHECK(h.live);
+  byLastHeard_.erase({h.lastHeard, worker});
   h.live = false;
   --liveCount_;
   TaskSet left = unfinished(worker);

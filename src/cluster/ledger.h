@@ -13,7 +13,9 @@
 
 #include <cstdint>
 #include <optional>
+#include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/task_set.h"
@@ -46,9 +48,10 @@ class Ledger {
   void startLeases(double now);
   void heard(int worker, double now);
   double silentSeconds(int worker, double now) const;
-  // Live workers silent for longer than `leaseSeconds`, in worker order.
+  // Live workers silent for longer than `leaseSeconds`, in worker order. O(k log W) for k of
+  // them: the live workers are indexed by when they were last heard.
   std::vector<int> expired(double now, double leaseSeconds) const;
-  // When the next lease runs out (for a driver's poll deadline); +inf when none is live.
+  // When the next lease runs out (for a driver's poll deadline); +inf when none is live. O(1).
   double nextExpiry(double leaseSeconds) const;
 
   // Holdings.
@@ -115,8 +118,12 @@ class Ledger {
     uint64_t accepted = 0;  // of those, the ones that were first (in the image)
   };
   size_t index(int worker) const;
+  void setLastHeard(int worker, double when);
 
   std::vector<Holding> workers_;
+  // The live workers by (last heard, worker): a message renews a lease in O(log W), and the
+  // master loop asks for the next expiry after every message without walking the workers.
+  std::set<std::pair<double, int>> byLastHeard_;
   int liveCount_;
   std::vector<int32_t> owner_;  // per task: who delivered its result (4 bytes a pixel)
   std::vector<bool> handedOut_;  // per task: given to a worker at least once

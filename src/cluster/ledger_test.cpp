@@ -5,7 +5,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
+#include <random>
+#include <vector>
 
 namespace prt {
 namespace {
@@ -118,6 +122,44 @@ TEST(LedgerTest, AWorkerThatJoinsIsLiveWithItsOwnLeaseAndCanBeLost) {
   ledger.accept(1, TaskSet::range(0, 2));
   EXPECT_EQ(ledger.markLost(1, 7.0, "silent"), TaskSet::range(2, 3));
   EXPECT_EQ(ledger.liveCount(), 1);
+}
+
+// The lease index against a walk of every worker, under random renewals (some out of time
+// order), losses and joins.
+TEST(LedgerTest, IndexedLeasesAgreeWithAWalkOfEveryWorker) {
+  std::mt19937_64 random(7);
+  Ledger ledger(50, 100);
+  ledger.startLeases(1.0);
+  std::vector<double> heard(50, 1.0);
+  std::vector<bool> live(50, true);
+  double now = 1.0;
+  for (int step = 0; step < 5000; ++step) {
+    now += std::uniform_real_distribution<double>(0, 0.01)(random);
+    const int w = static_cast<int>(random() % static_cast<uint64_t>(ledger.workerCount()));
+    const uint64_t what = random() % 100;
+    if (what < 85) {
+      const double at = now - (what < 10 ? 0.5 : 0.0);  // a late message is no renewal
+      ledger.heard(w, at);
+      heard[static_cast<size_t>(w)] = std::max(heard[static_cast<size_t>(w)], at);
+    } else if (what < 95 && ledger.isLive(w) && ledger.liveCount() > 1) {
+      ledger.markLost(w, now, "test");
+      live[static_cast<size_t>(w)] = false;
+    } else if (what < 97) {
+      ledger.addWorker(now);
+      heard.push_back(now);
+      live.push_back(true);
+    }
+    const double lease = 0.3;
+    std::vector<int> expected;
+    double next = std::numeric_limits<double>::infinity();
+    for (size_t i = 0; i < heard.size(); ++i) {
+      if (!live[i]) continue;
+      if (now - heard[i] > lease) expected.push_back(static_cast<int>(i));
+      next = std::min(next, heard[i] + lease);
+    }
+    ASSERT_EQ(ledger.expired(now, lease), expected) << "step " << step;
+    ASSERT_EQ(ledger.nextExpiry(lease), next) << "step " << step;
+  }
 }
 
 }  // namespace

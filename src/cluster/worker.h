@@ -20,8 +20,28 @@ struct WorkerOptions {
   // message and, on a thread driver, wake-ups: on a 2-core machine, 128-pixel batches of a
   // 4-sample scene cost a worker about 7 % of its time in them alone.
   double batchSeconds = 0;
+  // A batch grows to at most kMaxBatchGrowth times batchPixels, and proportionally more for a
+  // batchSeconds longer than kSmallScaleBatchSeconds (the default of a cluster whose master
+  // is far from busy): a longer batch is asked for to send fewer messages.
   static constexpr uint64_t kMaxBatchGrowth = 64;
+  static constexpr double kSmallScaleBatchSeconds = 0.03;
 };
+
+// The master's CPU time for one results message and its reply, as measured on a 2-core
+// machine under MPI (about 2.5 us per message in or out; docs/results.md, "One master's
+// load"), and the share of the master's time that the results of all workers may take.
+inline constexpr double kMasterSecondsPerResult = 5e-6;
+inline constexpr double kMasterResultsShare = 0.2;
+
+// --batch-seconds' default for `workers` workers: kSmallScaleBatchSeconds, or longer where that
+// many workers each returning a batch so often would keep one master more than
+// kMasterResultsShare busy (25 us per worker: 0.1 s at 4,096 workers, 1.6 s at 65,536).
+inline double defaultBatchSeconds(int workers) {
+  const double scaled =
+      static_cast<double>(workers) * kMasterSecondsPerResult / kMasterResultsShare;
+  return scaled > WorkerOptions::kSmallScaleBatchSeconds ? scaled
+                                                         : WorkerOptions::kSmallScaleBatchSeconds;
+}
 
 class Worker {
  public:

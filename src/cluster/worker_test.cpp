@@ -33,8 +33,27 @@ TEST(WorkerBatches, GrowToTheSecondsAtTheLastRateWithinTheirBounds) {
   w.batchDone(b, 5.0);  // now 1,000 per second: 50 pixels, below the least
   b = w.nextBatch();
   EXPECT_EQ(b.size(), 100u);
-  w.batchDone(b, 1e-9);  // absurdly fast: at most 64 times the least
+  w.batchDone(b, 1e-9);  // absurdly fast: at most 64 times the least, and proportionally
+                        // more for a batch time above the small-scale one (0.05 / 0.03)
+  EXPECT_EQ(w.nextBatch().size(),
+            static_cast<uint64_t>(100.0 * WorkerOptions::kMaxBatchGrowth * 0.05 / 0.03));
+}
+
+TEST(WorkerBatches, AtTheSmallScaleBatchTimeTheGrowthStaysSixtyFourFold) {
+  Worker w = holding(WorkerOptions{100, WorkerOptions::kSmallScaleBatchSeconds}, 1'000'000);
+  w.batchDone(w.nextBatch(), 1e-9);
   EXPECT_EQ(w.nextBatch().size(), 100u * WorkerOptions::kMaxBatchGrowth);
+}
+
+TEST(DefaultBatchSeconds, StaysAtTheSmallScaleValueUntilTheMasterWouldBeAFifthBusy) {
+  EXPECT_EQ(defaultBatchSeconds(1), WorkerOptions::kSmallScaleBatchSeconds);
+  EXPECT_EQ(defaultBatchSeconds(1000), WorkerOptions::kSmallScaleBatchSeconds);
+  // W workers, one result each per batch time, kMasterSecondsPerResult each: a fifth busy.
+  for (int w : {4096, 65536}) {
+    const double share = w * kMasterSecondsPerResult / defaultBatchSeconds(w);
+    EXPECT_NEAR(share, kMasterResultsShare, 1e-12) << w;
+  }
+  EXPECT_NEAR(defaultBatchSeconds(65536), 1.63840, 1e-9);
 }
 
 TEST(WorkerBatches, AnUnmeasuredBatchKeepsTheLastRateAndTheQueueBoundsTheBatch) {

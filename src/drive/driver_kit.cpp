@@ -302,6 +302,7 @@ ParallelRun runMasterSide(Transport& net, const RunRequest& request, const std::
   info.faults.resumedPixels = master.resumedCount();
   info.faults.workerTimeoutSeconds = loop.leaseSeconds;
   info.faults.heartbeatSeconds = loop.heartbeatSeconds;
+  info.master = result.load;
   if (!frameInfo.empty()) {
     info.frames = std::move(frameInfo);
     info.fps = frames.fps;

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "core/cpu_time.h"
+
 namespace prt {
 namespace {
 
@@ -38,7 +40,7 @@ class MasterLoop {
       double deadline = std::min({nextBeat, master_.ledger().nextExpiry(options_.leaseSeconds),
                                   net_.now() + 0.25});
       if (options_.checkpoint) deadline = std::min(deadline, nextCheckpoint);
-      receive(net_.poll(deadline));
+      receive(waitUntil(deadline));
       // Everything already waiting, before leases are judged: a long step of the master's own
       // (a spot check it renders) must not turn heartbeats still in the queue into losses.
       for (Incoming more = net_.poll(net_.now() - 1); more.kind != Incoming::Kind::Timeout;
@@ -50,10 +52,7 @@ class MasterLoop {
       if (options_.tick) options_.tick(now);
       sendOut(master_.expireLeases(now, options_.leaseSeconds));
       if (now >= nextBeat) {
-        const Bytes beat = encode(HeartbeatMsg{});
-        // To every worker, as Master::sendToAll does: one wrongly presumed lost must not
-        // conclude that the master is gone.
-        for (int w = 0; w < master_.workerCount(); ++w) net_.send(w, Channel::Protocol, beat);
+        heartbeat(now);
         nextBeat = now + options_.heartbeatSeconds;
       }
       const size_t losses = master_.ledger().losses().size();
@@ -74,6 +73,8 @@ class MasterLoop {
     }
     result_.elapsedSeconds = net_.now() - start;
     sendOut(master_.stopIfComplete());  // complete before any message: a full checkpoint
+    load_.busySeconds += threadCpuSeconds() - busyFrom_;
+    result_.load = load_;
     logLosses();
     logRejections();
     if (!result_.failure.empty()) {
@@ -113,7 +114,44 @@ class MasterLoop {
     }
   }
 
-  void sendOut(const Outbox& out) { sendOutbox(net_, kMaster, out, log_); }
+  void sendOut(const Outbox& out) {
+    if (out.empty()) return;
+    sendOutbox(net_, kMaster, out, log_);
+    const double now = net_.now();
+    for (const Envelope& e : out) {
+      if (e.to < 0) continue;
+      const auto w = static_cast<size_t>(e.to);
+      if (w >= lastSent_.size()) lastSent_.resize(w + 1, now);
+      lastSent_[w] = now;
+    }
+    load_.sent += out.size();
+  }
+
+  // A heartbeat to every worker the master has sent nothing to for a heartbeat interval, lost
+  // ones included, as Master::sendToAll does: one wrongly presumed lost must not conclude that
+  // the master is gone. A worker that hears from the master anyway needs none, which keeps
+  // the master's own traffic in proportion to the work, not to the number of workers.
+  void heartbeat(double now) {
+    const Bytes beat = encode(HeartbeatMsg{});
+    const auto n = static_cast<size_t>(master_.workerCount());
+    if (lastSent_.size() < n) lastSent_.resize(n, -1e300);
+    for (size_t w = 0; w < n; ++w) {
+      // A little early rather than a whole interval late: rounds come every interval.
+      if (now - lastSent_[w] < 0.75 * options_.heartbeatSeconds) continue;
+      net_.send(static_cast<int>(w), Channel::Protocol, beat);
+      lastSent_[w] = now;
+      ++load_.sent;
+      ++load_.heartbeatsSent;
+    }
+  }
+
+  // A wait for the next message: its time is not the master's work.
+  Incoming waitUntil(double deadline) {
+    load_.busySeconds += threadCpuSeconds() - busyFrom_;
+    Incoming in = net_.poll(deadline);
+    busyFrom_ = threadCpuSeconds();
+    return in;
+  }
 
 
   bool isWorker(int from) const { return from >= 0 && from < master_.workerCount(); }
@@ -145,7 +183,10 @@ class MasterLoop {
                                                      e.what()));
       return;
     }
-    if (!std::holds_alternative<HeartbeatMsg>(m)) {
+    ++load_.received;
+    if (std::holds_alternative<HeartbeatMsg>(m)) {
+      ++load_.heartbeatsReceived;
+    } else {
       log_.add({EventKind::MessageReceived, kMaster, now, now, 0, in.bytes.size(), in.from,
                 messageName(m)});
     }
@@ -214,6 +255,9 @@ class MasterLoop {
   MasterLoopResult result_;
   size_t lossesLogged_ = 0;
   size_t rejectionsLogged_ = 0;
+  MasterLoad load_;
+  double busyFrom_ = threadCpuSeconds();  // CPU time when the master last stopped waiting
+  std::vector<double> lastSent_;          // per worker: when the master last sent it anything
 };
 
 }  // namespace

@@ -9,8 +9,11 @@
 //     hands its unfinished tasks to the live workers. A WorkerLost event marks each loss.
 //   - A worker that joins (PeerJoined) is admitted (Master::onWorkerJoined) and marked by a
 //     WorkerJoined event; one that joins after the end is told to stop.
-//   - The master sends every live worker a heartbeat every `heartbeatSeconds`, so a worker can
-//     tell when the master itself is gone.
+//   - Every `heartbeatSeconds` the master sends a heartbeat to each worker it has sent nothing
+//     to for that long, so a worker can tell when the master itself is gone (any message
+//     shows that; a heartbeat stands in for the silence).
+//   - It measures its own load (MasterLoad): CPU time outside its waits, and every message in
+//     and out, heartbeats included.
 //   - `checkpoint` (optional) is called every `checkpointEverySeconds`, after each loss and
 //     when the run fails or is interrupted, with the reason.
 //   - Once the image is complete, the loop collects the live workers' summaries, waiting at
@@ -21,15 +24,17 @@
 #include <string>
 #include <vector>
 
+#include "cluster/leases.h"
 #include "cluster/master.h"
 #include "drive/transport.h"
 #include "drive/worker_summary.h"
 #include "metrics/events.h"
+#include "metrics/run_report.h"
 
 namespace prt {
 
 struct MasterLoopOptions {
-  double leaseSeconds = 5;            // --worker-timeout
+  double leaseSeconds = kDefaultLeaseSeconds;  // --worker-timeout
   double heartbeatSeconds = 1;        // master -> worker keep-alive
   double checkpointEverySeconds = 10; // --checkpoint-every
   std::function<void(const std::string& why)> checkpoint;  // null: no checkpoints
@@ -46,6 +51,7 @@ struct MasterLoopResult {
   EventLog log;                        // the master's events, on its clock
   double elapsedSeconds = 0;           // from sending the scene to the last result
   std::vector<std::optional<WorkerSummary>> summaries;  // per worker, when it came
+  MasterLoad load;                     // the master's own work, up to the last result
   std::string failure;                 // empty when the image is complete
   int interruptSignal = 0;             // the signal that stopped the run, if one did
 };

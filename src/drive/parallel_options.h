@@ -7,6 +7,8 @@
 #include <vector>
 
 #include "balance/registry.h"
+#include "cluster/leases.h"
+#include "cluster/worker.h"
 #include "core/task_set.h"
 #include "core/speed_index.h"
 #include "core/speed_schedule.h"
@@ -40,10 +42,11 @@ struct ParallelOptions {
   std::vector<double> slowdowns;       // per worker, each >= 1; empty: all 1
   std::vector<SpeedChange> slowdownChanges;  // --slowdown-at: factors >= 1 from a time on
   uint64_t batchPixels = 128;          // pixels per returned batch of results, per thread
-  double batchSeconds = 0.03;          // batches grow to this much work (WorkerOptions)
+  double batchSeconds = WorkerOptions::kSmallScaleBatchSeconds;  // batches grow to this much
+                                       // work (WorkerOptions; the CLI: defaultBatchSeconds)
   int threads = 1;                     // rendering threads of each worker; 0: all the CPUs
                                        // its affinity allows (mpirun --bind-to sets it)
-  double workerTimeoutSeconds = 5;     // the lease: silence (not even a heartbeat) after which
+  double workerTimeoutSeconds = kDefaultLeaseSeconds;  // the lease: silence (not even a heartbeat) after which
                                        // a worker is lost; also the master's, for the workers
   SpeedIndexKind speedIndexKind = SpeedIndexKind::Hanoi;  // what each worker measures
   int speedIndexDiscs = kSpeedIndexDiscs;  // size of each worker's Towers of Hanoi run

@@ -90,7 +90,14 @@ class WorkerLoop {
     nextBeat_ = now + options_.heartbeatSeconds;
   }
 
-  void sendOut(const Outbox& out) { sendOutbox(net_, id_, out, log_); }
+  void sendOut(const Outbox& out) {
+    sendOutbox(net_, id_, out, log_);
+    // Any message renews the lease: the next heartbeat is due an interval after the last
+    // word to the master, so a worker that returns results often sends none.
+    for (const Envelope& e : out) {
+      if (e.to == kMaster) nextBeat_ = net_.now() + options_.heartbeatSeconds;
+    }
+  }
 
 
   // While computing: takes whatever has arrived into the inbox. False if the master is gone.
@@ -240,10 +247,6 @@ class WorkerLoop {
 WorkerExit runWorkerLoop(Transport& net, int id, WorkerEngine& engine,
                          const WorkerLoopOptions& options, const WorkerFaultActions& faults) {
   return WorkerLoop(net, id, engine, options, faults).run();
-}
-
-double heartbeatSecondsFor(double leaseSeconds) {
-  return std::clamp(leaseSeconds / 4, 0.01, 1.0);
 }
 
 }  // namespace prt

@@ -5,8 +5,9 @@
 //   - All mail waiting is read before the worker computes, and none is handed to the state
 //     machine while it computes (setup, or a batch), as the simulator models it. The heavy
 //     work runs on an EffectThread so that this loop's thread stays free to send a
-//     HeartbeatMsg every `heartbeatSeconds` while the worker renders or waits: the master's
-//     lease on the worker is renewed by any message, heartbeats included.
+//     HeartbeatMsg after `heartbeatSeconds` of silence towards the master while the worker
+//     renders or waits: the master's lease on the worker is renewed by any message,
+//     heartbeats included, so results sent often make heartbeats unnecessary.
 //   - The master heartbeats too; a worker that hears nothing from the master for
 //     `masterTimeoutSeconds` stops (the master is gone: nothing it renders can be used).
 //   - After StopMsg the worker sends its summary (events, rays, task count) on the summary
@@ -18,6 +19,7 @@
 #include <functional>
 #include <optional>
 
+#include "cluster/leases.h"
 #include "drive/parallel_options.h"
 #include "drive/transport.h"
 #include "drive/worker_engine.h"
@@ -35,8 +37,8 @@ struct WorkerFaultActions {
 struct WorkerLoopOptions {
   uint64_t batchPixels = 128;         // pixels per returned batch of results (per thread)
   double batchSeconds = 0;            // batches grow to this much work (WorkerOptions)
-  double heartbeatSeconds = 1.0;      // a HeartbeatMsg at least this often
-  double masterTimeoutSeconds = 5.0;  // silence from the master after which the worker stops
+  double heartbeatSeconds = 1.0;      // a message to the master at least this often
+  double masterTimeoutSeconds = kDefaultLeaseSeconds;  // silence from the master after which the worker stops
   std::optional<FaultInjection> fault;
 };
 
@@ -48,9 +50,5 @@ enum class WorkerExit {
 
 WorkerExit runWorkerLoop(Transport& net, int id, WorkerEngine& engine,
                          const WorkerLoopOptions& options, const WorkerFaultActions& faults);
-
-// The heartbeat interval for a lease: several beats fit in one lease, and never more than one
-// a second.
-double heartbeatSecondsFor(double leaseSeconds);
 
 }  // namespace prt

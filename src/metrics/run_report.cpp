@@ -260,6 +260,23 @@ std::string RunReport::toJson() const {
   j["worker_timeout_s"] = f.workerTimeoutSeconds;
   j["heartbeat_s"] = f.heartbeatSeconds;
   j["missing_summaries"] = f.missingSummaries;
+  // The master's own load (null when it was not measured).
+  j["master_busy_share"] = orNull(masterBusyShare());
+  if (info.master) {
+    const MasterLoad& m = *info.master;
+    const uint64_t handled = m.received + m.sent;
+    j["master"] = {{"busy_s", m.busySeconds},
+                   {"basis", m.basis},
+                   {"messages_received", m.received},
+                   {"messages_sent", m.sent},
+                   {"heartbeats_received", m.heartbeatsReceived},
+                   {"heartbeats_sent", m.heartbeatsSent},
+                   {"us_per_message", handled > 0 ? json(1e6 * m.busySeconds /
+                                                         static_cast<double>(handled))
+                                                  : json(nullptr)}};
+  } else {
+    j["master"] = nullptr;
+  }
   if (!info.frames.empty()) {
     // A sequence: each frame's pixels rendered in this run, when its first and last came in
     // (null: complete from a checkpoint), and the time between (its span in the job).
@@ -279,6 +296,11 @@ std::string RunReport::toJson() const {
     j["seconds_per_frame"] = elapsedSeconds / static_cast<double>(info.frames.size());
   }
   return j.dump(2) + "\n";
+}
+
+std::optional<double> RunReport::masterBusyShare() const {
+  if (!info.master || !(elapsedSeconds > 0)) return std::nullopt;
+  return info.master->busySeconds / elapsedSeconds;
 }
 
 std::string RunReport::toTable() const {
@@ -351,6 +373,18 @@ std::string RunReport::toTable() const {
                 asu ? opt(std::optional<double>(100 * *asu), "%.1f%%").c_str() : "n/a",
                 static_cast<unsigned long long>(messages), static_cast<unsigned long long>(bytes));
   out += line;
+  if (const std::optional<double> share = masterBusyShare()) {
+    const MasterLoad& m = *info.master;
+    std::snprintf(line, sizeof line,
+                  "master: busy %.1f%% of the run (%s), %llu messages in and %llu out, "
+                  "heartbeats %llu in and %llu out\n",
+                  100 * *share, m.basis == "measured_cpu" ? "CPU time" : "modelled",
+                  static_cast<unsigned long long>(m.received),
+                  static_cast<unsigned long long>(m.sent),
+                  static_cast<unsigned long long>(m.heartbeatsReceived),
+                  static_cast<unsigned long long>(m.heartbeatsSent));
+    out += line;
+  }
   std::snprintf(line, sizeof line,
                 "scene: %llu bytes, with every worker %.3f s after it was sent\n",
                 static_cast<unsigned long long>(sceneBytes), sceneTransferSeconds);

@@ -98,6 +98,16 @@ struct FrameInfo {
   std::optional<double> firstSeconds, doneSeconds;  // none: resumed complete, or not reached
 };
 
+// What the master itself did: how long it was busy (CPU time of its loop outside its waits in
+// a real run; the modelled service time in a simulated one) and how many messages it took in
+// and sent out, heartbeats included. Where one master stops keeping up: busy share near 1.
+struct MasterLoad {
+  double busySeconds = 0;
+  uint64_t received = 0, sent = 0;                      // every message, heartbeats included
+  uint64_t heartbeatsReceived = 0, heartbeatsSent = 0;  // of those, heartbeats
+  std::string basis = "measured_cpu";                   // or "modelled_service"
+};
+
 struct RunInfo {
   std::string driver;    // "local", "mpi", "simulated"
   std::string strategy;
@@ -118,6 +128,7 @@ struct RunInfo {
   // The frames of a sequence (frames, fps: how frame numbers map to time); empty for a still.
   std::vector<FrameInfo> frames;
   double fps = 0;
+  std::optional<MasterLoad> master;  // none: not measured
 };
 
 struct RunReport {
@@ -138,6 +149,9 @@ struct RunReport {
   std::optional<double> idealSeconds;  // see ideal_s above; none when nothing was measured
   std::string idealBasis = "slowdown";  // where its speeds come from (see above)
   std::vector<WorkerReport> workers;
+
+  // The master's busy time over the elapsed time (none: not measured).
+  std::optional<double> masterBusyShare() const;
 
   std::string toJson() const;       // keys: elapsed_s, speedup, efficiency, masu, asu,
                                     // scene_bytes, scene_transfer_s, ...

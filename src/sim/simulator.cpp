@@ -1,5 +1,6 @@
 #include "sim/simulator.h"
 
+#include <algorithm>
 #include <cmath>
 #include <deque>
 #include <stdexcept>
@@ -30,6 +31,8 @@ struct SimWorker {
   double speedIndex;  // seconds; what it measures during setup
   std::vector<SpeedChange> speedChanges;  // its own, sorted
   bool busy = false;  // computing (setup or a batch): mail waits in the mailbox
+  double lastToMaster = 0;    // when it last sent the master anything (heartbeats counted)
+  double lastFromMaster = 0;  // when the master last sent it anything (heartbeats counted)
   bool inSetup = false;
   double workStart = 0;
   TaskSet batch;
@@ -109,6 +112,8 @@ class Simulation {
           break;
         case SimEventKind::Join:
           log_.add({EventKind::WorkerJoined, e.endpoint, now_, now_, 0, 0, kMaster, ""});
+          worker(e.endpoint).lastToMaster = now_;  // its silences start when it joins
+          worker(e.endpoint).lastFromMaster = now_;
           send(kMaster, master_.onWorkerJoined(e.endpoint, now_));
           break;
       }
@@ -121,8 +126,56 @@ class Simulation {
   int startingWorkers() const { return workerCount() - joinerCount(options_.joins); }
   SimWorker& worker(int w) { return workers_[static_cast<size_t>(w)]; }
 
+  // The heartbeats that a silence between `last` and `now` holds (one per interval), and the
+  // silence restarts now.
+  uint64_t beatsIn(double& last) {
+    const double gap = now_ - last;
+    last = now_;
+    const double h = options_.heartbeatSeconds;
+    return gap >= h ? static_cast<uint64_t>(gap / h) : 0;
+  }
+
+  // Heartbeats cost the master half a service each; those of a silence are worked off in its
+  // idle time first (startService).
+  void heartbeatLoad(uint64_t beats) {
+    const double seconds = 0.5 * options_.network.masterServiceSeconds * static_cast<double>(beats);
+    load_.busySeconds += seconds;
+    heartbeatDebt_ += seconds;
+  }
+
+  void countHeartbeats(int from, const Envelope& e) {
+    if (from == kMaster) {
+      if (e.to < 0) return;
+      const uint64_t beats = beatsIn(worker(e.to).lastFromMaster);
+      load_.heartbeatsSent += beats;
+      load_.sent += beats + 1;
+      heartbeatLoad(beats);
+    } else if (e.to == kMaster) {
+      const uint64_t beats = beatsIn(worker(from).lastToMaster);
+      load_.heartbeatsReceived += beats;
+      load_.received += beats;  // the message itself is counted when the master takes it
+      heartbeatLoad(beats);
+    }
+  }
+
+  // At the end: the heartbeats of the silences still open, up to the last result.
+  void closeSilences() {
+    for (int w = 0; w < workerCount(); ++w) {
+      SimWorker& sw = worker(w);
+      if (w >= master_.workerCount()) continue;  // never joined in time
+      const uint64_t out = beatsIn(sw.lastFromMaster);
+      load_.heartbeatsSent += out;
+      load_.sent += out;
+      const uint64_t in = beatsIn(sw.lastToMaster);
+      load_.heartbeatsReceived += in;
+      load_.received += in;
+      heartbeatLoad(out + in);
+    }
+  }
+
   void send(int from, Outbox out) {
     for (Envelope& e : out) {
+      countHeartbeats(from, e);
       const uint64_t bytes = messageBytes(e.message);
       log_.add({EventKind::MessageSent, from, now_, now_, 0, bytes, e.to, messageName(e.message)});
       SimEvent reach;
@@ -162,8 +215,13 @@ class Simulation {
     logReceived(kMaster, mail);
     masterOut_ = master_.onMessage(mail.from, mail.message, now_);
     masterBusy_ = true;
+    ++load_.received;
+    load_.busySeconds += options_.network.masterServiceSeconds;
+    // Heartbeats that came in while it was idle were handled then; the rest delay this one.
+    heartbeatDebt_ = std::max(0.0, heartbeatDebt_ - (now_ - idleSince_));
     SimEvent done;
-    done.time = now_ + options_.network.masterServiceSeconds;
+    done.time = now_ + options_.network.masterServiceSeconds + heartbeatDebt_;
+    heartbeatDebt_ = 0;
     done.kind = SimEventKind::MasterDone;
     queue_.push(std::move(done));
   }
@@ -171,6 +229,7 @@ class Simulation {
   // The run ends when the master has handled the last results, as in the local driver.
   void finishService() {
     masterBusy_ = false;
+    idleSince_ = now_;
     send(kMaster, std::move(masterOut_));
     masterOut_.clear();
     if (master_.complete()) {
@@ -240,6 +299,10 @@ class Simulation {
     info.serialSeconds = costs_.totalSeconds();
     info.speedIndexRun = options_.speedIndexRun;
     info.faults.endgameCopies = master_.endgameCopies();
+    info.faults.heartbeatSeconds = options_.heartbeatSeconds;
+    closeSilences();
+    load_.basis = "modelled_service";
+    info.master = load_;
     info.faults.duplicatePixels = master_.ledger().duplicates();
     for (int w = 0; w < master_.workerCount(); ++w) {  // those that joined in time included
       info.slowdowns.push_back(1.0 / worker(w).speed);
@@ -264,6 +327,9 @@ class Simulation {
   std::deque<Mail> masterInbox_;
   bool masterBusy_ = false;
   Outbox masterOut_;
+  MasterLoad load_;
+  double heartbeatDebt_ = 0;  // heartbeat service not yet worked off
+  double idleSince_ = 0;      // when the master last finished a service
   double now_ = 0;
   bool finished_ = false;
 };
@@ -314,6 +380,9 @@ void validateSimulationOptions(const SimulationOptions& o, uint64_t pixelCount) 
       throw InputError("--speed-at: worker " + std::to_string(c.worker) +
                        " is not one of the workers, or its time or speed is not positive");
     }
+  }
+  if (!(o.heartbeatSeconds > 0) || !std::isfinite(o.heartbeatSeconds)) {
+    throw InputError("the heartbeat interval must be a positive number of seconds");
   }
   validateNetworkOptions(o.network);
   makeStrategy(o.strategy, o.strategyOptions);  // throws for unknown names and bad options

@@ -12,7 +12,16 @@
 //   - results carry no colours, but are counted at the size they would have.
 // It emits the same event stream (metrics/events.h), hence the same report and Chrome trace,
 // with times in virtual seconds; the run ends when the master holds every pixel, as a real
-// run does. Worker failures are not simulated; workers joining mid-run are (--join-at: the
+// run does.
+// The master's load is modelled: each message it receives keeps it busy for the service time
+// (network_model.h); heartbeats, sent as the driver kit's loops send them — by a worker after
+// `heartbeatSeconds` without a word to the master, by the master to a worker it has sent
+// nothing for as long — are counted from the silences without an event each, and each costs
+// the master half a service time (the measured cost of one message in or out, where a
+// service is a message in and its reply). The heartbeats that fall in a silence are worked
+// off in the master's idle time first, and delay its next service only when it had none.
+// The report's master_busy_share is that busy time over the elapsed time. Worker failures
+// are not simulated; workers joining mid-run are (--join-at: the
 // master admits each at its time, as the master loop does on a PeerJoined notice).
 //
 // Work is proportional to messages and batches, never to pixels beyond one pass over the
@@ -24,6 +33,7 @@
 #include <vector>
 
 #include "balance/registry.h"
+#include "cluster/leases.h"
 #include "core/speed_schedule.h"
 #include "metrics/events.h"
 #include "metrics/run_report.h"
@@ -57,6 +67,7 @@ struct SimulationOptions {
                                           // report their true index (base / speed), as real
                                           // workers do with --speed-index slowdown
   bool endgame = false;                   // --endgame: copies of the last tasks (Master)
+  double heartbeatSeconds = heartbeatSecondsFor(kDefaultLeaseSeconds);  // see above
   NetworkOptions network;
   uint64_t sceneBytes = 4096;  // the scene text the master sends to each worker
   // A frame sequence: the cost map holds this many frames one above the other (its pixels are
