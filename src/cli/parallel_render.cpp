@@ -140,9 +140,11 @@ void addParallelOptions(CLI::App& cmd, RenderOptions& o) {
       ->group(parallel);
   cmd.add_option("--worker-timeout", o.workerTimeoutSeconds,
                  "Seconds of silence (no message, not even a heartbeat) after which a worker is "
-                 "declared lost and its tasks go to the others")
+                 "declared lost and its tasks go to the others; heartbeats go after a fifth of "
+                 "it in silence. Default: 5 s, longer past 10,000 workers (0.5 ms per worker) "
+                 "so that heartbeats never keep one master more than 5 % busy")
       ->check(finiteIn(0.1, 86400))
-      ->capture_default_str()
+      ->default_str("auto")
       ->group(parallel);
   cmd.add_option("--startup-timeout", o.startupTimeoutSeconds,
                  "Under mpirun: seconds MPI start-up may take; a rank killed while the job "
@@ -246,7 +248,7 @@ ParallelOptions toParallelOptions(const RenderOptions& o, int workers) {
   p.batchPixels = o.batchPixels;
   p.batchSeconds = o.batchSeconds.value_or(defaultBatchSeconds(p.totalWorkers()));
   p.threads = o.threads;
-  p.workerTimeoutSeconds = o.workerTimeoutSeconds;
+  p.workerTimeoutSeconds = o.workerTimeoutSeconds.value_or(defaultLeaseSeconds(p.totalWorkers()));
   p.endgame = o.endgame == "on";
   p.checkpointPath = o.checkpointPath;
   p.checkpointAutomatic = o.checkpointAutomatic;

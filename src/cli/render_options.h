@@ -46,7 +46,7 @@ struct RenderOptions {
   unsigned long long batchPixels = 128;    // pixels per returned batch
   std::optional<double> batchSeconds;      // batches grow to this much work; none: by the
                                            // worker count (defaultBatchSeconds)
-  double workerTimeoutSeconds = kDefaultLeaseSeconds;  // the lease: silence before a worker is lost
+  std::optional<double> workerTimeoutSeconds;  // the lease; none: defaultLeaseSeconds
   double startupTimeoutSeconds = 120;      // --startup-timeout: MPI start-up's deadline
   std::string endgame = "off";             // on | off: copies of the last tasks
   std::string checkpointPath;              // --checkpoint FILE (or, resolved, OUTPUT.ckpt)

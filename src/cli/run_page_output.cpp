@@ -164,7 +164,8 @@ void writeRenderReportAndPage(const RenderOptions& o, const Scene& scene, const 
     slowdowns += parameterText(k);
   }
   if (!slowdowns.empty()) context.parameters.emplace_back("slowdown", slowdowns);
-  context.parameters.emplace_back("worker_timeout_s", parameterText(o.workerTimeoutSeconds));
+  context.parameters.emplace_back(
+      "worker_timeout_s", o.workerTimeoutSeconds ? parameterText(*o.workerTimeoutSeconds) : "auto");
   context.outputs.emplace_back("image", scene.image.output);
   for (const auto& [name, path] :
        {std::pair<const char*, const std::string&>{"report", o.reportPath},

@@ -52,7 +52,8 @@ struct SimulateOptions {
   double latencyMicroseconds = 50;
   double bandwidthMbps = 1000;
   double masterServiceMicroseconds = 5;
-  double workerTimeoutSeconds = kDefaultLeaseSeconds;  // the lease; sets the heartbeat interval
+  std::optional<double> workerTimeoutSeconds;  // the lease, for the heartbeat interval; none:
+                                               // defaultLeaseSeconds
   std::string reportPath;
   std::string tracePath;
   std::string htmlPath;     // the run's page
@@ -126,7 +127,8 @@ int runSimulate(const SimulateOptions& o) {
   options.network.latencySeconds = o.latencyMicroseconds * 1e-6;
   options.network.bandwidthBytesPerSecond = o.bandwidthMbps * 1e6 / 8;
   options.network.masterServiceSeconds = o.masterServiceMicroseconds * 1e-6;
-  options.heartbeatSeconds = heartbeatSecondsFor(o.workerTimeoutSeconds);
+  options.heartbeatSeconds = heartbeatSecondsFor(
+      o.workerTimeoutSeconds.value_or(defaultLeaseSeconds(static_cast<int>(options.speeds.size()))));
   // Cheap checks before building the map: a 4K synthetic map takes a moment.
   validateSimulationOptions(options, ~0ull);
   checkHtmlPath(o.htmlPath);
@@ -308,11 +310,12 @@ Action addSimulateCommand(CLI::App& app, const std::string& commandLine) {
       ->capture_default_str()
       ->group(model);
   cmd->add_option("--worker-timeout", o->workerTimeoutSeconds,
-                  "The lease, as prt render's: its heartbeat interval (a quarter of it, at "
-                  "most 1 s) sets how often silent workers and the master send heartbeats, "
-                  "which the master's modelled load counts; workers are never lost here")
+                  "The lease, as prt render's (default: 5 s, longer past 10,000 workers): its "
+                  "heartbeat interval, a fifth of it, sets how often silent workers and the "
+                  "master send heartbeats, which the master's modelled load counts; workers "
+                  "are never lost here")
       ->check(finiteIn(0.1, 86400))
-      ->capture_default_str()
+      ->default_str("auto")
       ->group(model);
 
   cmd->add_option("--report", o->reportPath, "Write the run report as JSON")->check(fileName());
