@@ -52,6 +52,36 @@ const Image& serialReference() {
   return image;
 }
 
+// The master's own load is measured (CPU time outside its waits, every message in and out),
+// and a heartbeat goes only after a silence: with a 60 s lease (12 s between beats) a short
+// run has each worker's one at its start and none from the master.
+TEST(MasterLoad, IsMeasuredAndHeartbeatsFollowOnlySilence) {
+  LocalRunRequest r = request("adaptive", 3);
+  r.options.workerTimeoutSeconds = 60;
+  const ParallelRun run = renderLocal(r);
+  ASSERT_TRUE(run.report.info.master.has_value());
+  const MasterLoad& m = *run.report.info.master;
+  EXPECT_EQ(m.basis, "measured_cpu");
+  EXPECT_GT(m.busySeconds, 0);
+  const std::optional<double> share = run.report.masterBusyShare();
+  ASSERT_TRUE(share.has_value());
+  EXPECT_GT(*share, 0);
+  EXPECT_LE(*share, 1.5);  // CPU time over wall time, of one thread (timer granularity aside)
+  EXPECT_EQ(m.heartbeatsReceived, 3u) << "one from each worker as it starts, then none";
+  EXPECT_EQ(m.heartbeatsSent, 0u);
+  uint64_t results = 0;
+  for (const Event& e : run.events) {
+    if (e.kind == EventKind::MessageReceived && e.worker == kMaster && e.label == "Results") {
+      ++results;
+    }
+  }
+  EXPECT_GT(results, 0u);
+  EXPECT_GE(m.received, results + m.heartbeatsReceived);
+  EXPECT_GT(m.sent, 0u);
+  EXPECT_NE(run.report.toJson().find("\"master_busy_share\""), std::string::npos);
+  EXPECT_NE(run.report.toTable().find("master: busy"), std::string::npos);
+}
+
 class LocalDriverTest : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(LocalDriverTest, ImageIsBitIdenticalToSerialForAnyWorkerCount) {

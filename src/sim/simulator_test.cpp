@@ -47,6 +47,52 @@ uint64_t renderedPixels(const SimulatedRun& run) {
   return pixels;
 }
 
+// The master's modelled load: a service per message taken, half of one per heartbeat, and
+// heartbeats only in silences: one worker rendering the whole image in one 10 s batch says
+// nothing for 10 s, and neither does the master.
+TEST(SimulatorTest, TheMastersLoadCountsServicesAndTheHeartbeatsOfSilences) {
+  const CostMap map = uniformCostMap(64, 64, 10.0);
+  for (const double beat : {1.0, 100.0}) {
+    SimulationOptions o = optionsFor("blocks", {1.0}, 64 * 64);
+    o.heartbeatSeconds = beat;
+    const SimulatedRun run = simulate(map, o);
+    ASSERT_TRUE(run.report.info.master.has_value());
+    const MasterLoad& m = *run.report.info.master;
+    EXPECT_EQ(m.basis, "modelled_service");
+    const uint64_t expected = beat == 1.0 ? 10 : 0;
+    EXPECT_NEAR(static_cast<double>(m.heartbeatsReceived), static_cast<double>(expected), 1.0);
+    EXPECT_NEAR(static_cast<double>(m.heartbeatsSent), static_cast<double>(expected), 1.0);
+    uint64_t taken = 0, sent = 0;
+    for (const Event& e : run.events) {
+      if (e.worker != kMaster) continue;
+      if (e.kind == EventKind::MessageReceived) ++taken;
+      if (e.kind == EventKind::MessageSent) ++sent;
+    }
+    EXPECT_EQ(m.received, taken + m.heartbeatsReceived);
+    EXPECT_EQ(m.sent, sent + m.heartbeatsSent);
+    const double s = o.network.masterServiceSeconds;
+    EXPECT_NEAR(m.busySeconds,
+                static_cast<double>(taken) * s +
+                    0.5 * s * static_cast<double>(m.heartbeatsReceived + m.heartbeatsSent),
+                1e-12);
+    ASSERT_TRUE(run.report.masterBusyShare().has_value());
+    EXPECT_NEAR(*run.report.masterBusyShare(), m.busySeconds / run.report.elapsedSeconds, 1e-15);
+  }
+}
+
+// A master that cannot keep up: a service longer than the workers' batches makes it the
+// bottleneck, its busy share near 1, and the run as long as its services.
+TEST(SimulatorTest, ASaturatedMasterIsBusyAllTheTime) {
+  const CostMap map = uniformCostMap(64, 64, 0.4);
+  SimulationOptions o = optionsFor("self", std::vector<double>(16, 1.0), 8);
+  o.strategyOptions.chunk = 8;
+  o.network.masterServiceSeconds = 0.01;  // 512 batches of 8 pixels: over 5 s of services
+  const SimulatedRun run = simulate(map, o);
+  ASSERT_TRUE(run.report.masterBusyShare().has_value());
+  EXPECT_GT(*run.report.masterBusyShare(), 0.95);
+  EXPECT_GT(run.report.elapsedSeconds, 5.0);
+}
+
 TEST(SimulatorTest, OneWorkerIsSetupPlusCostPlusTheMessageChain) {
   const CostMap map = uniformCostMap(64, 64, 1.0);
   for (const double speed : {1.0, 0.25}) {
