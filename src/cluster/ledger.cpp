@@ -119,6 +119,17 @@ TaskSet Ledger::unfinished(int worker) const {
   return unfinishedTail(worker, std::numeric_limits<uint64_t>::max());
 }
 
+uint64_t Ledger::unfinishedCount(int worker) const {
+  const Holding& h = workers_[index(worker)];
+  std::vector<uint64_t> moved = h.moved.toVector();
+  std::sort(moved.begin(), moved.end());
+  uint64_t count = 0;
+  h.given.forEach([&](uint64_t t) {
+    if (owner_[t] == kNotDone && !std::binary_search(moved.begin(), moved.end(), t)) ++count;
+  });
+  return count;
+}
+
 TaskSet Ledger::unfinishedTail(int worker, uint64_t count) const {
   const Holding& h = workers_[index(worker)];
   TaskSet out;

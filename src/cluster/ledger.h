@@ -71,6 +71,8 @@ class Ledger {
   bool holdsWork(int worker) const;
   // What `worker` holds that is not done yet, in the order it received them.
   TaskSet unfinished(int worker) const;
+  // How many tasks unfinished(worker) holds, without building the set.
+  uint64_t unfinishedCount(int worker) const;
   // Holdings of `worker` not done yet, taken from the back of what it received (the part it
   // renders last), at most `count` tasks.
   TaskSet unfinishedTail(int worker, uint64_t count) const;

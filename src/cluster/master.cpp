@@ -31,6 +31,10 @@ Master::Master(std::unique_ptr<Strategy> strategy, int workerCount, uint64_t pix
   PRT_CHECK(strategy_ != nullptr);
   ledger_.seedDone(options_.resumedDone);
   resumed_ = ledger_.doneCount();
+  if (options_.endgame) {
+    endgameOrder_.grow(workerCount);
+    for (int w = 0; w < workerCount; ++w) endgameOrder_.setEligible(w, true);
+  }
   options_.resumedDone = TaskSet{};
 }
 
@@ -50,6 +54,7 @@ void Master::sendToAll(const Message& m, Outbox& out) {
 void Master::assign(int worker, const TaskSet& pixels, Outbox& out) {
   if (pixels.empty()) return;
   ledger_.gave(worker, pixels);
+  if (options_.endgame) endgameOrder_.gave(worker, pixels.size());
   out.push_back({worker, TasksMsg{pixels}});
 }
 
@@ -96,23 +101,14 @@ void Master::apply(const Decisions& decisions, Outbox& out) {
 // The live worker expected to finish last is the one whose unfinished tasks take longest at
 // its speed index; the asking worker gets a copy of the back of that worker's queue (which
 // that worker renders last), sized so that both would finish together at their speed indices.
-// Each task is copied at most once, so the waste is bounded by one copy of the endgame.
+// Each task is copied at most once, so the waste is bounded by one copy of the endgame. The
+// candidates are indexed (EndgameOrder): no request walks every worker.
 void Master::endgameCopy(int worker, Outbox& out) {
-  int slowest = -1;
-  double latest = 0;
-  TaskSet candidates;
-  for (int v = 0; v < workerCount(); ++v) {
-    if (v == worker || !isLive(v) || endgameServed_[static_cast<size_t>(v)]) continue;
-    const TaskSet left = ledger_.unfinished(v);
-    const double speed = speedIndices_[static_cast<size_t>(v)];
-    const double finish = static_cast<double>(left.size()) * (speed > 0 ? speed : 1.0);
-    if (!left.empty() && finish > latest) {
-      latest = finish;
-      slowest = v;
-      candidates = left;
-    }
-  }
-  if (slowest < 0 || candidates.size() < 2) return;
+  const int slowest =
+      endgameOrder_.pick(worker, [&](int v) { return ledger_.unfinishedCount(v); });
+  if (slowest < 0) return;
+  TaskSet candidates = ledger_.unfinished(slowest);
+  if (candidates.size() < 2) return;
   const double mine = std::max(speedIndices_[static_cast<size_t>(worker)], 1e-12);
   const double theirs = std::max(speedIndices_[static_cast<size_t>(slowest)], 1e-12);
   // Rates are 1 / speed index: my share of what is left is theirs / (mine + theirs).
@@ -122,6 +118,7 @@ void Master::endgameCopy(int worker, Outbox& out) {
       candidates.size() - 1);
   TaskSet copy = candidates.takeBack(count);
   endgameServed_[static_cast<size_t>(slowest)] = true;  // its tail is covered now
+  endgameOrder_.setEligible(slowest, false);
   endgameCopies_ += copy.size();
   assign(worker, copy, out);
 }
@@ -204,6 +201,7 @@ Outbox Master::onWorkerJoined(int worker, double now) {
   queueLengths_.push_back(0);
   untrusted_.push_back(false);
   endgameServed_.push_back(false);
+  if (options_.endgame) endgameOrder_.setEligible(worker, true);
   checks_.addWorker();
   identities_.emplace_back();
   if (stopped_) {
@@ -356,7 +354,10 @@ Outbox Master::onMessage(int from, const Message& message, double now) {
       }
     }
     dispatchChecks(from, now, out);
-    if (endgameServed_[w] && !ledger_.holdsWork(from)) endgameServed_[w] = false;
+    if (endgameServed_[w] && !ledger_.holdsWork(from)) {
+      endgameServed_[w] = false;
+      if (options_.endgame) endgameOrder_.setEligible(from, isLive(from));
+    }
     finishIfComplete(out);
     return out;
   }
@@ -378,6 +379,7 @@ Outbox Master::onMessage(int from, const Message& message, double now) {
     }
     const bool first = speedIndices_[w] == 0.0;
     speedIndices_[w] = s->seconds;
+    if (options_.endgame) endgameOrder_.setWeight(from, s->seconds);
     if (!started_) {
       if (first) --speedIndicesMissing_;
       if (speedIndicesMissing_ == 0) startStrategy(out);
@@ -395,6 +397,7 @@ Outbox Master::onMessage(int from, const Message& message, double now) {
     ledger_.movedOut(from, n->tasks);
     if (isLive(n->to)) {
       ledger_.gave(n->to, n->tasks);
+      if (options_.endgame) endgameOrder_.gave(n->to, n->tasks.size());
     } else {
       // Sent to a worker already lost: the tasks come back to the strategy as its leftovers.
       TaskSet left;
@@ -495,6 +498,8 @@ void Master::reject(int worker, double now, const std::string& reason, Outbox& o
   checks_.workerGone(worker, true);
   if (isLive(worker)) lose(worker, now, "rejected: " + reason, out);
   const TaskSet back = ledger_.takeBack(worker);
+  // Its pixels are undone again: other workers' unfinished counts may have grown.
+  if (options_.endgame && !back.empty()) endgameOrder_.invalidate();
   rejections_.push_back({worker, now, reason, back.size(),
                          identities_[static_cast<size_t>(worker)].host});
   if (options_.rejected) options_.rejected(rejections_.back());
@@ -509,6 +514,7 @@ void Master::lose(int worker, double now, const std::string& reason, Outbox& out
   const auto w = static_cast<size_t>(worker);
   const TaskSet unfinished = ledger_.markLost(worker, now, reason);
   endgameServed_[w] = false;
+  if (options_.endgame) endgameOrder_.setEligible(worker, false);
   if (!started_) {
     if (speedIndices_[w] == 0.0) --speedIndicesMissing_;
     speedIndices_[w] = 0.0;

@@ -32,6 +32,7 @@
 #include <vector>
 
 #include "balance/strategy.h"
+#include "cluster/endgame_order.h"
 #include "cluster/ledger.h"
 #include "cluster/messages.h"
 #include "cluster/spot_checks.h"
@@ -159,6 +160,7 @@ class Master {
   std::vector<uint64_t> queueLengths_;
   std::vector<bool> untrusted_;  // per worker: sent a message that cannot be true; ignored since
   std::vector<bool> endgameServed_;  // per worker: its queue's tail has been copied to another
+  EndgameOrder endgameOrder_;        // the candidates for a copy (kept only with options.endgame)
   uint64_t endgameCopies_ = 0;
   SpotChecks checks_;
   std::vector<RejectedWorker> rejections_;

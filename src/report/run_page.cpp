@@ -287,7 +287,8 @@ std::string measures(const json& r) {
       {"resumed_pixels", {kFaults, "resumed pixels", "taken from a checkpoint instead of rendered"}},
       {"joined_workers", {kFaults, "joined workers", "arrived mid-render"}},
       {"worker_timeout_s", {kFaults, "worker lease", "silence after which a worker is lost (--worker-timeout)"}},
-      {"heartbeat_s", {kNetwork, "heartbeat", "how often the master and the workers say they are alive"}},
+      {"master_busy_share", {kNetwork, "master busy", "the share of the run the master spent handling messages (its CPU time outside its waits; modelled in a simulation): near 100 % it cannot keep up"}},
+      {"heartbeat_s", {kNetwork, "heartbeat", "how long a worker or the master may stay silent before it says it is alive"}},
       {"scene_bytes", {kNetwork, "scene size", "the scene as sent to each worker"}},
       {"scene_transfer_s", {kNetwork, "scene transfer", "until every worker had the scene"}},
       {"masu_basis", {kBalance, "MASU from", "the workers' speed indices, or their measured throughput when none ran"}},
@@ -313,6 +314,11 @@ std::string measures(const json& r) {
       return formatSeconds(value.get<double>());
     }
     if (key == "scene_bytes" && value.is_number()) return formatBytes(value.get<uint64_t>());
+    if (key == "master_busy_share" && value.is_number()) {
+      char b[32];
+      std::snprintf(b, sizeof b, "%.1f %%", 100 * value.get<double>());
+      return std::string(b);
+    }
     return genericValue(value);
   };
   std::map<std::string, std::string> groups;  // group -> its cards
