@@ -25,7 +25,8 @@ up() {
   local n=$1 dir=${2:-/tmp/prt-netns}
   down "$dir" 2>/dev/null || true
   mkdir -p "$dir"
-  ip link add "$bridge" type bridge
+  # No spanning tree and no forwarding delay: a port forwards as soon as it is up.
+  ip link add "$bridge" type bridge stp_state 0 forward_delay 0
   ip addr add "$subnet.1/24" dev "$bridge"
   ip link set "$bridge" up
   : >"$dir/hostfile"
@@ -39,6 +40,19 @@ up() {
     ip -n "$ns" link set lo up
     echo "$ns slots=1" >>"$dir/hostfile"
   done
+  # Links come up asynchronously: an mpirun started before every port forwards fails to reach
+  # its daemons ("unable to reliably start one or more daemons"). Wait for them (5 s at most).
+  local ready=0
+  for ((t = 0; t < 100 && ready == 0; t++)); do
+    ready=1
+    [ "$(cat "/sys/class/net/$bridge/operstate")" = up ] || ready=0
+    for ((i = 0; i < n; i++)); do
+      [ "$(cat "/sys/class/net/prt-v$i/brport/state" 2>/dev/null)" = 3 ] || ready=0
+      [ "$(ip netns exec "$prefix$i" cat /sys/class/net/eth0/operstate)" = up ] || ready=0
+    done
+    ((ready == 1)) || sleep 0.05
+  done
+  ((ready == 1)) || echo "netns-cluster: warning: links not all up after 5 s" >&2
   # The launch agent: mpirun calls it as `agent HOST COMMAND...` to start its daemon on HOST.
   # The daemon runs in HOST's namespace with HOST as its hostname (a UTS namespace of its own).
   cat >"$dir/agent" <<'AGENT'

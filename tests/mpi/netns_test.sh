@@ -40,6 +40,7 @@ step="rendering the serial image"
 "$prt" render "$scene" $geometry -q -o serial.pfm
 step="rendering across the hosts"
 # Starts the run across the hosts and waits up to 30 s for its first checkpointed pixels
+# (or for mpirun to give up)
 # (scatter: worker 1 holds half the image until it renders it, so the cut below always finds
 # it holding unfinished pixels). Two
 # tries, each on hosts made afresh: the start of a job across namespaces (daemons launched
@@ -54,12 +55,15 @@ start_run() {
   job=$!
   for i in $(seq 1 300); do
     if [ -f ck ] && [ "$(stat -c %s ck 2>/dev/null || echo 0)" -gt 3000 ]; then return 0; fi
+    # mpirun gave up before the render started (it could not start a daemon on a host):
+    # the same as no progress.
+    kill -0 "$job" 2>/dev/null || return 1
     sleep 0.1
   done
   return 1
 }
 if ! start_run; then
-  echo "netns test: no progress across the hosts within 30 s; its output:" >&2
+  echo "netns test: no progress across the hosts (mpirun ended, or 30 s passed); its output:" >&2
   grep -v "PMIX ERROR" out.txt err.txt >&2 || true
   pkill -9 -P "$job" 2>/dev/null || true
   kill -9 "$job" 2>/dev/null || true
