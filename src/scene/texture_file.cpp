@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdint>
 #include <fstream>
 #include <limits>
 #include <system_error>
@@ -21,6 +22,36 @@ std::string lower(std::string text) {
 bool isRegularFile(const std::filesystem::path& path) {
   std::error_code error;
   return std::filesystem::is_regular_file(path, error);
+}
+
+uint32_t bigEndian32(const uint8_t* p) {
+  return (uint32_t{p[0]} << 24) | (uint32_t{p[1]} << 16) | (uint32_t{p[2]} << 8) | uint32_t{p[3]};
+}
+
+// A PNG whose compressed image data cannot inflate to the rows its header declares (deflate
+// expands at most about 1,032 times): a decoder would size its buffer by the header and grow it
+// while inflating, gigabytes for a file of kilobytes, before finding the data short. Returns
+// the declared size of the rows in bytes when that is so, else 0.
+uint64_t pngShortOfItsRows(const uint8_t* bytes, size_t size) {
+  static constexpr uint8_t kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+  if (size < 33 || !std::equal(kSignature, kSignature + 8, bytes)) return 0;
+  if (!std::equal(bytes + 12, bytes + 16, reinterpret_cast<const uint8_t*>("IHDR"))) return 0;
+  const uint64_t width = bigEndian32(bytes + 16), height = bigEndian32(bytes + 20);
+  if (width > (1u << 24) || height > (1u << 24)) return 0;  // refused by size before this
+  const uint64_t depth = bytes[24], colorType = bytes[25];
+  const uint64_t samples = colorType == 2 ? 3 : colorType == 4 ? 2 : colorType == 6 ? 4 : 1;
+  // One filter byte a row, then its samples (interlaced images have more rows: more bytes).
+  const uint64_t rows = height * (1 + (width * samples * depth + 7) / 8);
+  uint64_t compressed = 0;
+  for (size_t at = 8; at + 12 <= size;) {
+    const uint64_t length = bigEndian32(bytes + at);
+    if (std::equal(bytes + at + 4, bytes + at + 8, reinterpret_cast<const uint8_t*>("IDAT"))) {
+      compressed += length;
+    }
+    if (length > size - at - 12) break;
+    at += 12 + length;
+  }
+  return rows > 1100 * compressed + 4096 ? rows : 0;
 }
 
 }  // namespace
@@ -52,6 +83,12 @@ std::shared_ptr<const TextureImage> decodeTextureImage(const uint8_t* bytes, siz
                        std::to_string(decoded >> 20) + " MiB decoded, beyond what is left of " +
                        "the textures' memory budget (" + std::to_string(budgetBytes >> 20) +
                        " MiB)");
+  }
+  if (const uint64_t rows = pngShortOfItsRows(bytes, size)) {
+    throw TextureError("texture " + name + " declares " + std::to_string(width) + " x " +
+                       std::to_string(height) + " pixels (" + std::to_string(rows >> 20) +
+                       " MiB of rows) but its " + std::to_string(size) +
+                       " bytes cannot hold them: it is truncated or not a valid PNG");
   }
   int w = 0, h = 0, c = 0;
   stbi_uc* pixels = stbi_load_from_memory(bytes, length, &w, &h, &c, channels);

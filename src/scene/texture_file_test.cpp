@@ -1,0 +1,56 @@
+// Texture decoding against files other tools wrote, and against a PNG whose header declares
+// more rows than its data can hold (found by the model reader's fuzzer: a 30 KB glTF whose
+// texture made the decoder grow a 2 GB buffer).
+
+#include "scene/texture_file.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace prt {
+namespace {
+
+const std::filesystem::path kSource(PRT_SOURCE_DIR);
+
+std::vector<uint8_t> fileBytes(const std::filesystem::path& path) { return readTextureFile(path); }
+
+TEST(TextureFile, DecodesPngsOtherToolsWroteIncludingOnesCompressedNearTheLimit) {
+  for (const char* file : {"scenes/models/board-checker.png", "tests/models/blender-cube.png",
+                           "tests/models/solid-2048-ffmpeg.png"}) {
+    const std::vector<uint8_t> bytes = fileBytes(kSource / file);
+    size_t budget = size_t{1} << 30;
+    const auto image = decodeTextureImage(bytes.data(), bytes.size(), file, budget);
+    ASSERT_NE(image, nullptr) << file;
+    EXPECT_GT(image->width, 0) << file;
+    EXPECT_EQ(image->texels.size(), static_cast<size_t>(image->width) *
+                                        static_cast<size_t>(image->height) *
+                                        static_cast<size_t>(image->channels))
+        << file;
+  }
+}
+
+TEST(TextureFile, APngThatCannotHoldTheRowsItDeclaresIsRefusedBeforeDecoding) {
+  std::vector<uint8_t> bytes = fileBytes(kSource / "scenes/models/board-checker.png");
+  // The header now says 16,000 x 16,000 (768 MB of RGB rows, within the budget); the data is
+  // still a 256 x 256 image's few kilobytes.
+  for (size_t at : {16u, 20u}) {
+    bytes[at] = 0;
+    bytes[at + 1] = 0;
+    bytes[at + 2] = 0x3e;
+    bytes[at + 3] = 0x80;
+  }
+  size_t budget = size_t{1} << 30;
+  try {
+    decodeTextureImage(bytes.data(), bytes.size(), "big.png", budget);
+    FAIL() << "decoded";
+  } catch (const TextureError& e) {
+    EXPECT_NE(std::string(e.what()).find("cannot hold them"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(budget, size_t{1} << 30) << "nothing taken off the budget";
+}
+
+}  // namespace
+}  // namespace prt
