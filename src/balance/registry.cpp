@@ -215,8 +215,13 @@ void validateStrategyOptions(const StrategyOptions& options) {
   }
 }
 
-std::unique_ptr<Strategy> makeStrategy(const std::string& name, const StrategyOptions& options) {
+void validateStrategy(const std::string& name, const StrategyOptions& options) {
   validateStrategyOptions(options);
+  strategyRow(name);
+}
+
+std::unique_ptr<Strategy> makeStrategy(const std::string& name, const StrategyOptions& options) {
+  validateStrategy(name, options);
   return strategyRow(name).make(options);
 }
 

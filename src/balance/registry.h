@@ -54,6 +54,10 @@ struct StrategyRow {
   std::function<std::unique_ptr<Strategy>(const StrategyOptions&)> make;
 };
 
+// Checks a strategy's name and options as makeStrategy() would, without building it: throws
+// InputError for an unknown name (listing the valid ones) or an option out of its range.
+void validateStrategy(const std::string& name, const StrategyOptions& options);
+
 // Every row, in the order the help text lists them.
 const std::vector<StrategyRow>& strategyRows();
 // The row named `name`; an unknown name throws InputError listing the valid ones.

@@ -8,6 +8,7 @@
 #include "cli/commands.h"
 #include "cli/strategy_flags.h"
 #include "cluster/leases.h"
+#include "cluster/worker.h"
 #include "core/frame_sequence.h"
 #include "image/image_io.h"
 
@@ -43,7 +44,7 @@ struct RenderOptions {
   std::string joinAt;                      // --join-at T:K,... (local driver)
   std::string acceptWorkersPath;           // --accept-workers FILE (MPI)
   std::string speedIndex = "auto";         // what workers measure: auto | hanoi | probe | none
-  unsigned long long batchPixels = 128;    // pixels per returned batch
+  unsigned long long batchPixels = WorkerOptions::kDefaultBatchPixels;    // pixels per returned batch
   std::optional<double> batchSeconds;      // batches grow to this much work; none: by the
                                            // worker count (defaultBatchSeconds)
   std::optional<double> workerTimeoutSeconds;  // the lease; none: defaultLeaseSeconds

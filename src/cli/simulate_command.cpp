@@ -14,6 +14,7 @@
 #include "cli/flag_checks.h"
 #include "cli/strategy_flags.h"
 #include "cluster/leases.h"
+#include "cluster/worker.h"
 #include "core/speed_schedule.h"
 #include "core/input_error.h"
 #include "core/machine.h"
@@ -44,7 +45,7 @@ struct SimulateOptions {
   std::string costMapPath;              // empty: the synthetic complex-scene map
   uint64_t frames = 1;                  // --frames N: a sequence of N frames, the map reused
   std::optional<double> serialSeconds;  // rescale the map to this total; synthetic default 60
-  unsigned long long batchPixels = 128;
+  unsigned long long batchPixels = WorkerOptions::kDefaultBatchPixels;
   double batchSeconds = 0;
   double batchOverheadMicroseconds = 0;
   double speedIndexSeconds = 0.08;

@@ -14,7 +14,9 @@
 namespace prt {
 
 struct WorkerOptions {
-  uint64_t batchPixels = 128;  // pixels rendered between returning results and reading mail
+  static constexpr uint64_t kDefaultBatchPixels = 128;  // --batch's default
+  uint64_t batchPixels = kDefaultBatchPixels;  // pixels rendered between returning results and
+                                               // reading mail
   // > 0: batches grow past batchPixels to what the worker renders in this many seconds at
   // its last batch's rate, up to kMaxBatchGrowth times batchPixels. Each batch costs a
   // message and, on a thread driver, wake-ups: on a 2-core machine, 128-pixel batches of a

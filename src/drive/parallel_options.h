@@ -41,7 +41,7 @@ struct ParallelOptions {
   StrategyOptions strategyOptions;
   std::vector<double> slowdowns;       // per worker, each >= 1; empty: all 1
   std::vector<SpeedChange> slowdownChanges;  // --slowdown-at: factors >= 1 from a time on
-  uint64_t batchPixels = 128;          // pixels per returned batch of results, per thread
+  uint64_t batchPixels = WorkerOptions::kDefaultBatchPixels;          // pixels per returned batch of results, per thread
   double batchSeconds = WorkerOptions::kSmallScaleBatchSeconds;  // batches grow to this much
                                        // work (WorkerOptions; the CLI: defaultBatchSeconds)
   int threads = 1;                     // rendering threads of each worker; 0: all the CPUs

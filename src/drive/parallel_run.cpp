@@ -96,7 +96,7 @@ void validateParallelOptions(const ParallelOptions& o, uint64_t pixelCount) {
     throw InputError("--checkpoint-every must be between 0.01 and 86400 seconds (got " +
                      formatNumber(o.checkpointEverySeconds) + ")");
   }
-  makeStrategy(o.strategy, o.strategyOptions);  // throws for unknown names and bad options
+  validateStrategy(o.strategy, o.strategyOptions);
 }
 
 ImageAssembler::ImageAssembler(int width, int height, int frameHeight)

@@ -20,6 +20,7 @@
 #include <optional>
 
 #include "cluster/leases.h"
+#include "cluster/worker.h"
 #include "drive/parallel_options.h"
 #include "drive/transport.h"
 #include "drive/worker_engine.h"
@@ -35,7 +36,7 @@ struct WorkerFaultActions {
 };
 
 struct WorkerLoopOptions {
-  uint64_t batchPixels = 128;         // pixels per returned batch of results (per thread)
+  uint64_t batchPixels = WorkerOptions::kDefaultBatchPixels;         // pixels per returned batch of results (per thread)
   double batchSeconds = 0;            // batches grow to this much work (WorkerOptions)
   double heartbeatSeconds = 1.0;      // a message to the master at least this often
   double masterTimeoutSeconds = kDefaultLeaseSeconds;  // silence from the master after which the worker stops

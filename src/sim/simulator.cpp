@@ -385,7 +385,7 @@ void validateSimulationOptions(const SimulationOptions& o, uint64_t pixelCount) 
     throw InputError("the heartbeat interval must be a positive number of seconds");
   }
   validateNetworkOptions(o.network);
-  makeStrategy(o.strategy, o.strategyOptions);  // throws for unknown names and bad options
+  validateStrategy(o.strategy, o.strategyOptions);
 }
 
 SimulatedRun simulate(const CostMap& costs, const SimulationOptions& options) {

@@ -34,6 +34,7 @@
 
 #include "balance/registry.h"
 #include "cluster/leases.h"
+#include "cluster/worker.h"
 #include "core/speed_schedule.h"
 #include "metrics/events.h"
 #include "metrics/run_report.h"
@@ -48,7 +49,7 @@ struct SimulationOptions {
   std::vector<double> speeds;             // one per worker, those that join included
   std::vector<JoinWave> joins;            // --join-at: the last joinerCount(joins) workers of
                                           // `speeds` join at these times (in time order)
-  uint64_t batchPixels = 128;             // pixels per returned batch, as in a real run
+  uint64_t batchPixels = WorkerOptions::kDefaultBatchPixels;             // pixels per returned batch, as in a real run
   double batchSeconds = 0;                // > 0: batches grow to this much work, as a real
                                           // run's do (WorkerOptions); 0: fixed batches
   double batchOverheadSeconds = 0;        // full-speed seconds a batch costs besides its
