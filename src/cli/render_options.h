@@ -44,7 +44,7 @@ struct RenderOptions {
   std::string joinAt;                      // --join-at T:K,... (local driver)
   std::string acceptWorkersPath;           // --accept-workers FILE (MPI)
   std::string speedIndex = "auto";         // what workers measure: auto | hanoi | probe | none
-  unsigned long long batchPixels = WorkerOptions::kDefaultBatchPixels;    // pixels per returned batch
+  unsigned long long batchPixels = WorkerOptions::kDefaultBatchPixels;  // per returned batch
   std::optional<double> batchSeconds;      // batches grow to this much work; none: by the
                                            // worker count (defaultBatchSeconds)
   std::optional<double> workerTimeoutSeconds;  // the lease; none: defaultLeaseSeconds

@@ -128,8 +128,9 @@ int runSimulate(const SimulateOptions& o) {
   options.network.latencySeconds = o.latencyMicroseconds * 1e-6;
   options.network.bandwidthBytesPerSecond = o.bandwidthMbps * 1e6 / 8;
   options.network.masterServiceSeconds = o.masterServiceMicroseconds * 1e-6;
-  options.heartbeatSeconds = heartbeatSecondsFor(
-      o.workerTimeoutSeconds.value_or(defaultLeaseSeconds(static_cast<int>(options.speeds.size()))));
+  const int workers = static_cast<int>(options.speeds.size());
+  options.heartbeatSeconds =
+      heartbeatSecondsFor(o.workerTimeoutSeconds.value_or(defaultLeaseSeconds(workers)));
   // Cheap checks before building the map: a 4K synthetic map takes a moment.
   validateSimulationOptions(options, ~0ull);
   checkHtmlPath(o.htmlPath);

@@ -1,7 +1,5 @@
 #include "cluster/endgame_order.h"
 
-#include <algorithm>
-
 namespace prt {
 
 void EndgameOrder::grow(int workers) {
@@ -40,13 +38,6 @@ void EndgameOrder::setWeight(int worker, double weight) {
 void EndgameOrder::gave(int worker, uint64_t tasks) {
   grow(worker + 1);
   bound_[static_cast<size_t>(worker)] += tasks;
-  reindex(worker);
-}
-
-void EndgameOrder::finished(int worker, uint64_t tasks) {
-  grow(worker + 1);
-  uint64_t& b = bound_[static_cast<size_t>(worker)];
-  b -= std::min(b, tasks);
   reindex(worker);
 }
 

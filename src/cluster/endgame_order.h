@@ -5,12 +5,12 @@
 //
 // What a worker has unfinished shrinks also when another worker renders a copy of its tasks,
 // which the master does not see per worker. So each worker is kept under an upper bound of its
-// unfinished count: it grows by what it is given, and shrinks only by what is known to be
-// done from its own holding (its own fresh results, what it passed on undone). A pick takes the
-// largest bound, asks for the exact count and corrects it, and repeats until the largest bound
-// is exact: that worker's key is then at least every other worker's bound, hence their exact
-// keys, so the pick is the one a walk of every worker would make. Each correction lowers a
-// bound for good, so the corrections over a run are paid for by the tasks handed out.
+// unfinished count: it grows by what it is given, and is set to the exact count whenever it
+// comes to the top. A pick takes the largest bound, asks for the exact count and corrects it,
+// and repeats until the largest bound is exact: that worker's key is then at least every other
+// worker's bound, hence their exact keys, so the pick is the one a walk of every worker would
+// make. Each correction lowers a bound to what is still owed, so the corrections over a run are
+// paid for by the tasks handed out and finished.
 // Not thread-safe: one master owns it.
 
 #include <cstdint>
@@ -29,8 +29,7 @@ class EndgameOrder {
   void setEligible(int worker, bool eligible);
   // The factor its count is weighed by (its speed index; 1 when it has none).
   void setWeight(int worker, double weight);
-  void gave(int worker, uint64_t tasks);      // the bound grows
-  void finished(int worker, uint64_t tasks);  // tasks known to have left its unfinished set
+  void gave(int worker, uint64_t tasks);  // the bound grows
   // Every bound may be low (tasks became undone again, as when a worker's pixels are taken
   // back): the next pick recomputes them all.
   void invalidate() { stale_ = true; }

@@ -50,13 +50,8 @@ TEST(EndgameOrderTest, PicksAsAWalkOfEveryWorkerWould) {
           order.gave(w, k);
           break;
         }
-        case 2: {  // done by itself, and said so
-          const uint64_t k = std::min<uint64_t>(counts[i], random() % 10);
-          counts[i] -= k;
-          order.finished(w, k);
-          break;
-        }
-        case 3:  // done by someone else: the index is not told
+        case 2:
+        case 3:  // done, by itself or by a copy: the index is not told
           counts[i] -= std::min<uint64_t>(counts[i], random() % 10);
           break;
         case 4:

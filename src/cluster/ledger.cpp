@@ -6,6 +6,27 @@
 #include "core/check.h"
 
 namespace prt {
+namespace {
+
+// Whether a task a worker was given is still owed by it: not done, and not moved out to a
+// peer. Moved tasks are few next to the image, so a sorted copy keeps this cheap without a
+// per-pixel table.
+class StillOwed {
+ public:
+  StillOwed(const std::vector<int32_t>& owner, const TaskSet& moved)
+      : owner_(owner), moved_(moved.toVector()) {
+    std::sort(moved_.begin(), moved_.end());
+  }
+  bool operator()(uint64_t t) const {
+    return owner_[t] == Ledger::kNotDone && !std::binary_search(moved_.begin(), moved_.end(), t);
+  }
+
+ private:
+  const std::vector<int32_t>& owner_;
+  std::vector<uint64_t> moved_;
+};
+
+}  // namespace
 
 Ledger::Ledger(int workerCount, uint64_t taskCount)
     : workers_(static_cast<size_t>(workerCount)), liveCount_(workerCount), owner_(taskCount, kNotDone), handedOut_(taskCount, false) {
@@ -121,12 +142,9 @@ TaskSet Ledger::unfinished(int worker) const {
 
 uint64_t Ledger::unfinishedCount(int worker) const {
   const Holding& h = workers_[index(worker)];
-  std::vector<uint64_t> moved = h.moved.toVector();
-  std::sort(moved.begin(), moved.end());
+  const StillOwed owed(owner_, h.moved);
   uint64_t count = 0;
-  h.given.forEach([&](uint64_t t) {
-    if (owner_[t] == kNotDone && !std::binary_search(moved.begin(), moved.end(), t)) ++count;
-  });
+  h.given.forEach([&](uint64_t t) { count += owed(t) ? 1 : 0; });
   return count;
 }
 
@@ -134,13 +152,7 @@ TaskSet Ledger::unfinishedTail(int worker, uint64_t count) const {
   const Holding& h = workers_[index(worker)];
   TaskSet out;
   if (count == 0) return out;
-  // What it moved out is not its own any more. Moved tasks are few next to the image, so a
-  // sorted copy keeps this cheap without a per-pixel table.
-  std::vector<uint64_t> moved = h.moved.toVector();
-  std::sort(moved.begin(), moved.end());
-  auto keeps = [&](uint64_t t) {
-    return owner_[t] == kNotDone && !std::binary_search(moved.begin(), moved.end(), t);
-  };
+  const StillOwed keeps(owner_, h.moved);
   if (count >= h.given.size()) {
     h.given.forEach([&](uint64_t t) {
       if (keeps(t)) out.append(TaskRun{t, 1, 1});

@@ -28,8 +28,9 @@ TaskSet Worker::nextBatch() {
   uint64_t size = options_.batchPixels;
   if (options_.batchSeconds > 0 && pixelsPerSecond_ > 0) {
     const double wanted = pixelsPerSecond_ * options_.batchSeconds;
-    const double most = static_cast<double>(size) * WorkerOptions::kMaxBatchGrowth *
-                        std::max(1.0, options_.batchSeconds / WorkerOptions::kSmallScaleBatchSeconds);
+    const double longer = options_.batchSeconds / WorkerOptions::kSmallScaleBatchSeconds;
+    const double most =
+        static_cast<double>(size) * WorkerOptions::kMaxBatchGrowth * std::max(1.0, longer);
     if (wanted > static_cast<double>(size)) size = static_cast<uint64_t>(std::min(wanted, most));
   }
   return queue_.takeFront(size);

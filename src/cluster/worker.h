@@ -5,10 +5,12 @@
 // comes back. The same object runs under threads, MPI and the simulator.
 // Not thread-safe: one driver thread calls it.
 
+#include <algorithm>
 #include <cstdint>
 #include <optional>
 #include <vector>
 
+#include "cluster/leases.h"
 #include "cluster/messages.h"
 
 namespace prt {
@@ -29,10 +31,9 @@ struct WorkerOptions {
   static constexpr double kSmallScaleBatchSeconds = 0.03;
 };
 
-// The master's CPU time for one results message and its reply, as measured on a 2-core
-// machine under MPI (about 2.5 us per message in or out; docs/results.md, "One master's
-// load"), and the share of the master's time that the results of all workers may take.
-inline constexpr double kMasterSecondsPerResult = 5e-6;
+// The master's CPU time for one results message and its reply (leases.h), and the share of
+// the master's time that the results of all workers may take.
+inline constexpr double kMasterSecondsPerResult = 2 * kMasterSecondsPerMessage;
 inline constexpr double kMasterResultsShare = 0.2;
 
 // --batch-seconds' default for `workers` workers: kSmallScaleBatchSeconds, or longer where that
@@ -41,8 +42,7 @@ inline constexpr double kMasterResultsShare = 0.2;
 inline double defaultBatchSeconds(int workers) {
   const double scaled =
       static_cast<double>(workers) * kMasterSecondsPerResult / kMasterResultsShare;
-  return scaled > WorkerOptions::kSmallScaleBatchSeconds ? scaled
-                                                         : WorkerOptions::kSmallScaleBatchSeconds;
+  return std::max(scaled, WorkerOptions::kSmallScaleBatchSeconds);
 }
 
 class Worker {

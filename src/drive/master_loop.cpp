@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "core/cpu_time.h"
@@ -119,12 +120,16 @@ class MasterLoop {
     sendOutbox(net_, kMaster, out, log_);
     const double now = net_.now();
     for (const Envelope& e : out) {
-      if (e.to < 0) continue;
-      const auto w = static_cast<size_t>(e.to);
-      if (w >= lastSent_.size()) lastSent_.resize(w + 1, now);
-      lastSent_[w] = now;
+      if (e.to >= 0) lastSentTo(e.to) = now;
     }
     load_.sent += out.size();
+  }
+
+  // When the master last sent `worker` anything (never: -infinity).
+  double& lastSentTo(int worker) {
+    const auto w = static_cast<size_t>(worker);
+    if (w >= lastSent_.size()) lastSent_.resize(w + 1, -std::numeric_limits<double>::infinity());
+    return lastSent_[w];
   }
 
   // A heartbeat to every worker the master has sent nothing to for a heartbeat interval, lost
@@ -133,13 +138,12 @@ class MasterLoop {
   // the master's own traffic in proportion to the work, not to the number of workers.
   void heartbeat(double now) {
     const Bytes beat = encode(HeartbeatMsg{});
-    const auto n = static_cast<size_t>(master_.workerCount());
-    if (lastSent_.size() < n) lastSent_.resize(n, -1e300);
-    for (size_t w = 0; w < n; ++w) {
+    for (int w = 0; w < master_.workerCount(); ++w) {
+      double& last = lastSentTo(w);
       // A little early rather than a whole interval late: rounds come every interval.
-      if (now - lastSent_[w] < 0.75 * options_.heartbeatSeconds) continue;
-      net_.send(static_cast<int>(w), Channel::Protocol, beat);
-      lastSent_[w] = now;
+      if (now - last < 0.75 * options_.heartbeatSeconds) continue;
+      net_.send(w, Channel::Protocol, beat);
+      last = now;
       ++load_.sent;
       ++load_.heartbeatsSent;
     }

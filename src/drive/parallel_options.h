@@ -41,13 +41,15 @@ struct ParallelOptions {
   StrategyOptions strategyOptions;
   std::vector<double> slowdowns;       // per worker, each >= 1; empty: all 1
   std::vector<SpeedChange> slowdownChanges;  // --slowdown-at: factors >= 1 from a time on
-  uint64_t batchPixels = WorkerOptions::kDefaultBatchPixels;          // pixels per returned batch of results, per thread
+  uint64_t batchPixels = WorkerOptions::kDefaultBatchPixels;  // pixels per returned batch of
+                                                              // results, per thread
   double batchSeconds = WorkerOptions::kSmallScaleBatchSeconds;  // batches grow to this much
                                        // work (WorkerOptions; the CLI: defaultBatchSeconds)
   int threads = 1;                     // rendering threads of each worker; 0: all the CPUs
                                        // its affinity allows (mpirun --bind-to sets it)
-  double workerTimeoutSeconds = kDefaultLeaseSeconds;  // the lease: silence (not even a heartbeat) after which
-                                       // a worker is lost; also the master's, for the workers
+  double workerTimeoutSeconds = kDefaultLeaseSeconds;  // the lease: silence (not even a
+                                       // heartbeat) after which a worker is lost; also the
+                                       // master's, for the workers (the CLI: defaultLeaseSeconds)
   SpeedIndexKind speedIndexKind = SpeedIndexKind::Hanoi;  // what each worker measures
   int speedIndexDiscs = kSpeedIndexDiscs;  // size of each worker's Towers of Hanoi run
   std::vector<FaultInjection> faults;  // worker W is rank W+1 under MPI

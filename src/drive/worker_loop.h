@@ -36,10 +36,12 @@ struct WorkerFaultActions {
 };
 
 struct WorkerLoopOptions {
-  uint64_t batchPixels = WorkerOptions::kDefaultBatchPixels;         // pixels per returned batch of results (per thread)
+  uint64_t batchPixels = WorkerOptions::kDefaultBatchPixels;  // pixels per returned batch of
+                                                              // results (per thread)
   double batchSeconds = 0;            // batches grow to this much work (WorkerOptions)
   double heartbeatSeconds = 1.0;      // a message to the master at least this often
-  double masterTimeoutSeconds = kDefaultLeaseSeconds;  // silence from the master after which the worker stops
+  double masterTimeoutSeconds = kDefaultLeaseSeconds;  // silence from the master after which
+                                                       // the worker stops
   std::optional<FaultInjection> fault;
 };
 

@@ -49,7 +49,8 @@ struct SimulationOptions {
   std::vector<double> speeds;             // one per worker, those that join included
   std::vector<JoinWave> joins;            // --join-at: the last joinerCount(joins) workers of
                                           // `speeds` join at these times (in time order)
-  uint64_t batchPixels = WorkerOptions::kDefaultBatchPixels;             // pixels per returned batch, as in a real run
+  uint64_t batchPixels = WorkerOptions::kDefaultBatchPixels;  // pixels per returned batch, as
+                                                              // in a real run
   double batchSeconds = 0;                // > 0: batches grow to this much work, as a real
                                           // run's do (WorkerOptions); 0: fixed batches
   double batchOverheadSeconds = 0;        // full-speed seconds a batch costs besides its
