@@ -2,28 +2,64 @@
 
 #include <algorithm>
 #include <limits>
+#include <unordered_set>
 
 #include "core/check.h"
 
 namespace prt {
 namespace {
 
-// Whether a task a worker was given is still owed by it: not done, and not moved out to a
-// peer. Moved tasks are few next to the image, so a sorted copy keeps this cheap without a
-// per-pixel table.
+// Whether a task a worker was given is still owed by it: not done, and given to it more often
+// than it sent it on to a peer. A task can come back to a worker it left: stolen from it, then
+// returned to the strategy when the thief was lost, and handed to it again. Moved tasks are
+// few next to the image, so sorted copies keep this cheap without a per-pixel table.
 class StillOwed {
  public:
-  StillOwed(const std::vector<int32_t>& owner, const TaskSet& moved)
+  StillOwed(const std::vector<int32_t>& owner, const TaskSet& given, const TaskSet& moved)
       : owner_(owner), moved_(moved.toVector()) {
+    if (moved_.empty()) return;
     std::sort(moved_.begin(), moved_.end());
+    // Each moved task once, with how often it was given (counted below) less moved out.
+    for (size_t i = 0; i < moved_.size();) {
+      size_t j = i;
+      while (j < moved_.size() && moved_[j] == moved_[i]) ++j;
+      distinct_.push_back(moved_[i]);
+      net_.push_back(-static_cast<int64_t>(j - i));
+      i = j;
+    }
+    for (const TaskRun& r : given.runs()) {
+      if (r.count == 0) continue;
+      auto it = std::lower_bound(distinct_.begin(), distinct_.end(), r.first);
+      for (; it != distinct_.end() && *it <= r.last(); ++it) {
+        if (r.stride == 0 ? *it == r.first : (*it - r.first) % r.stride == 0) {
+          net_[static_cast<size_t>(it - distinct_.begin())] +=
+              r.stride == 0 ? static_cast<int64_t>(r.count) : 1;
+        }
+      }
+    }
   }
   bool operator()(uint64_t t) const {
-    return owner_[t] == Ledger::kNotDone && !std::binary_search(moved_.begin(), moved_.end(), t);
+    if (owner_[t] != Ledger::kNotDone) return false;
+    const auto it = std::lower_bound(distinct_.begin(), distinct_.end(), t);
+    return it == distinct_.end() || *it != t || net_[static_cast<size_t>(it - distinct_.begin())] > 0;
   }
 
  private:
   const std::vector<int32_t>& owner_;
   std::vector<uint64_t> moved_;
+  std::vector<uint64_t> distinct_;
+  std::vector<int64_t> net_;  // per distinct moved task: times given less times moved out
+};
+
+// Each task once, for a worker that may have been given some task twice.
+class Once {
+ public:
+  explicit Once(bool needed) : needed_(needed) {}
+  bool first(uint64_t t) { return !needed_ || seen_.insert(t).second; }
+
+ private:
+  bool needed_;
+  std::unordered_set<uint64_t> seen_;
 };
 
 }  // namespace
@@ -96,9 +132,12 @@ double Ledger::nextExpiry(double leaseSeconds) const {
 }
 
 void Ledger::gave(int worker, const TaskSet& tasks) {
-  workers_[index(worker)].given.append(tasks);
+  Holding& h = workers_[index(worker)];
+  h.given.append(tasks);
   tasks.forEach([&](uint64_t t) {
     PRT_CHECK(t < taskCount());
+    // A task handed out before (a copy, or one back from a loss) may reach it twice.
+    h.mayRepeat = h.mayRepeat || handedOut_[t];
     handedOut_[t] = true;
   });
 }
@@ -142,9 +181,10 @@ TaskSet Ledger::unfinished(int worker) const {
 
 uint64_t Ledger::unfinishedCount(int worker) const {
   const Holding& h = workers_[index(worker)];
-  const StillOwed owed(owner_, h.moved);
+  const StillOwed owed(owner_, h.given, h.moved);
+  Once once(h.mayRepeat);
   uint64_t count = 0;
-  h.given.forEach([&](uint64_t t) { count += owed(t) ? 1 : 0; });
+  h.given.forEach([&](uint64_t t) { count += owed(t) && once.first(t) ? 1 : 0; });
   return count;
 }
 
@@ -152,10 +192,11 @@ TaskSet Ledger::unfinishedTail(int worker, uint64_t count) const {
   const Holding& h = workers_[index(worker)];
   TaskSet out;
   if (count == 0) return out;
-  const StillOwed keeps(owner_, h.moved);
+  const StillOwed keeps(owner_, h.given, h.moved);
+  Once once(h.mayRepeat);
   if (count >= h.given.size()) {
     h.given.forEach([&](uint64_t t) {
-      if (keeps(t)) out.append(TaskRun{t, 1, 1});
+      if (keeps(t) && once.first(t)) out.append(TaskRun{t, 1, 1});
     });
     return out;
   }
@@ -165,7 +206,7 @@ TaskSet Ledger::unfinishedTail(int worker, uint64_t count) const {
   for (auto r = runs.rbegin(); r != runs.rend() && tail.size() < count; ++r) {
     for (uint64_t i = r->count; i-- > 0 && tail.size() < count;) {
       const uint64_t t = r->at(i);
-      if (keeps(t)) tail.push_back(t);
+      if (keeps(t) && once.first(t)) tail.push_back(t);
     }
   }
   for (auto t = tail.rbegin(); t != tail.rend(); ++t) out.append(TaskRun{*t, 1, 1});

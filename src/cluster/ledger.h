@@ -118,6 +118,7 @@ class Ledger {
     TaskSet moved;     // tasks it sent to peers
     uint64_t returned = 0;  // tasks it returned results for
     uint64_t accepted = 0;  // of those, the ones that were first (in the image)
+    bool mayRepeat = false;  // given a task that was handed out before: `given` may repeat it
   };
   size_t index(int worker) const;
   void setLastHeard(int worker, double when);

@@ -79,6 +79,37 @@ TEST(LedgerTest, ALostWorkersUnfinishedTasksLeaveOutWhatItMovedAndWhatIsDone) {
   EXPECT_EQ(ledger.accept(0, TaskSet::range(2, 2)), TaskSet::range(2, 1));
 }
 
+// Stolen, then back: worker 0's tasks 7..9 went to worker 2, worker 2 was lost before it
+// rendered them, and the strategy handed them to worker 0 again. Worker 0 owes them once more
+// (a loss of worker 0 that left them out would leave them undone for ever), and once each,
+// however often they reached it.
+TEST(LedgerTest, TasksThatCameBackToAWorkerTheyLeftAreOwedByItOnce) {
+  Ledger ledger(3, 20);
+  ledger.gave(0, TaskSet::range(0, 10));
+  ledger.movedOut(0, TaskSet::range(7, 3));
+  ledger.gave(2, TaskSet::range(7, 3));
+  EXPECT_EQ(ledger.markLost(2, 1.0, "lost").toVector(), (std::vector<uint64_t>{7, 8, 9}));
+  ledger.gave(0, TaskSet::range(8, 2));
+  ledger.accept(0, TaskSet::range(0, 7));
+  EXPECT_EQ(ledger.unfinishedCount(0), 2u);
+  EXPECT_EQ(ledger.unfinishedTail(0, 1).toVector(), (std::vector<uint64_t>{9}));
+  EXPECT_EQ(ledger.markLost(0, 2.0, "lost").toVector(), (std::vector<uint64_t>{8, 9}));
+}
+
+// A task given twice without a move between (a copy, or one undone again when the worker that
+// first rendered it was rejected) is listed once among what is owed.
+TEST(LedgerTest, ATaskGivenTwiceIsOwedOnce) {
+  Ledger ledger(2, 10);
+  ledger.gave(0, TaskSet::range(0, 4));
+  ledger.gave(1, TaskSet::range(3, 1));  // an end-game copy of task 3
+  ledger.accept(1, TaskSet::range(3, 1));
+  ledger.takeBack(1);  // worker 1 rejected: task 3 undone again
+  ledger.gave(0, TaskSet::range(3, 1));
+  EXPECT_EQ(ledger.unfinished(0).toVector(), (std::vector<uint64_t>{0, 1, 2, 3}));
+  EXPECT_EQ(ledger.unfinishedCount(0), 4u);
+  EXPECT_EQ(ledger.unfinishedTail(0, 2).toVector(), (std::vector<uint64_t>{2, 3}));
+}
+
 TEST(LedgerTest, LeasesExpireOnlyForLiveSilentWorkers) {
   Ledger ledger(3, 5);
   ledger.startLeases(10.0);
