@@ -21,6 +21,7 @@ packages=(
   libtinygltf-dev libstb-dev  # glTF 2.0 model files, and texture images
   libgtest-dev libgmock-dev libbenchmark-dev
   openmpi-bin libopenmpi-dev
+  slurmctld slurmd slurm-client munge  # a Slurm cluster on this machine (ctest -L slurm)
   povray
   libembree-dev  # bench/mesh_bench.cpp only: Embree's rays per second beside PRT's
   python3 gnuplot-nox hyperfine

@@ -13,11 +13,16 @@
 # Run a job across the hosts with:
 #   mpirun $(cat DIR/mpirun-flags) --hostfile DIR/hostfile -np 3 build/prt render ...
 # Traffic stays on the bridge's private subnet, inside this machine.
+#
+# Two clusters can stand side by side: PRT_NETNS_PREFIX (default prt-h) names the hosts, the
+# bridge (PREFIX-br) and the host ends of the links (PREFIX-vI); PRT_NETNS_SUBNET (default
+# 10.231.0) is their /24. scripts/slurm-cluster.sh uses prt-s on 10.232.0.
 set -euo pipefail
 
-bridge=prt-br0
-subnet=10.231.0
-prefix=prt-h
+prefix=${PRT_NETNS_PREFIX:-prt-h}
+subnet=${PRT_NETNS_SUBNET:-10.231.0}
+bridge=$prefix-br
+veth=$prefix-v
 
 host_ip() { echo "$subnet.$((10 + $1))"; }
 
@@ -33,8 +38,8 @@ up() {
   for ((i = 0; i < n; i++)); do
     local ns=$prefix$i
     ip netns add "$ns"
-    ip link add "prt-v$i" type veth peer name eth0 netns "$ns"
-    ip link set "prt-v$i" master "$bridge" up
+    ip link add "$veth$i" type veth peer name eth0 netns "$ns"
+    ip link set "$veth$i" master "$bridge" up
     ip -n "$ns" addr add "$(host_ip "$i")/24" dev eth0
     ip -n "$ns" link set eth0 up
     ip -n "$ns" link set lo up
@@ -47,7 +52,7 @@ up() {
     ready=1
     [ "$(cat "/sys/class/net/$bridge/operstate")" = up ] || ready=0
     for ((i = 0; i < n; i++)); do
-      [ "$(cat "/sys/class/net/prt-v$i/brport/state" 2>/dev/null)" = 3 ] || ready=0
+      [ "$(cat "/sys/class/net/$veth$i/brport/state" 2>/dev/null)" = 3 ] || ready=0
       [ "$(ip netns exec "$prefix$i" cat /sys/class/net/eth0/operstate)" = up ] || ready=0
     done
     ((ready == 1)) || sleep 0.05
@@ -74,7 +79,7 @@ down() {
     ip netns pids "$ns" 2>/dev/null | xargs -r kill -9 2>/dev/null || true
     ip netns del "$ns" 2>/dev/null || true
   done
-  for v in $(ip -o link show 2>/dev/null | awk -F': ' '{print $2}' | grep '^prt-v' | cut -d@ -f1 || true); do
+  for v in $(ip -o link show 2>/dev/null | awk -F': ' '{print $2}' | grep "^$veth" | cut -d@ -f1 || true); do
     ip link del "$v" 2>/dev/null || true
   done
   ip link del "$bridge" 2>/dev/null || true
@@ -85,8 +90,8 @@ down() {
 case ${1:-} in
   up) up "${2:?number of hosts}" "${3:-}" ;;
   down) down "${2:-}" ;;
-  link-down) ip link set "prt-v${2:?host index}" down ;;
-  link-up) ip link set "prt-v${2:?host index}" up ;;
+  link-down) ip link set "$veth${2:?host index}" down ;;
+  link-up) ip link set "$veth${2:?host index}" up ;;
   *)
     echo "usage: $0 up N [DIR] | link-down I | link-up I | down [DIR]" >&2
     exit 2

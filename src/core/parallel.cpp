@@ -1,5 +1,7 @@
 #include "core/parallel.h"
 
+#include "core/cpu_allocation.h"
+
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
@@ -16,7 +18,7 @@ int hardwareThreads() {
 }
 
 void parallelFor(uint64_t count, int threads, const std::function<void(uint64_t)>& fn) {
-  if (threads <= 0) threads = hardwareThreads();
+  if (threads <= 0) threads = allocatedCpuCount();  // the mask, and a Slurm job's share
   if (threads == 1 || count <= 1) {
     for (uint64_t i = 0; i < count; ++i) fn(i);
     return;

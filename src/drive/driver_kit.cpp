@@ -266,6 +266,7 @@ ParallelRun runMasterSide(Transport& net, const RunRequest& request, const std::
   for (int w = 0; w < master.workerCount(); ++w) {
     info.joinedAt.push_back(ledger.joinedAt(w));
     info.acceptedPixels.push_back(ledger.acceptedFrom(w));
+    info.hosts.push_back(master.identity(w).host);
     const auto& summary = result.summaries[static_cast<size_t>(w)];
     if (!summary) {
       info.slowdowns.push_back(options.slowdownOf(w));

@@ -43,6 +43,7 @@ struct WorkerReport {
   double slowdown = 1;
   uint64_t tasks = 0;   // task messages received (assignments and transfers)
   int threads = 1;      // rendering threads (0: unknown, its summary never came)
+  std::string host;     // the machine it ran on, as it named itself ("": not known)
   uint64_t pixels = 0;  // pixels rendered (from its events; for a worker whose events never
                         // came, a lost one, the pixels the master accepted from it)
   double busySeconds = 0;
@@ -118,6 +119,7 @@ struct RunInfo {
   std::vector<double> slowdowns;        // per worker, 1 = full speed
   std::vector<uint64_t> tasksReceived;  // per worker
   std::vector<int> threads;             // per worker: rendering threads (0: unknown)
+  std::vector<std::string> hosts;       // per worker: its machine's name ("": not known)
   std::vector<std::optional<double>> joinedAt;  // per worker: when it joined; none: at start
   std::vector<uint64_t> acceptedPixels;  // per worker, optional: the pixels of the image whose
                                          // result came first from it (the master's count)

@@ -19,6 +19,7 @@
 
 #include "core/thread_start.h"
 #include "core/check.h"
+#include "core/cpu_allocation.h"
 #include "core/exit_status.h"
 #include "core/input_error.h"
 #include "core/input_file.h"
@@ -284,6 +285,11 @@ int runMpiWorker(MpiSession& session, const ParallelOptions& options) {
     MpiLink link(session.comm().comm);
     WorkerFaultActions faults;  // set only for this rank's injected fault, if any
     ParallelOptions mine = options;
+    if (mine.threads <= 0) {
+      // The workers on this node share its CPUs; the master, if here, mostly waits.
+      mine.threads = allocatedCpuCount(session.ranksOnThisNode() -
+                                       (session.rankZeroOnThisNode() ? 1 : 0));
+    }
     // A slowdown list of the wrong length is the master's to report: it releases us.
     if (mine.slowdowns.size() != static_cast<size_t>(session.workerCount())) mine.slowdowns.clear();
     for (const FaultInjection& f : mine.faults) {
@@ -457,7 +463,9 @@ int runJoinedWorkers(MpiSession& session, const JoinRequest& request) {
         }
       }
     }
-    options.threads = request.threads;
+    // Every joining process of this job renders: they share the node's allocation.
+    options.threads =
+        request.threads > 0 ? request.threads : allocatedCpuCount(session.ranksOnThisNode());
     options.slowdowns.assign(static_cast<size_t>(id) + 1, 1.0);
     options.slowdowns.back() = request.slowdown;
     for (SpeedChange c : request.slowdownChanges) {

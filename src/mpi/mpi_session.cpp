@@ -81,6 +81,15 @@ MpiSession::MpiSession(bool threadMultiple, double startupSeconds)
     check(MPI_Comm_set_errhandler(comm_->comm, MPI_ERRORS_RETURN), "MPI_Comm_set_errhandler", -1);
     check(MPI_Comm_rank(comm_->comm, &rank_), "MPI_Comm_rank", -1);
     check(MPI_Comm_size(comm_->comm, &size_), "MPI_Comm_size", -1);
+    // Who shares this node: the ranks MPI can reach through shared memory.
+    MPI_Comm node = MPI_COMM_NULL;
+    check(MPI_Comm_split_type(comm_->comm, MPI_COMM_TYPE_SHARED, rank_, MPI_INFO_NULL, &node),
+          "MPI_Comm_split_type", -1);
+    int lowest = rank_;
+    check(MPI_Comm_size(node, &ranksOnNode_), "MPI_Comm_size", -1);
+    check(MPI_Allreduce(&rank_, &lowest, 1, MPI_INT, MPI_MIN, node), "MPI_Allreduce", -1);
+    rankZeroOnNode_ = lowest == 0;
+    MPI_Comm_free(&node);
   } catch (const std::exception& e) {
     abort(e.what(), 1);
   }

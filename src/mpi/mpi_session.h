@@ -44,6 +44,10 @@ class MpiSession {
   bool isMaster() const { return rank_ == 0; }
   int workerCount() const { return size_ - 1; }
   bool threadMultiple() const;
+  // The ranks of this job on this rank's node (itself included), and whether rank 0 is among
+  // them: what a worker's default thread count shares the node's CPUs among.
+  int ranksOnThisNode() const { return ranksOnNode_; }
+  bool rankZeroOnThisNode() const { return rankZeroOnNode_; }
 
   // Master only. Before a run has started: tells every worker there will be no run (bad input
   // on the master, which reports it), and they exit with `exitCode` without printing. Once the
@@ -66,6 +70,8 @@ class MpiSession {
  private:
   std::unique_ptr<MpiComm> comm_;
   int rank_ = 0;
+  int ranksOnNode_ = 1;
+  bool rankZeroOnNode_ = true;
   int size_ = 1;
 };
 

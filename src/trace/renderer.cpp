@@ -7,6 +7,7 @@
 #include <numeric>
 #include <vector>
 
+#include "core/cpu_allocation.h"
 #include "core/cpu_time.h"
 #include "core/parallel.h"
 #include "trace/sampling.h"
@@ -164,7 +165,7 @@ uint64_t renderTasks(const Renderer& renderer, const TaskSet& tasks, int threads
   colors.resize(tasks.size());
   // About four pieces per thread, between 8 and 256 pixels: enough to even out pixels of
   // different cost, few enough that a piece is more work than taking it.
-  const uint64_t threadCount = static_cast<uint64_t>(threads <= 0 ? hardwareThreads() : threads);
+  const uint64_t threadCount = static_cast<uint64_t>(threads <= 0 ? allocatedCpuCount() : threads);
   const uint64_t piece =
       std::clamp<uint64_t>((tasks.size() + 4 * threadCount - 1) / (4 * threadCount), 8, 256);
   const uint64_t pieces = (tasks.size() + piece - 1) / piece;
