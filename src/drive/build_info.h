@@ -3,7 +3,7 @@
 // invitation: PRT's version and the build of its trace kernels (the machine's name is
 // core/machine.h's hostName()).
 //
-// The version rule (Master, mpi/invitation.h): workers of another PRT version are refused or
+// The version rule (Master, net/invitation.h): workers of another PRT version are refused or
 // rejected; the trace kernels' ISA level may differ, since every build renders the same bits
 // (tested, and watched at run time by the spot checks).
 

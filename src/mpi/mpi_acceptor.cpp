@@ -14,7 +14,9 @@
 
 namespace prt::mpi_detail {
 
-MpiAcceptor::MpiAcceptor(const std::string& portFile) : file_(portFile) {
+MpiAcceptor::MpiAcceptor(const std::string& portFile, const Secret& secret,
+                         const std::vector<std::string>& tcpAddresses)
+    : file_(portFile) {
   int provided = MPI_THREAD_SINGLE;
   check(MPI_Query_thread(&provided), "MPI_Query_thread", -1);
   if (provided < MPI_THREAD_MULTIPLE) {
@@ -26,7 +28,7 @@ MpiAcceptor::MpiAcceptor(const std::string& portFile) : file_(portFile) {
   char name[MPI_MAX_PORT_NAME] = {};
   check(MPI_Open_port(MPI_INFO_NULL, name), "MPI_Open_port", -1);
   state_->port = name;
-  state_->secret = newSecret();
+  state_->secret = secret;
   try {
     // Readable by its owner only: whoever reads the port can try to join. The mode is set on
     // the temporary file before anything is written, so the name is never readable by others.
@@ -35,7 +37,7 @@ MpiAcceptor::MpiAcceptor(const std::string& portFile) : file_(portFile) {
         throw InputError("cannot make the port file '" + file_ + "' private: " +
                          std::strerror(errno));
       }
-      std::fputs(portFileText(state_->port, state_->secret).c_str(), f);
+      std::fputs(portFileText(state_->port, state_->secret, tcpAddresses).c_str(), f);
     });
   } catch (...) {
     MPI_Close_port(name);

@@ -17,7 +17,7 @@
 // behind blocked, which Open MPI 4.1 tolerates at MPI_Finalize; what it uses is shared with
 // it, so it outlives this object. The port file is removed first, so no new joiner reads it.
 //
-// Invitations (mpi/invitation.h): the port file, readable by its owner only, also holds a
+// Invitations (net/invitation.h): the port file, readable by its owner only, also holds a
 // random secret. Before a joining job is queued, each of its ranks must answer a challenge
 // with proof of the secret and a compatible version, within kProofSeconds; a job with a rank
 // that does not is told why (kRefusedTag), dropped without a collective call (a hostile one
@@ -36,7 +36,7 @@
 #include <thread>
 #include <vector>
 
-#include "mpi/invitation.h"
+#include "net/invitation.h"
 
 namespace prt::mpi_detail {
 
@@ -44,7 +44,9 @@ class MpiAcceptor {
  public:
   // Opens the port and writes its name to `portFile`. Throws InputError when the file cannot
   // be written, MpiError when MPI refuses (it lacks MPI_THREAD_MULTIPLE, or ports).
-  explicit MpiAcceptor(const std::string& portFile);
+  // The file also gets the invitation's `secret` and the TCP door's `tcpAddresses`.
+  MpiAcceptor(const std::string& portFile, const Secret& secret,
+              const std::vector<std::string>& tcpAddresses);
   ~MpiAcceptor();
   MpiAcceptor(const MpiAcceptor&) = delete;
   MpiAcceptor& operator=(const MpiAcceptor&) = delete;

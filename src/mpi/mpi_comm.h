@@ -9,6 +9,7 @@
 #include "mpi/mpi_acceptor.h"
 #include "mpi/mpi_session.h"
 #include "mpi/mpi_transport.h"
+#include "net/tcp_door.h"
 
 namespace prt {
 
@@ -19,7 +20,8 @@ struct MpiComm {
   bool skipFinalize = false;      // a rank was lost: MPI_Finalize would wait for it
   bool threadMultiple = false;    // MPI_THREAD_MULTIPLE provided (needed to accept joiners)
   std::unique_ptr<mpi_detail::MpiLink> link;           // master: the run's, joiners and all
-  std::unique_ptr<mpi_detail::MpiAcceptor> acceptor;   // master: --accept-workers
+  std::unique_ptr<mpi_detail::MpiAcceptor> acceptor;   // master: --accept-workers (MPI)
+  std::unique_ptr<TcpDoor> door;                       // master: --accept-workers (TCP)
 };
 
 }  // namespace prt

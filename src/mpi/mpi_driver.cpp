@@ -26,7 +26,9 @@
 #include "core/byte_codec.h"
 #include "core/machine.h"
 #include "drive/build_info.h"
-#include "mpi/invitation.h"
+#include "net/invitation.h"
+#include "net/join_welcome.h"
+#include "net/tcp_door.h"
 #include "mpi/mpi_acceptor.h"
 #include "mpi/mpi_comm.h"
 #include "mpi/mpi_transport.h"
@@ -105,46 +107,6 @@ bool endLauncherIfStillRunningAfter(double graceSeconds) {
   ::_exit(0);
 }
 
-// What a joiner needs of the run's options, which it was not started with: the master sends
-// it in the welcome (MpiLink::adopt) after the joiner's endpoint.
-Bytes encodeWelcome(const ParallelOptions& o) {
-  const auto kind = static_cast<uint8_t>(o.speedIndexKind);
-  const auto discs = static_cast<int32_t>(o.speedIndexDiscs);
-  const auto batch = static_cast<uint64_t>(o.batchPixels);
-  const double timeout = o.workerTimeoutSeconds;
-  const double batchSeconds = o.batchSeconds;
-  // Laid out by hand, as ByteWriter would (GCC 12 misreads its inlined copies here).
-  Bytes out(sizeof kind + sizeof discs + sizeof batch + sizeof timeout + sizeof batchSeconds);
-  uint8_t* p = out.data();
-  std::memcpy(p, &kind, sizeof kind);
-  std::memcpy(p += sizeof kind, &discs, sizeof discs);
-  std::memcpy(p += sizeof discs, &batch, sizeof batch);
-  std::memcpy(p += sizeof batch, &timeout, sizeof timeout);
-  std::memcpy(p + sizeof timeout, &batchSeconds, sizeof batchSeconds);
-  return out;
-}
-
-// The joiner's side: its endpoint and the run's options over its own (threads, slowdown).
-int decodeWelcome(const Bytes& bytes, ParallelOptions& o) {
-  ByteReader r(bytes.data(), bytes.size(), "welcome");
-  const auto endpoint = r.pod<int32_t>();
-  (void)r.pod<int32_t>();
-  const auto kind = r.pod<uint8_t>();
-  if (kind > static_cast<uint8_t>(SpeedIndexKind::Slowdown)) {
-    throw std::runtime_error("malformed welcome: speed index kind");
-  }
-  o.speedIndexKind = static_cast<SpeedIndexKind>(kind);
-  o.speedIndexDiscs = r.pod<int32_t>();
-  o.batchPixels = r.pod<uint64_t>();
-  o.workerTimeoutSeconds = r.pod<double>();
-  o.batchSeconds = r.pod<double>();
-  if (endpoint < 0 || o.speedIndexDiscs < 1 || o.batchPixels < 1 ||
-      !(o.workerTimeoutSeconds > 0) || !(o.batchSeconds >= 0 && o.batchSeconds <= 60)) {
-    throw std::runtime_error("malformed welcome");
-  }
-  return endpoint;
-}
-
 }  // namespace
 
 ParallelRun renderMpiMaster(MpiSession& session, const RunRequest& request) {
@@ -163,24 +125,43 @@ ParallelRun renderMpiMaster(MpiSession& session, const RunRequest& request) {
       throw InputError("--accept-workers needs MPI_THREAD_MULTIPLE, which this MPI does not "
                        "provide");
     }
+    // Two doors, one invitation: an MPI port for `mpirun prt join` (through an ompi-server),
+    // and a TCP one for `prt join` anywhere else, across hosts included.
+    const Secret secret = newSecret();
     try {
-      comm.acceptor = std::make_unique<MpiAcceptor>(options.acceptWorkersPath);
+      comm.door = std::make_unique<TcpDoor>(secret);
+    } catch (const std::exception& e) {
+      throw InputError(std::string("--accept-workers: ") + e.what());
+    }
+    try {
+      comm.acceptor = std::make_unique<MpiAcceptor>(options.acceptWorkersPath, secret,
+                                                    comm.door->addresses());
     } catch (const MpiError& e) {
       throw InputError(std::string("--accept-workers: ") + e.what() +
                        " (run both mpiruns with the same --ompi-server; see docs/running.md)");
     }
     MpiAcceptor* acceptor = comm.acceptor.get();
     comm.link->setAcceptSource([acceptor] { return acceptor->take(); }, encodeWelcome(options));
+    comm.link->setTcpDoor(comm.door.get());
   }
   comm.runStarted = true;
   RunRequest withBlocklist = request;
   if (comm.acceptor) {
     // A machine whose worker was rejected may not join again in this run.
     MpiAcceptor* acceptor = comm.acceptor.get();
-    withBlocklist.rejectedHost = [acceptor](const std::string& host) { acceptor->block(host); };
+    TcpDoor* door = comm.door.get();
+    withBlocklist.rejectedHost = [acceptor, door](const std::string& host) {
+      acceptor->block(host);
+      door->block(host);
+    };
   }
   ParallelRun run = runMasterSide(*comm.link, withBlocklist, "mpi");
-  if (comm.acceptor) run.report.info.faults.refusedJoiners = comm.acceptor->refused();
+  if (comm.acceptor) {
+    run.report.info.faults.refusedJoiners = comm.acceptor->refused();
+    for (const std::string& why : comm.door->refused()) {
+      run.report.info.faults.refusedJoiners.push_back(why);
+    }
+  }
   comm.link->flush(options.workerTimeoutSeconds);
   return run;
 }
@@ -190,6 +171,7 @@ void finishMpiMaster(MpiSession& session, const ParallelRun& run) {
   MpiComm& comm = session.comm();
   MpiLink& link = *comm.link;
   if (comm.acceptor) comm.acceptor->beginStop();  // no more joiners: the port file goes
+  if (comm.door) comm.door->stopAdmitting();
   // Whether every worker of endpoints [first, first + count) is still there at the end: each
   // job (this one, and every joining one) ends on its own terms.
   auto allThere = [&](int first, int count) {
@@ -212,6 +194,10 @@ void finishMpiMaster(MpiSession& session, const ParallelRun& run) {
     for (int w = j.first; w < j.first + j.count; ++w) {
       link.sendTagged(w, kReleaseTag, releaseMessage(joinedClean.back() ? kReleaseFinalize : kReleaseExit));
     }
+  }
+  // Each worker that joined over TCP is released on its own (it is its own job).
+  for (int w : link.tcpJoiners()) {
+    link.sendTagged(w, kReleaseTag, releaseMessage(allThere(w, 1) ? kReleaseFinalize : kReleaseExit));
   }
   // A joining job whose workers are all there disconnects; one that lost a worker is left:
   // disconnecting could wait for the lost one.

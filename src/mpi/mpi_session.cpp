@@ -134,8 +134,8 @@ void MpiSession::releaseWorkers(int exitCode) {
   try {
     mpi_detail::MpiTransport transport(comm_->comm);
     for (int r = 1; r < size_; ++r) {
-      transport.send(r, mpi_detail::kReleaseTag,
-                     mpi_detail::releaseMessage(static_cast<int32_t>(exitCode)));
+      transport.send(r, kReleaseTag,
+                     releaseMessage(static_cast<int32_t>(exitCode)));
     }
     if (!transport.flush(10.0)) {
       throw std::runtime_error("the workers did not take the release message within 10 s");

@@ -1,5 +1,7 @@
 #include "mpi/mpi_transport.h"
 
+#include "core/check.h"
+
 #include <algorithm>
 #include <chrono>
 #include <climits>
@@ -15,13 +17,6 @@ void check(int code, const char* call, int rank) {
   if (MPI_Error_string(code, text, &length) != MPI_SUCCESS) length = 0;
   throw MpiError(std::string(call) + " failed: " + std::string(text, static_cast<size_t>(length)),
                  rank);
-}
-
-Bytes releaseMessage(int32_t code, const std::string& wakePort) {
-  Bytes out(sizeof code + wakePort.size());
-  std::memcpy(out.data(), &code, sizeof code);
-  if (!wakePort.empty()) std::memcpy(out.data() + sizeof code, wakePort.data(), wakePort.size());
-  return out;
 }
 
 void pollPause() {
@@ -102,21 +97,6 @@ std::optional<Packet> MpiTransport::poll() {
 
 namespace {
 
-Bytes withHeader(int32_t a, int32_t b, const Bytes& bytes) {
-  Bytes out(sizeof a + sizeof b + bytes.size());
-  std::memcpy(out.data(), &a, sizeof a);
-  std::memcpy(out.data() + sizeof a, &b, sizeof b);
-  std::copy(bytes.begin(), bytes.end(), out.begin() + sizeof a + sizeof b);
-  return out;
-}
-
-bool readHeader(const Bytes& bytes, int32_t& a, int32_t& b) {
-  if (bytes.size() < sizeof a + sizeof b) return false;
-  std::memcpy(&a, bytes.data(), sizeof a);
-  std::memcpy(&b, bytes.data() + sizeof a, sizeof b);
-  return true;
-}
-
 int remoteSize(MPI_Comm inter) {
   int size = 0;
   check(MPI_Comm_remote_size(inter, &size), "MPI_Comm_remote_size", -1);
@@ -139,6 +119,7 @@ MpiLink::MpiLink(MPI_Comm world) : start_(MPI_Wtime()) {
   r.count = size - 1;
   r.rankOffset = 1;
   routes_.push_back(std::move(r));
+  endpoints_ = size - 1;
 }
 
 MpiLink::MpiLink(MPI_Comm inter, int self) : self_(self), start_(MPI_Wtime()) {
@@ -173,8 +154,21 @@ MpiLink::Route* MpiLink::routeOf(int endpoint, int& rank) {
   return nullptr;
 }
 
+int MpiLink::tcpJoinerOf(int endpoint) const {
+  for (size_t j = 0; j < joinerEndpoints_.size(); ++j) {
+    if (joinerEndpoints_[j] == endpoint) return static_cast<int>(j);
+  }
+  return -1;
+}
+
 void MpiLink::send(int to, Channel channel, Bytes bytes) {
   const int tag = channel == Channel::Summary ? kSummaryTag : kMessageTag;
+  if (master_ && door_ != nullptr) {
+    if (const int j = tcpJoinerOf(to); j >= 0) {
+      door_->send(j, tag, bytes);
+      return;
+    }
+  }
   try {
     int rank = 0;
     if (Route* r = routeOf(to, rank)) {
@@ -191,10 +185,16 @@ void MpiLink::send(int to, Channel channel, Bytes bytes) {
 void MpiLink::relay(int from, const Bytes& bytes) {
   int32_t to = 0, tag = 0;
   if (!readHeader(bytes, to, tag) || (tag != kMessageTag && tag != kSummaryTag)) return;
+  const Bytes payload(bytes.begin() + 2 * sizeof(int32_t), bytes.end());
+  if (door_ != nullptr) {
+    if (const int j = tcpJoinerOf(to); j >= 0) {
+      door_->send(j, kRelayedTag, withHeader(from, tag, payload));
+      return;
+    }
+  }
   int rank = 0;
   Route* r = routeOf(to, rank);
   if (r == nullptr) return;  // no such worker: dropped, as a message to a dead one would be
-  const Bytes payload(bytes.begin() + 2 * sizeof(int32_t), bytes.end());
   try {
     r->net->send(rank, kRelayedTag, withHeader(from, tag, payload));
   } catch (const MpiError&) {
@@ -206,8 +206,9 @@ void MpiLink::adopt(MPI_Comm inter, const Bytes& welcome) {
   Route r;
   r.comm = inter;
   r.net = std::make_unique<MpiTransport>(inter);
-  r.first = routes_.back().first + routes_.back().count;
+  r.first = endpoints_;
   r.count = remoteSize(inter);
+  endpoints_ += r.count;
   r.rankOffset = 0;
   for (int k = 0; k < r.count; ++k) {
     const int endpoint = r.first + k;
@@ -231,6 +232,12 @@ std::vector<MpiLink::JoinedJob> MpiLink::joinedJobs() const {
 }
 
 void MpiLink::sendTagged(int endpoint, int tag, Bytes bytes) {
+  if (door_ != nullptr) {
+    if (const int j = tcpJoinerOf(endpoint); j >= 0) {
+      door_->send(j, tag, bytes);
+      return;
+    }
+  }
   int rank = 0;
   Route* r = routeOf(endpoint, rank);
   if (r == nullptr) return;
@@ -241,7 +248,7 @@ void MpiLink::sendTagged(int endpoint, int tag, Bytes bytes) {
 }
 
 bool MpiLink::flush(double timeoutSeconds) {
-  bool all = true;
+  bool all = door_ == nullptr || door_->flush(timeoutSeconds);
   for (Route& r : routes_) all = r.net->flush(timeoutSeconds) && all;
   return all;
 }
@@ -251,6 +258,9 @@ Incoming MpiLink::poll(double deadline) {
   for (;;) {
     if (master_ && acceptSource_) {
       while (std::optional<MPI_Comm> inter = acceptSource_()) adopt(*inter, welcome_);
+    }
+    if (master_ && door_ != nullptr) {
+      if (std::optional<Incoming> fromDoor = pollDoor()) return *fromDoor;
     }
     if (!pendingJoins_.empty()) {
       in.kind = Incoming::Kind::PeerJoined;
@@ -307,6 +317,35 @@ Incoming MpiLink::poll(double deadline) {
     if (now() >= deadline) return in;
     pollPause();
   }
+}
+
+std::optional<Incoming> MpiLink::pollDoor() {
+  while (std::optional<TcpDoor::Event> e = door_->poll()) {
+    Incoming in;
+    if (e->kind == TcpDoor::Event::Kind::Joined) {
+      const int endpoint = endpoints_++;
+      PRT_CHECK(e->joiner == static_cast<int>(joinerEndpoints_.size()));
+      joinerEndpoints_.push_back(endpoint);
+      door_->send(e->joiner, kWelcomeTag, withHeader(endpoint, 0, welcome_));
+      pendingJoins_.push_back(endpoint);
+      continue;
+    }
+    in.from = joinerEndpoints_[static_cast<size_t>(e->joiner)];
+    if (e->kind == TcpDoor::Event::Kind::Closed) {
+      in.kind = Incoming::Kind::PeerLost;
+      return in;
+    }
+    if (e->tag == kRelayTag) {
+      relay(in.from, e->bytes);
+      continue;
+    }
+    if (e->tag != kMessageTag && e->tag != kSummaryTag) continue;  // not ours: dropped
+    in.kind = Incoming::Kind::Packet;
+    in.channel = e->tag == kSummaryTag ? Channel::Summary : Channel::Protocol;
+    in.bytes = std::move(e->bytes);
+    return in;
+  }
+  return std::nullopt;
 }
 
 std::optional<int32_t> MpiLink::awaitRelease(double deadline) {

@@ -20,33 +20,12 @@
 
 #include "cluster/messages.h"
 #include "drive/transport.h"
+#include "net/link_tags.h"
+#include "net/tcp_door.h"
 
 namespace prt::mpi_detail {
 
-// One tag per kind of traffic; protocol messages are typed, so one tag carries them all.
-enum Tag : int {
-  kMessageTag = 1,  // an encoded protocol Message (cluster/messages.h)
-  kSummaryTag = 2,  // worker -> master after StopMsg: an encoded WorkerSummary
-  kReleaseTag = 3,  // master -> worker: the job's end; an int32 (see ReleaseCode), then for
-                    // the worker that must wake the master's port listener, the port name
-  kRelayTag = 4,    // worker -> master: for another worker it cannot reach (see MpiLink)
-  kRelayedTag = 5,  // master -> worker: relayed from another worker
-  kWelcomeTag = 6,  // master -> joiner: its endpoint and the run's worker options
-  kChallengeTag = 8,  // master -> joiner: 32 random bytes to prove the invitation on
-  kProofTag = 9,      // joiner -> master: the proof (mpi/invitation.h)
-  kRefusedTag = 10,   // master -> joiner: why it was refused (text)
-};
-
-// What a release tells a worker rank to do.
-enum ReleaseCode : int32_t {
-  kReleaseFinalize = 0,  // the run is over and every rank is there: MPI_Finalize, exit 0
-  kReleaseExit = -1,     // the run is over but a rank was lost: exit 0 without MPI_Finalize
-  // > 0: the master refused the run (bad input): exit with this code
-};
-
-// A release's bytes: the code, then for the worker that must wake the master's port
-// listener, the port's name (MpiLink::poll reads both).
-Bytes releaseMessage(int32_t code, const std::string& wakePort = {});
+// Tags and release codes: net/link_tags.h (one numbering for the MPI and TCP links).
 
 // A protocol endpoint (worker index, or kMaster = -1) and its rank: rank 0 is the master.
 inline int rankOf(int endpoint) {
@@ -140,7 +119,12 @@ class MpiLink final : public Transport {
   };
   std::vector<JoinedJob> joinedJobs() const;
   // Master: every worker's endpoint, 0 .. endpointCount()-1, the joiners' included.
-  int endpointCount() const { return routes_.back().first + routes_.back().count; }
+  int endpointCount() const { return endpoints_; }
+  // Master: workers that join over TCP come through `door` (net/tcp_door.h), numbered with
+  // the others in arrival order; each gets the welcome and is reported as PeerJoined.
+  void setTcpDoor(TcpDoor* door) { door_ = door; }
+  // Master: the endpoints of the workers that joined over TCP.
+  std::vector<int> tcpJoiners() const { return joinerEndpoints_; }
   // Master: sends `bytes` with a tag of its own (a release) to worker `endpoint`.
   void sendTagged(int endpoint, int tag, Bytes bytes);
 
@@ -154,6 +138,10 @@ class MpiLink final : public Transport {
   };
   Route* routeOf(int endpoint, int& rank);
   void relay(int from, const Bytes& bytes);
+  // Master: the door's joiner for `endpoint`, or -1 when it is not one.
+  int tcpJoinerOf(int endpoint) const;
+  // Master: takes what the TCP door has; an Incoming to return, if one came.
+  std::optional<Incoming> pollDoor();
 
   bool master_ = false;
   int self_ = kMaster;
@@ -164,6 +152,9 @@ class MpiLink final : public Transport {
   Bytes welcome_;
   std::optional<int32_t> release_;
   std::string wakePort_;
+  int endpoints_ = 0;  // master: endpoints numbered so far
+  TcpDoor* door_ = nullptr;
+  std::vector<int> joinerEndpoints_;  // per TCP joiner of the door: its endpoint
   size_t nextRoute_ = 0;  // round robin over the routes' polls
   double start_;
 };

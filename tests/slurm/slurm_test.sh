@@ -11,6 +11,9 @@
 #   scancel    scancel mid-render leaves the checkpoint; the same sbatch again resumes it
 #   requeue    scontrol requeue mid-render: the job runs again, resumes, and ends with the
 #              serial image
+#   join       a render on 2 hosts with --accept-workers; a second job (join.sbatch) on the
+#              third host joins it over TCP: the serial image, the joiner's pixels in it, both
+#              jobs exit 0
 set -u
 
 prt=$1 scene=$2 work=$3 src=$4 mode=$5
@@ -137,6 +140,32 @@ case $mode in
       fail "the requeued job did not resume"
     cmp serial.pfm out.pfm || fail "the image of the requeued job differs from the serial render"
     report requeue || fail "the report shows no resumed pixels"
+    ;;
+  join)
+    # shellcheck disable=SC2086
+    job=$(sbatch --parsable --nodes=2 --nodelist=prt-s0,prt-s1 "$job_script" "$scene" out.pfm \
+      $geometry -q --slowdown 600,600 --speed-index none --accept-workers "$work/port") ||
+      fail "sbatch refused the render"
+    for _ in $(seq 300); do [ -s port ] && break; sleep 0.2; done
+    [ -s port ] || fail "the render wrote no port file"
+    grep -q "^tcp 10.232.0.10:" port || fail "the port file names no address on the bridge: $(grep tcp port)"
+    joiner=$(sbatch --parsable --nodes=1 --nodelist=prt-s2 "$src/examples/slurm/join.sbatch" \
+      "$work/port") || fail "sbatch refused the join"
+    wait_job "$job" 120
+    wait_job "$joiner" 60
+    cmp serial.pfm out.pfm || fail "the image differs from the serial render"
+    for j in "$job" "$joiner"; do
+      scontrol show job "$j" | grep -q "ExitCode=0:0" ||
+        fail "job $j: $(scontrol show job "$j" | grep -o 'JobState=[A-Z]* .*ExitCode=[0-9:]*')"
+    done
+    python3 - <<'PY' || fail "the report does not show the joiner's work"
+import json
+r = json.load(open("out.pfm.report.json"))
+joined = [w for w in r["workers"] if w["joined_at_s"] is not None]
+assert len(joined) == 1 and joined[0]["host"] == "prt-s2", r["workers"]
+assert joined[0]["pixels"] > 0, joined
+assert not r["lost_workers"], r["lost_workers"]
+PY
     ;;
   *) fail "unknown mode" ;;
 esac

@@ -1,4 +1,4 @@
-#include "mpi/invitation.h"
+#include "net/invitation.h"
 
 #include <openssl/crypto.h>
 #include <openssl/evp.h>
@@ -74,8 +74,11 @@ std::optional<Secret> secretFromHex(const std::string& hex) {
   return out;
 }
 
-std::string portFileText(const std::string& port, const Secret& secret) {
-  return port + "\nsecret " + secretHex(secret) + "\n";
+std::string portFileText(const std::string& port, const Secret& secret,
+                         const std::vector<std::string>& tcp) {
+  std::string text = port + "\nsecret " + secretHex(secret) + "\n";
+  for (const std::string& address : tcp) text += "tcp " + address + "\n";
+  return text;
 }
 
 PortFile parsePortFile(const std::string& text) {
@@ -84,12 +87,20 @@ PortFile parsePortFile(const std::string& text) {
     while (!s.empty() && (s.back() == '\r' || s.back() == ' ')) s.pop_back();
     return s;
   };
-  const size_t end = text.find('\n');
-  out.port = trim(text.substr(0, end));
-  if (end == std::string::npos) return out;
-  const size_t next = text.find('\n', end + 1);
-  const std::string line = trim(text.substr(end + 1, next == std::string::npos ? next : next - end - 1));
-  if (line.rfind("secret ", 0) == 0) out.secret = secretFromHex(line.substr(7));
+  size_t start = 0;
+  for (int line = 0; start <= text.size(); ++line) {
+    const size_t end = text.find('\n', start);
+    const std::string item = trim(text.substr(start, end == std::string::npos ? end : end - start));
+    if (line == 0) {
+      out.port = item;
+    } else if (item.rfind("secret ", 0) == 0 && !out.secret) {
+      out.secret = secretFromHex(item.substr(7));
+    } else if (item.rfind("tcp ", 0) == 0 && item.size() > 4 && out.tcp.size() < 64) {
+      out.tcp.push_back(item.substr(4));
+    }
+    if (end == std::string::npos) break;
+    start = end + 1;
+  }
   return out;
 }
 

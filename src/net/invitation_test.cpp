@@ -1,4 +1,4 @@
-#include "mpi/invitation.h"
+#include "net/invitation.h"
 
 #include "drive/build_info.h"
 

@@ -24,11 +24,14 @@ Challenge newChallenge();
 std::string secretHex(const Secret& secret);
 std::optional<Secret> secretFromHex(const std::string& hex);  // none: not 64 hex digits
 
-// The port file: the port name, then "secret <hex>".
-std::string portFileText(const std::string& port, const Secret& secret);
+// The port file: the MPI port name, then "secret <hex>", then "tcp HOST:PORT" for each address
+// the master's TCP door (net/tcp_door.h) may be reached at.
+std::string portFileText(const std::string& port, const Secret& secret,
+                         const std::vector<std::string>& tcp = {});
 struct PortFile {
   std::string port;
   std::optional<Secret> secret;  // none: the file has no (valid) secret line
+  std::vector<std::string> tcp;  // the TCP door's addresses (none: an MPI port only)
 };
 PortFile parsePortFile(const std::string& text);
 
