@@ -180,8 +180,19 @@ TEST_F(CliTest, ParallelInputErrors) {
   EXPECT_EQ(r.exitCode, 2) << "a serial render has no joiners: " << r.output;
   r = run("render " + scene + out + " --workers 2 --accept-workers " + path("port"));
   EXPECT_EQ(r.exitCode, 2) << "a local render has no port: " << r.output;
+  // Outside mpirun, prt join goes over TCP: a missing port file, or one with no TCP address (an
+  // MPI port only), is bad input; --via mpi outside mpirun says it needs mpirun.
   r = run("join " + path("port"));
-  EXPECT_EQ(r.exitCode, 2) << "prt join outside mpirun: " << r.output;
+  EXPECT_EQ(r.exitCode, 2) << "prt join of a missing file: " << r.output;
+  EXPECT_NE(r.output.find(path("port")), std::string::npos) << r.output;
+  {
+    std::ofstream(path("mpi-port")) << "tag#0$port#1234$\nsecret 00\n";
+  }
+  r = run("join " + path("mpi-port"));
+  EXPECT_EQ(r.exitCode, 2) << "a port file without TCP addresses: " << r.output;
+  EXPECT_NE(r.output.find("no TCP address"), std::string::npos) << r.output;
+  r = run("join " + path("port") + " --via mpi");
+  EXPECT_EQ(r.exitCode, 2) << "prt join --via mpi outside mpirun: " << r.output;
   EXPECT_NE(r.output.find("mpirun"), std::string::npos) << r.output;
   // prt join's own flags are checked first, and its --slowdown-at is T:K (no worker field):
   // an error speaks of what was typed.
