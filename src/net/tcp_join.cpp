@@ -93,7 +93,7 @@ class TcpWorkerLink final : public Transport {
   std::optional<int32_t> release_;
 };
 
-double secondsSince(std::chrono::steady_clock::time_point t) {
+double secondsFrom(std::chrono::steady_clock::time_point t) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
 }
 
@@ -104,7 +104,7 @@ std::optional<Frame> awaitFrame(FramedSocket& socket, std::chrono::steady_clock:
     if (std::optional<Frame> f = socket.next()) return f;
     if (!socket.receive() && !socket.open()) return socket.next();
     if (std::optional<Frame> f = socket.next()) return f;
-    const double left = deadline - secondsSince(start);
+    const double left = deadline - secondsFrom(start);
     if (left <= 0) return std::nullopt;
     pollfd p{socket.fd(), POLLIN, 0};
     ::poll(&p, 1, static_cast<int>(std::min(left, 0.1) * 1000) + 1);
@@ -131,14 +131,14 @@ int runTcpJoiner(const TcpJoinRequest& request) {
   const double limit = request.connectTimeoutSeconds;
   int fd = -1;
   std::string why;
-  while (fd < 0 && secondsSince(start) < limit) {
+  while (fd < 0 && secondsFrom(start) < limit) {
     for (const std::string& address : file.tcp) {
-      const double left = limit - secondsSince(start);
+      const double left = limit - secondsFrom(start);
       if (left <= 0) break;
       fd = connectTo(address, std::min(left, 3.0), why);
       if (fd >= 0) break;
     }
-    if (fd < 0 && secondsSince(start) < limit) ::poll(nullptr, 0, 500);
+    if (fd < 0 && secondsFrom(start) < limit) ::poll(nullptr, 0, 500);
   }
   if (fd < 0) {
     std::fprintf(stderr,
