@@ -178,8 +178,10 @@ TEST_F(CliTest, ParallelInputErrors) {
   EXPECT_EQ(r.exitCode, 2) << r.output;
   r = run("render " + scene + out + " --join-at 1:1");
   EXPECT_EQ(r.exitCode, 2) << "a serial render has no joiners: " << r.output;
-  r = run("render " + scene + out + " --workers 2 --accept-workers " + path("port"));
-  EXPECT_EQ(r.exitCode, 2) << "a local render has no port: " << r.output;
+  r = run("render " + scene + out + " --workers 2 --join-at 1:1 --accept-workers " + path("port"));
+  EXPECT_EQ(r.exitCode, 2) << "--join-at and --accept-workers in one local render: " << r.output;
+  r = run("render " + scene + out + " --accept-workers " + path("port"));
+  EXPECT_EQ(r.exitCode, 2) << "--accept-workers in a serial render: " << r.output;
   // Outside mpirun, prt join goes over TCP: a missing port file, or one with no TCP address (an
   // MPI port only), is bad input; --via mpi outside mpirun says it needs mpirun.
   r = run("join " + path("port"));

@@ -1,5 +1,7 @@
 #include "cli/parallel_render.h"
 
+#include "net/local_door.h"
+
 #include "cli/flag_checks.h"
 #include "cli/live_view.h"
 #include "cli/run_page_output.h"
@@ -114,9 +116,11 @@ void addParallelOptions(CLI::App& cmd, RenderOptions& o) {
                  "(--slowdown then lists every worker, joiners included)")
       ->group(parallel);
   cmd.add_option("--accept-workers", o.acceptWorkersPath,
-                 "Under mpirun: open an MPI port and write its name to FILE, so that "
-                 "`mpirun -np K prt join FILE` adds K workers to the running render (both "
-                 "jobs need the same --ompi-server; see docs/running.md)")
+                 "Let machines join the running render: write to FILE (readable by you only) "
+                 "the master's TCP addresses and a secret, so that `prt join FILE` on another "
+                 "machine adds it as a worker (over TCP, no MPI needed); under mpirun FILE also "
+                 "names an MPI port for `mpirun -np K prt join FILE` (both mpiruns with the same "
+                 "--ompi-server; see docs/running.md)")
       ->group(parallel);
   cmd.add_option("--speed-index", o.speedIndex,
                  "Speed index the workers measure: hanoi (the paper's Towers of Hanoi run), "
@@ -340,8 +344,20 @@ int renderParallelLocal(const RenderOptions& o, const Scene& scene, const Render
       serialSpeedIndexSeconds(request.options.speedIndexKind, scene, s);
   LiveView view(o, runFacts("threads", request));
   request.progress = &view.board();
+  // --accept-workers: machines join over TCP (prt join FILE); the door's refusals go in the
+  // report.
+  auto door = std::make_shared<TcpDoor*>(nullptr);
+  auto refused = std::make_shared<std::vector<std::string>>();
+  if (!o.acceptWorkersPath.empty()) {
+    request.wrapLocalMaster = localDoor(o.acceptWorkersPath, request.options,
+                                        [door](TcpDoor& d) { *door = &d; }, refused);
+    request.rejectedHost = [door](const std::string& host) {
+      if (*door != nullptr) (*door)->block(host);
+    };
+  }
   try {
     ParallelRun run = renderLocal(request);
+    for (const std::string& why : *refused) run.report.info.faults.refusedJoiners.push_back(why);
     view.stopLines();
     const int code = finishParallelRun(o, scene, run);
     view.finish();

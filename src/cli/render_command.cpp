@@ -331,8 +331,10 @@ int runRender(const RenderOptions& o) {
     throw InputError("--join-at starts threads that join a local render; under mpirun, add "
                      "workers with --accept-workers FILE and `mpirun -np K prt join FILE`");
   }
-  if (!mpi && !o.acceptWorkersPath.empty()) {
-    throw InputError("--accept-workers opens an MPI port: run the render under mpirun");
+  if (!mpi && !o.acceptWorkersPath.empty() && !o.joinAt.empty()) {
+    throw InputError("--accept-workers and --join-at cannot be combined in a local render: "
+                     "workers that join come from other machines (prt join FILE) or from "
+                     "--join-at, not both");
   }
   // --- MPI hook: only rank 0 reads the scene file; the workers get the scene from it.
   if (mpi) {
@@ -350,11 +352,12 @@ int runRender(const RenderOptions& o) {
   const bool parallel = o.workers || o.strategyFlags.strategy;
   for (const bool parallelOnly : {!o.reportPath.empty(), !o.tracePath.empty(),
                                   !o.ownershipPath.empty(), !o.htmlPath.empty(),
-                                  !o.slowdowns.empty(), !o.faults.empty(), !o.joinAt.empty()}) {
+                                  !o.slowdowns.empty(), !o.faults.empty(), !o.joinAt.empty(),
+                                  !o.acceptWorkersPath.empty()}) {
     if (parallelOnly && !parallel) {
-      throw InputError("--report, --trace, --ownership, --html, --slowdown, --join-at and "
-                       "--inject-fault describe a parallel run; add --workers N (and optionally "
-                       "--strategy NAME)");
+      throw InputError("--report, --trace, --ownership, --html, --slowdown, --join-at, "
+                       "--accept-workers and --inject-fault describe a parallel run; add "
+                       "--workers N (and optionally --strategy NAME)");
     }
   }
   checkOutputs(o, scene);

@@ -79,7 +79,10 @@ ParallelRun renderLocal(const RunRequest& request) {
       for (std::thread& t : joiners) t.join();
     }));
   }
-  LocalTransport master(net, kMaster);
+  LocalTransport local(net, kMaster);
+  const std::unique_ptr<Transport> wrapped =
+      request.wrapLocalMaster ? request.wrapLocalMaster(local, net) : nullptr;
+  Transport& master = wrapped ? *wrapped : local;
   try {
     ParallelRun run = runMasterSide(master, request, "local", [&] { return failures.any(); });
     joinAll();

@@ -33,11 +33,22 @@ void LocalNetwork::shutDown() {
 }
 
 void LocalTransport::send(int to, Channel channel, Bytes bytes) {
+  if (to != kMaster && to >= net_.mailboxCount()) {
+    // A worker that joined over a network: through the master.
+    Mail relayed{self_, channel, std::move(bytes), false};
+    relayed.relayTo = to;
+    net_.boxOf(kMaster).push(std::move(relayed));
+    return;
+  }
   net_.boxOf(to).push(Mail{self_, channel, std::move(bytes), false});
 }
 
 Incoming LocalTransport::poll(double deadline) {
   std::optional<Mail> mail = net_.boxOf(self_).popUntil(net_.timeAt(deadline));
+  while (mail && mail->relayTo != kMaster) {
+    if (net_.relay()) net_.relay()(mail->from, mail->relayTo, mail->channel, std::move(mail->bytes));
+    mail = net_.boxOf(self_).popUntil(net_.timeAt(deadline));
+  }
   Incoming in;
   if (!mail) return in;
   in.from = mail->from;

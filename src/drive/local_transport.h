@@ -7,6 +7,7 @@
 // their mailboxes from the start; join() announces each to the master (PeerJoined).
 
 #include <atomic>
+#include <functional>
 #include <chrono>
 #include <memory>
 #include <vector>
@@ -30,6 +31,13 @@ class LocalNetwork {
   void shutDown();
   // Worker `endpoint` connects: the master hears of it before any of its packets.
   void join(int endpoint);
+  // Workers beyond the mailboxes (joined over a network, numbered by the master's transport):
+  // what the threads send them goes to the master's mailbox, and the master's LocalTransport
+  // hands it to `relay` (from, to, channel, bytes) instead of returning it. Set before the run.
+  using Relay = std::function<void(int from, int to, Channel channel, Bytes bytes)>;
+  void setRelay(Relay relay) { relay_ = std::move(relay); }
+  const Relay& relay() const { return relay_; }
+  int mailboxCount() const { return static_cast<int>(workers_.size()); }
   bool isShutDown() const { return shutdown_; }
 
  private:
@@ -37,6 +45,7 @@ class LocalNetwork {
   Mailbox master_;
   std::vector<std::unique_ptr<Mailbox>> workers_;  // all made at the start: never resized
   std::atomic<bool> shutdown_{false};
+  Relay relay_;
 };
 
 class LocalTransport final : public Transport {

@@ -19,6 +19,8 @@ struct Mail {
   Bytes bytes;
   bool lost = false;    // not a message: the connection to `from` dropped
   bool joined = false;  // not a message: `from` connected (a worker joining the run)
+  int relayTo = kMaster;  // for the master's mailbox: bound for worker relayTo, which has no
+                          // mailbox here (it joined over a network): the master relays it
 };
 
 class Mailbox {

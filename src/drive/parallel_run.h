@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <stdexcept>
 #include <optional>
 #include <string>
@@ -23,6 +24,8 @@
 #include "trace/scene.h"
 
 namespace prt {
+
+class LocalNetwork;
 
 struct ParallelRun {
   Image image{1, 1};
@@ -52,6 +55,10 @@ struct RunRequest {
   // Called on the master's thread with the machine of each worker rejected (its results were
   // wrong): a driver that admits joiners refuses that machine from then on. May be null.
   std::function<void(const std::string& host)> rejectedHost;
+  // The local driver: wraps its master's transport (a door that admits workers over a network,
+  // numbered after the local ones: net/local_door.h). May be null.
+  std::function<std::unique_ptr<Transport>(Transport& master, LocalNetwork& network)>
+      wrapLocalMaster;
 };
 
 // The run could not finish (every worker lost, interrupted). The message says what survived

@@ -121,6 +121,62 @@ PY
       echo "ok: $strategy"
     done
     ;;
+  tcp-join)
+    # A local render with --accept-workers and machines that join over TCP (prt join FILE, no
+    # MPI): the serial image with a joiner's pixels in it, for a pooled strategy, stealing
+    # (transfers between a local worker and a joiner go through the master, both ways) and
+    # hybrid (diffusion); a joiner SIGKILLed mid-render is lost and the image still right; an
+    # uninvited joiner (a copy of the file with another secret) is refused, exit 1.
+    size="--width 64 --height 48 --spp 16 --drt 2"
+    # shellcheck disable=SC2086
+    "$prt" render "$scene" -q $size -o serial.pfm
+    start_render() {
+      rm -f port out.pfm r.json
+      # shellcheck disable=SC2086
+      timeout -k 2 60 "$prt" render "$scene" -q $size --workers 1 --speed-index none \
+        --accept-workers "$work/port" --worker-timeout 2 -o out.pfm --report r.json "$@" \
+        2>render-err.txt &
+      render=$!
+      for _ in $(seq 100); do [ -s port ] && return 0; sleep 0.05; done
+      fail "no port file: $(cat render-err.txt)"
+    }
+    for strategy in adaptive stealing hybrid; do
+      start_render --slowdown 300 --strategy "$strategy" --batch 16
+      timeout -k 2 60 "$prt" join "$work/port" 2>join-err.txt || fail "$strategy: prt join: $(cat join-err.txt)"
+      wait "$render" || fail "$strategy: the render failed: $(cat render-err.txt)"
+      cmp serial.pfm out.pfm || fail "$strategy: the image differs"
+      [ ! -f port ] || fail "$strategy: the port file was left behind"
+      python3 - <<'PY' || fail "$strategy: the report does not show the joiner's work"
+import json
+r = json.load(open("r.json"))
+assert [j["worker"] for j in r["joined_workers"]] == [1], r["joined_workers"]
+assert r["workers"][1]["pixels"] > 0, r["workers"]
+PY
+    done
+    # A joiner killed once it is at work.
+    start_render --slowdown 300
+    "$prt" join "$work/port" --slowdown 200 2>join-err.txt &
+    joiner=$!
+    sleep 1.5
+    kill -9 "$joiner" 2>/dev/null || fail "the joiner ended before it could be killed: $(cat join-err.txt)"
+    wait "$render" || fail "the render failed after its joiner was killed: $(cat render-err.txt)"
+    cmp serial.pfm out.pfm || fail "the image differs after the joiner was killed"
+    python3 -c 'import json; r = json.load(open("r.json")); assert [l["worker"] for l in r["lost_workers"]] == [1], r["lost_workers"]' ||
+      fail "the killed joiner is not reported lost"
+    # Uninvited: the addresses without the secret.
+    start_render --slowdown 100
+    grep "^tcp " port >stolen-port
+    set +e
+    timeout -k 2 30 "$prt" join stolen-port 2>join-err.txt
+    joined=$?
+    set -e
+    [ "$joined" -eq 1 ] || fail "an uninvited joiner exited $joined: $(cat join-err.txt)"
+    grep -q "refused" join-err.txt || fail "the uninvited joiner was not told: $(cat join-err.txt)"
+    wait "$render" || fail "the render failed after refusing a joiner"
+    cmp serial.pfm out.pfm || fail "the image differs after a refusal"
+    python3 -c 'import json; r = json.load(open("r.json")); assert len(r["refused_joiners"]) == 1, r["refused_joiners"]' ||
+      fail "the refusal is not in the report"
+    ;;
   corrupt)
     size="--width 64 --height 48 --spp 2"
     # shellcheck disable=SC2086
