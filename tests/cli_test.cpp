@@ -182,6 +182,12 @@ TEST_F(CliTest, ParallelInputErrors) {
   EXPECT_EQ(r.exitCode, 2) << "--join-at and --accept-workers in one local render: " << r.output;
   r = run("render " + scene + out + " --accept-workers " + path("port"));
   EXPECT_EQ(r.exitCode, 2) << "--accept-workers in a serial render: " << r.output;
+  r = run("render " + scene + out + " --workers 2 --accept-address :7000");
+  EXPECT_EQ(r.exitCode, 2) << "--accept-address without --accept-workers: " << r.output;
+  r = run("render " + scene + out + " --workers 2 --accept-workers " + path("port") +
+          " --accept-address 10.0.0:70000");
+  EXPECT_EQ(r.exitCode, 2) << "a bad --accept-address: " << r.output;
+  EXPECT_NE(r.output.find("[ADDRESS][:PORT]"), std::string::npos) << r.output;
   // Outside mpirun, prt join goes over TCP: a missing port file, or one with no TCP address (an
   // MPI port only), is bad input; --via mpi outside mpirun says it needs mpirun.
   r = run("join " + path("port"));

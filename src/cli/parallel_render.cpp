@@ -122,6 +122,11 @@ void addParallelOptions(CLI::App& cmd, RenderOptions& o) {
                  "names an MPI port for `mpirun -np K prt join FILE` (both mpiruns with the same "
                  "--ompi-server; see docs/running.md)")
       ->group(parallel);
+  cmd.add_option("--accept-address", o.acceptAddress,
+                 "[ADDRESS][:PORT] the TCP door of --accept-workers listens on: an IPv4 address "
+                 "of this machine and a port a firewall lets through (default: every interface, "
+                 "a free port)")
+      ->group(parallel);
   cmd.add_option("--speed-index", o.speedIndex,
                  "Speed index the workers measure: hanoi (the paper's Towers of Hanoi run), "
                  "probe (rendering a fixed sample of the image's pixels), none (start at once; "
@@ -242,6 +247,7 @@ ParallelOptions toParallelOptions(const RenderOptions& o, int workers) {
   p.slowdowns = o.slowdowns;
   if (!o.joinAt.empty()) p.joins = parseJoinWaves(o.joinAt, "--join-at");
   p.acceptWorkersPath = o.acceptWorkersPath;
+  p.acceptAddress = o.acceptAddress;
   if (!o.slowdownAt.empty()) {
     p.slowdownChanges = parseSpeedChanges(o.slowdownAt, "--slowdown-at", p.totalWorkers(), 1);
   }

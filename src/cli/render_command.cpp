@@ -10,6 +10,7 @@
 
 #include "cli/checkpointing.h"
 #include "cli/commands.h"
+#include "net/tcp_door.h"
 #include "cli/flag_checks.h"
 #include "cli/parallel_render.h"
 #include "cli/live_view.h"
@@ -330,6 +331,13 @@ int runRender(const RenderOptions& o) {
   if (mpi && !o.joinAt.empty()) {
     throw InputError("--join-at starts threads that join a local render; under mpirun, add "
                      "workers with --accept-workers FILE and `mpirun -np K prt join FILE`");
+  }
+  if (!o.acceptAddress.empty()) {
+    if (o.acceptWorkersPath.empty()) {
+      throw InputError("--accept-address says where --accept-workers listens: add "
+                       "--accept-workers FILE");
+    }
+    parseDoorAddress(o.acceptAddress);  // a mistake is reported before anything renders
   }
   if (!mpi && !o.acceptWorkersPath.empty() && !o.joinAt.empty()) {
     throw InputError("--accept-workers and --join-at cannot be combined in a local render: "

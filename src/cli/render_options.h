@@ -42,7 +42,8 @@ struct RenderOptions {
   std::vector<double> slowdowns;           // per worker, >= 1
   std::string slowdownAt;                  // --slowdown-at W:T:K,...
   std::string joinAt;                      // --join-at T:K,... (local driver)
-  std::string acceptWorkersPath;           // --accept-workers FILE (MPI)
+  std::string acceptWorkersPath;           // --accept-workers FILE
+  std::string acceptAddress;               // --accept-address [ADDRESS][:PORT]
   std::string speedIndex = "auto";         // what workers measure: auto | hanoi | probe | none
   unsigned long long batchPixels = WorkerOptions::kDefaultBatchPixels;  // per returned batch
   std::optional<double> batchSeconds;      // batches grow to this much work; none: by the

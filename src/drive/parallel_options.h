@@ -63,7 +63,8 @@ struct ParallelOptions {
   bool checkpointAutomatic = false;
   bool announceCheckpoint = true;      // say on stderr when the automatic one starts
   double checkpointEverySeconds = 10;  // between periodic checkpoints
-  std::string acceptWorkersPath;       // MPI: open a port for `prt join`, its name in this file
+  std::string acceptWorkersPath;       // open doors for `prt join`: addresses and secret in this file
+  std::string acceptAddress;           // the TCP door's [ADDRESS][:PORT] ("": every interface, any port)
   std::vector<JoinWave> joins;         // threads: workers that join mid-render, numbered
                                        // after the others, waves in time order (--join-at)
 

@@ -129,7 +129,10 @@ ParallelRun renderMpiMaster(MpiSession& session, const RunRequest& request) {
     // and a TCP one for `prt join` anywhere else, across hosts included.
     const Secret secret = newSecret();
     try {
-      comm.door = std::make_unique<TcpDoor>(secret);
+      const DoorAddress where = parseDoorAddress(options.acceptAddress);
+      comm.door = std::make_unique<TcpDoor>(secret, where.address, where.port);
+    } catch (const InputError&) {
+      throw;
     } catch (const std::exception& e) {
       throw InputError(std::string("--accept-workers: ") + e.what());
     }

@@ -130,11 +130,14 @@ std::function<std::unique_ptr<Transport>(Transport&, LocalNetwork&)> localDoor(
     const std::string& portFile, const ParallelOptions& options,
     std::function<void(TcpDoor&)> opened, std::shared_ptr<std::vector<std::string>> refused) {
   const Bytes welcome = encodeWelcome(options);
-  return [portFile, welcome, opened, refused](Transport& master, LocalNetwork& network) {
+  const DoorAddress where = parseDoorAddress(options.acceptAddress);
+  return [portFile, welcome, opened, refused, where](Transport& master, LocalNetwork& network) {
     const Secret secret = newSecret();
     std::unique_ptr<TcpDoor> door;
     try {
-      door = std::make_unique<TcpDoor>(secret);
+      door = std::make_unique<TcpDoor>(secret, where.address, where.port);
+    } catch (const InputError&) {
+      throw;
     } catch (const std::exception& e) {
       throw InputError(std::string("--accept-workers: ") + e.what());
     }

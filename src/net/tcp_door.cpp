@@ -1,6 +1,7 @@
 #include "net/tcp_door.h"
 
 #include "net/link_tags.h"
+#include "core/input_error.h"
 
 #include <arpa/inet.h>
 #include <ifaddrs.h>
@@ -26,6 +27,30 @@ std::string addressText(const sockaddr_in& a) {
 }
 
 }  // namespace
+
+DoorAddress parseDoorAddress(const std::string& text) {
+  DoorAddress out;
+  const size_t colon = text.rfind(':');
+  out.address = text.substr(0, colon);
+  const auto bad = [&] {
+    return InputError("--accept-address: '" + text +
+                      "' is not [ADDRESS][:PORT] (an IPv4 address of this machine, a port "
+                      "1-65535)");
+  };
+  if (colon != std::string::npos) {
+    const std::string port = text.substr(colon + 1);
+    if (port.empty() || port.size() > 5 ||
+        port.find_first_not_of("0123456789") != std::string::npos) {
+      throw bad();
+    }
+    const long value = std::stol(port);
+    if (value < 1 || value > 65535) throw bad();
+    out.port = static_cast<uint16_t>(value);
+  }
+  in_addr parsed{};
+  if (!out.address.empty() && ::inet_pton(AF_INET, out.address.c_str(), &parsed) != 1) throw bad();
+  return out;
+}
 
 TcpDoor::TcpDoor(const Secret& secret, const std::string& bindAddress, uint16_t port)
     : secret_(secret), bound_(bindAddress == "0.0.0.0" ? "" : bindAddress) {

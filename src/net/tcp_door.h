@@ -24,6 +24,15 @@
 
 namespace prt {
 
+// --accept-address [ADDRESS][:PORT]: "" is every interface and a free port, "10.0.0.5" that
+// address, ":7000" every interface on port 7000, "10.0.0.5:7000" both. Throws InputError
+// naming the flag for anything else.
+struct DoorAddress {
+  std::string address;  // "": every interface
+  uint16_t port = 0;    // 0: any free one
+};
+DoorAddress parseDoorAddress(const std::string& text);
+
 class TcpDoor {
  public:
   static constexpr double kProofSeconds = 10;

@@ -9,6 +9,7 @@
 #include <cstring>
 #include <optional>
 
+#include "core/input_error.h"
 #include "core/machine.h"
 #include "drive/build_info.h"
 #include "net/link_tags.h"
@@ -109,6 +110,24 @@ TEST(TcpDoor, UninvitedBlockedAndFloodingPeersAreRefused) {
   EXPECT_TRUE(events.empty());
   EXPECT_EQ(door.joinerCount(), 0);
   EXPECT_EQ(door.refused().size(), 2u);
+}
+
+TEST(TcpDoor, AcceptAddressesAreAddressAndPortOrEither) {
+  EXPECT_EQ(parseDoorAddress("").address, "");
+  EXPECT_EQ(parseDoorAddress("").port, 0);
+  EXPECT_EQ(parseDoorAddress("10.0.0.5").address, "10.0.0.5");
+  EXPECT_EQ(parseDoorAddress(":7000").port, 7000);
+  EXPECT_EQ(parseDoorAddress(":7000").address, "");
+  const DoorAddress both = parseDoorAddress("127.0.0.1:65535");
+  EXPECT_EQ(both.address, "127.0.0.1");
+  EXPECT_EQ(both.port, 65535);
+  for (const char* bad : {"host", "10.0.0", "10.0.0.5:", ":0", ":65536", ":70000000", ":-1",
+                          ":7x", "::1", "10.0.0.5:7000:1"}) {
+    EXPECT_THROW(parseDoorAddress(bad), InputError) << bad;
+  }
+  // A door on a port taken by another: a clear error, not a crash.
+  TcpDoor first(newSecret(), "127.0.0.1");
+  EXPECT_THROW(TcpDoor(newSecret(), "127.0.0.1", first.port()), std::runtime_error);
 }
 
 }  // namespace
