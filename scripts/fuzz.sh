@@ -4,7 +4,8 @@
 # message decoder, seeded with one message of each kind, the master's and a worker's state
 # machines on hostile traffic (tests/fuzz/protocol_fuzz.cpp), the glTF reader, seeded with the .glb
 # and .gltf files of tests/models and scenes/models, and the asset pack's decoder, seeded with
-# the packs of scenes/chess.scene and scenes/street.scene. Fails (non-zero exit) on any crash,
+# the packs of scenes/chess.scene and scenes/street.scene, the checkpoint reader, and the TCP
+# door's framing and invitation check (tests/fuzz/tcp_frames_fuzz.cpp). Fails (non-zero exit) on any crash,
 # sanitizer report, leak or input slower than 10 s; the input that failed is left in
 # build-fuzz/fuzz/ as crash-*, leak-* or timeout-*, to replay with
 # `build-fuzz/fuzz/prt_fuzz_scene_parser FILE`. The corpora grow in build-fuzz/corpus/.
@@ -20,7 +21,7 @@ cmake --build --preset fuzz -- -j"$(nproc)" >/dev/null
 
 corpus=build-fuzz/corpus
 mkdir -p "$corpus/scene" "$corpus/message" "$corpus/protocol" "$corpus/model" "$corpus/pack" \
-  "$corpus/checkpoint"
+  "$corpus/checkpoint" "$corpus/tcp"
 cp scenes/*.scene tests/malformed/*.scene "$corpus/scene/"
 build-fuzz/fuzz/prt_fuzz_message_seeds "$corpus/message" scenes/fig08-basic-features.scene
 cp tests/models/*.glb tests/models/*.gltf scenes/models/*.glb scenes/models/*.gltf \
@@ -50,4 +51,5 @@ run prt_fuzz_protocol "$corpus/protocol" || status=1
 run prt_fuzz_model_reader "$corpus/model" 131072 || status=1
 run prt_fuzz_asset_pack "$corpus/pack" 1048576 || status=1
 run prt_fuzz_checkpoint "$corpus/checkpoint" || status=1
+run prt_fuzz_tcp_frames "$corpus/tcp" || status=1
 exit $status
