@@ -43,6 +43,27 @@ std::optional<uint64_t> parseCount(std::string_view text, uint64_t max) {
   return value;
 }
 
+
+// Serial time for speed-up: given, or measured here by rendering serially on one thread.
+std::optional<double> serialSeconds(const RenderOptions& o, const Scene& scene,
+                                    const RenderSettings& settings) {
+  if (o.serialSeconds) return o.serialSeconds;
+  if (!o.measureSerial) return std::nullopt;
+  if (!o.quiet) std::fprintf(stderr, "measuring the serial time (one thread)...\n");
+  // Every frame of a sequence, each with its preparation, as a serial render pays for them.
+  FrameRenderer frames(scene, settings, framesOf(o));
+  double seconds = 0;
+  for (uint64_t i = 0; i < frames.frames().count(); ++i) {
+    const double before = frames.buildSeconds();
+    RenderStats stats;
+    renderImage(frames.frame(i), 1, &stats);
+    seconds += stats.seconds + (frames.buildSeconds() - before);
+  }
+  return seconds;
+}
+
+}  // namespace
+
 std::vector<FaultInjection> parseFaults(const std::vector<std::string>& specs) {
   std::vector<FaultInjection> faults;
   for (const std::string& spec : specs) {
@@ -72,26 +93,6 @@ std::vector<FaultInjection> parseFaults(const std::vector<std::string>& specs) {
   }
   return faults;
 }
-
-// Serial time for speed-up: given, or measured here by rendering serially on one thread.
-std::optional<double> serialSeconds(const RenderOptions& o, const Scene& scene,
-                                    const RenderSettings& settings) {
-  if (o.serialSeconds) return o.serialSeconds;
-  if (!o.measureSerial) return std::nullopt;
-  if (!o.quiet) std::fprintf(stderr, "measuring the serial time (one thread)...\n");
-  // Every frame of a sequence, each with its preparation, as a serial render pays for them.
-  FrameRenderer frames(scene, settings, framesOf(o));
-  double seconds = 0;
-  for (uint64_t i = 0; i < frames.frames().count(); ++i) {
-    const double before = frames.buildSeconds();
-    RenderStats stats;
-    renderImage(frames.frame(i), 1, &stats);
-    seconds += stats.seconds + (frames.buildSeconds() - before);
-  }
-  return seconds;
-}
-
-}  // namespace
 
 void addParallelOptions(CLI::App& cmd, RenderOptions& o) {
   const std::string parallel = "Parallel";

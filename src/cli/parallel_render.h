@@ -19,6 +19,9 @@ void addParallelOptions(CLI::App& cmd, RenderOptions& o);
 // True when this process was started by mpirun/mpiexec (Open MPI, MPICH or PMIx launchers).
 bool launchedByMpirun();
 
+// --inject-fault W:PIXELS:crash|hang|corrupt, as prt render and prt simulate read it.
+std::vector<FaultInjection> parseFaults(const std::vector<std::string>& specs);
+
 
 ParallelOptions toParallelOptions(const RenderOptions& o, int workers);
 // Writes the image, the report, the trace and the ownership map the options ask for, and

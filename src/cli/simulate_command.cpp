@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "cli/commands.h"
+#include "cli/parallel_render.h"
 #include "cli/run_page_output.h"
 #include "cli/flag_checks.h"
 #include "cli/strategy_flags.h"
@@ -53,8 +54,11 @@ struct SimulateOptions {
   double latencyMicroseconds = 50;
   double bandwidthMbps = 1000;
   double masterServiceMicroseconds = 5;
-  std::optional<double> workerTimeoutSeconds;  // the lease, for the heartbeat interval; none:
-                                               // defaultLeaseSeconds
+  std::optional<double> workerTimeoutSeconds;  // the lease; none: defaultLeaseSeconds
+  std::vector<std::string> faults;             // --inject-fault W:PIXELS:crash|hang
+  double mtbfSeconds = 0;                      // --mtbf
+  std::optional<double> failShare;             // --fail-share, with --fail-at
+  std::optional<double> failAtSeconds;
   std::string reportPath;
   std::string tracePath;
   std::string htmlPath;     // the run's page
@@ -129,8 +133,17 @@ int runSimulate(const SimulateOptions& o) {
   options.network.bandwidthBytesPerSecond = o.bandwidthMbps * 1e6 / 8;
   options.network.masterServiceSeconds = o.masterServiceMicroseconds * 1e-6;
   const int workers = static_cast<int>(options.speeds.size());
-  options.heartbeatSeconds =
-      heartbeatSecondsFor(o.workerTimeoutSeconds.value_or(defaultLeaseSeconds(workers)));
+  options.leaseSeconds = o.workerTimeoutSeconds.value_or(defaultLeaseSeconds(workers));
+  options.heartbeatSeconds = heartbeatSecondsFor(options.leaseSeconds);
+  options.faults = parseFaults(o.faults);
+  options.mtbfSeconds = o.mtbfSeconds;
+  if (o.failShare.has_value() != o.failAtSeconds.has_value()) {
+    throw InputError("--fail-share F and --fail-at T go together: a fraction F of the workers "
+                     "fails at T seconds");
+  }
+  options.failShare = o.failShare.value_or(0);
+  options.failAtSeconds = o.failAtSeconds.value_or(0);
+  options.seed = o.seed;
   // Cheap checks before building the map: a 4K synthetic map takes a moment.
   validateSimulationOptions(options, ~0ull);
   checkHtmlPath(o.htmlPath);
@@ -257,7 +270,7 @@ Action addSimulateCommand(CLI::App& app, const std::string& commandLine) {
                   "seconds in, numbered after the --workers N in the order they join; --speeds "
                   "then lists every worker, joiners included")
       ->group(speeds);
-  cmd->add_option("--seed", o->seed, "Seed for --slow-share and --lognormal")
+  cmd->add_option("--seed", o->seed, "Seed for --slow-share, --lognormal, --mtbf and --fail-share")
       ->capture_default_str()
       ->group(speeds);
 
@@ -312,13 +325,33 @@ Action addSimulateCommand(CLI::App& app, const std::string& commandLine) {
       ->capture_default_str()
       ->group(model);
   cmd->add_option("--worker-timeout", o->workerTimeoutSeconds,
-                  "The lease, as prt render's (default: 5 s, longer past 10,000 workers): its "
-                  "heartbeat interval, a fifth of it, sets how often silent workers and the "
-                  "master send heartbeats, which the master's modelled load counts; workers "
-                  "are never lost here")
+                  "The lease, as prt render's (default: 5 s, longer past 10,000 workers): a "
+                  "worker silent this long is lost and its tasks reissued; its heartbeat "
+                  "interval, a fifth of it, sets how often silent workers and the master send "
+                  "heartbeats, which the master's modelled load counts")
       ->check(finiteIn(0.1, 86400))
       ->default_str("auto")
       ->group(model);
+
+  const std::string failures = "Failures";
+  cmd->add_option("--inject-fault", o->faults,
+                  "WORKER:PIXELS:crash|hang, as prt render's: the worker fails before its next "
+                  "batch once it has rendered PIXELS; a crash drops its connection (lost at "
+                  "once), a hang goes silent (lost after --worker-timeout)")
+      ->group(failures);
+  cmd->add_option("--mtbf", o->mtbfSeconds,
+                  "Mean time between failures, virtual seconds: each starting worker's machine "
+                  "fails once, at an exponentially distributed time (--seed), silently")
+      ->check(finiteIn(0, 1e12))
+      ->group(failures);
+  cmd->add_option("--fail-share", o->failShare,
+                  "With --fail-at T: this fraction of the workers, picked at random (--seed), "
+                  "fails together at T (a switch or a rack lost)")
+      ->check(CLI::Range(0.0, 1.0))
+      ->group(failures);
+  cmd->add_option("--fail-at", o->failAtSeconds, "When --fail-share's machines fail, seconds")
+      ->check(finiteIn(0, 1e12))
+      ->group(failures);
 
   cmd->add_option("--report", o->reportPath, "Write the run report as JSON")->check(fileName());
   cmd->add_option("--trace", o->tracePath, "Write a Chrome trace-event timeline (Perfetto)")

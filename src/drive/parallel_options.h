@@ -12,19 +12,12 @@
 #include "core/task_set.h"
 #include "core/speed_index.h"
 #include "core/speed_schedule.h"
+#include "cluster/fault_injection.h"
 #include "drive/speed_index_kind.h"
 
 namespace prt {
 
-// Test and demonstration hook: make a worker fail part-way through.
-struct FaultInjection {
-  enum class Kind { Crash, Hang, Corrupt };
-  int worker = 0;
-  uint64_t afterPixels = 0;  // fails once it has rendered at least this many pixels
-  // Crash: the connection drops; Hang: it goes silent; Corrupt: it goes on, but a bit of
-  // about half the pixels it renders from then on is flipped (see corruptPixels).
-  Kind kind = Kind::Crash;
-};
+// FaultInjection (--inject-fault): cluster/fault_injection.h.
 
 // What a Corrupt fault does to a rendered batch: flips bit 20 of the red channel (a change
 // of about 12 % of its value) of the pixels whose index hashes odd, so some pixels of every

@@ -19,6 +19,8 @@ enum class SimEventKind {
   MasterDone,  // the master finished handling a message; its replies leave now
   WorkerDone,  // a worker finished its setup or its batch
   Join,        // worker `endpoint` joins the running render
+  Fail,        // worker `endpoint`'s machine fails now, silently (--mtbf, --fail-share)
+  Lost,        // the master finds worker `endpoint` lost (its connection dropped, or its lease ran out)
 };
 
 struct SimEvent {

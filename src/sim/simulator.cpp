@@ -2,7 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <deque>
+#include <numeric>
+#include <optional>
+#include <random>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -34,6 +38,11 @@ struct SimWorker {
   double lastToMaster = 0;    // when it last sent the master anything (heartbeats counted)
   double lastFromMaster = 0;  // when the master last sent it anything (heartbeats counted)
   bool inSetup = false;
+  bool dead = false;      // failed: it reads, computes and sends nothing more
+  bool crashed = false;   // its connection dropped (rather than going silent)
+  bool lost = false;      // the master has been told
+  uint64_t rendered = 0;  // pixels rendered so far (for --inject-fault)
+  std::optional<FaultInjection> fault;
   double workStart = 0;
   TaskSet batch;
   std::deque<Mail> mailbox;
@@ -72,6 +81,9 @@ class Simulation {
       workers_.emplace_back(w, WorkerOptions{options.batchPixels, options.batchSeconds}, speed,
                             speedIndex);
       workers_.back().speedChanges = changesOf(options.speedChanges, w);
+      for (const FaultInjection& f : options.faults) {
+        if (f.worker == w) workers_.back().fault = f;
+      }
     }
   }
 
@@ -87,6 +99,7 @@ class Simulation {
         queue_.push(std::move(join));
       }
     }
+    scheduleFailures();
     while (!finished_) {
       if (queue_.empty()) {
         throw std::runtime_error("simulation stalled with " +
@@ -116,6 +129,15 @@ class Simulation {
           worker(e.endpoint).lastFromMaster = now_;
           send(kMaster, master_.onWorkerJoined(e.endpoint, now_));
           break;
+        case SimEventKind::Fail:
+          // A machine that has not joined yet, or has finished, fails unnoticed.
+          if (e.endpoint < master_.workerCount() && !worker(e.endpoint).machine.stopped()) {
+            die(e.endpoint, false);
+          }
+          break;
+        case SimEventKind::Lost:
+          lose(e.endpoint);
+          break;
       }
     }
     return report();
@@ -125,6 +147,79 @@ class Simulation {
   int workerCount() const { return static_cast<int>(options_.speeds.size()); }
   int startingWorkers() const { return workerCount() - joinerCount(options_.joins); }
   SimWorker& worker(int w) { return workers_[static_cast<size_t>(w)]; }
+
+  // --mtbf and --fail-share: the machines' failure times, drawn once (deterministic per seed).
+  void scheduleFailures() {
+    std::mt19937_64 random(options_.seed);
+    const int starting = startingWorkers();
+    if (options_.mtbfSeconds > 0) {
+      std::exponential_distribution<double> lifetime(1.0 / options_.mtbfSeconds);
+      for (int w = 0; w < starting; ++w) pushFailure(w, lifetime(random));
+    }
+    if (options_.failShare > 0) {
+      std::vector<int> order(static_cast<size_t>(starting));
+      std::iota(order.begin(), order.end(), 0);
+      std::shuffle(order.begin(), order.end(), random);
+      const auto count = static_cast<size_t>(std::llround(options_.failShare * starting));
+      for (size_t i = 0; i < count; ++i) pushFailure(order[i], options_.failAtSeconds);
+    }
+  }
+
+  void pushFailure(int w, double at) {
+    SimEvent fail;
+    fail.time = at;
+    fail.kind = SimEventKind::Fail;
+    fail.endpoint = w;
+    queue_.push(std::move(fail));
+  }
+
+  // Worker `id` fails now. A crash drops its connection: the master hears of it one latency
+  // later. Otherwise it goes silent, and the master finds out a lease after it last heard from
+  // it: its last message, or the last heartbeat it sent before it failed.
+  void die(int id, bool crash) {
+    SimWorker& w = worker(id);
+    if (w.dead) return;
+    w.dead = true;
+    w.crashed = crash;
+    w.busy = false;
+    w.mailbox.clear();
+    const double lastWord = w.lastToMaster;
+    const uint64_t beats = beatsIn(w.lastToMaster);  // its silence ends here
+    load_.heartbeatsReceived += beats;
+    load_.received += beats;
+    heartbeatLoad(beats);
+    const double lastHeard = lastWord + static_cast<double>(beats) * options_.heartbeatSeconds;
+    SimEvent lost;
+    lost.time = crash ? now_ + options_.network.latencySeconds
+                      : std::max(now_, lastHeard + options_.network.latencySeconds +
+                                           options_.leaseSeconds);
+    lost.kind = SimEventKind::Lost;
+    lost.endpoint = id;
+    queue_.push(std::move(lost));
+  }
+
+  void lose(int id) {
+    SimWorker& w = worker(id);
+    if (w.lost || finished_) return;
+    w.lost = true;
+    const uint64_t beats = beatsIn(w.lastFromMaster);  // the master stops heartbeating it
+    load_.heartbeatsSent += beats;
+    load_.sent += beats;
+    heartbeatLoad(beats);
+    char reason[64];
+    if (w.crashed) {
+      std::snprintf(reason, sizeof reason, "connection dropped");
+    } else {
+      std::snprintf(reason, sizeof reason, "silent for %.1f s", options_.leaseSeconds);
+    }
+    send(kMaster, master_.onWorkerLost(id, now_, reason));
+    if (master_.failed()) {
+      char text[128];
+      std::snprintf(text, sizeof text,
+                    "every worker was lost by %.1f s; the image cannot be finished", now_);
+      throw std::runtime_error(text);
+    }
+  }
 
   // The heartbeats that a silence between `last` and `now` holds (one per interval), and the
   // silence restarts now.
@@ -163,6 +258,15 @@ class Simulation {
     for (int w = 0; w < workerCount(); ++w) {
       SimWorker& sw = worker(w);
       if (w >= master_.workerCount()) continue;  // never joined in time
+      if (sw.dead) {  // its own silence closed when it failed; the master's, when it knew
+        if (!sw.lost) {
+          const uint64_t out = beatsIn(sw.lastFromMaster);
+          load_.heartbeatsSent += out;
+          load_.sent += out;
+          heartbeatLoad(out);
+        }
+        continue;
+      }
       const uint64_t out = beatsIn(sw.lastFromMaster);
       load_.heartbeatsSent += out;
       load_.sent += out;
@@ -201,7 +305,7 @@ class Simulation {
       return;
     }
     SimWorker& w = worker(to);
-    if (w.machine.stopped()) return;  // a stopped worker reads nothing more
+    if (w.machine.stopped() || w.dead) return;  // a stopped or failed worker reads nothing more
     w.mailbox.push_back(std::move(mail));
     if (!w.busy) advance(to);
   }
@@ -249,8 +353,13 @@ class Simulation {
       logReceived(id, mail);
       send(id, w.machine.onMessage(mail.from, mail.message));
     }
-    if (w.machine.stopped()) return;
+    if (w.machine.stopped() || w.dead) return;
     double seconds = 0;
+    if (w.fault && !w.machine.needsSetup() && w.machine.hasWork() &&
+        w.rendered >= w.fault->afterPixels) {
+      die(id, w.fault->kind == FaultInjection::Kind::Crash);  // as the worker loop fails
+      return;
+    }
     if (w.machine.needsSetup()) {
       w.inSetup = true;
       seconds = options_.speedIndexRun && !options_.oracleSpeedIndex ? w.speedIndex : 0.0;
@@ -274,6 +383,7 @@ class Simulation {
 
   void finishWork(int id) {
     SimWorker& w = worker(id);
+    if (w.dead) return;  // it failed mid-batch: the batch is lost with it
     w.busy = false;
     if (w.inSetup) {
       log_.add({EventKind::Setup, id, w.workStart, now_, 0, 0, 0, ""});
@@ -282,6 +392,7 @@ class Simulation {
     } else {
       log_.add({EventKind::Compute, id, w.workStart, now_, w.batch.size(), 0, 0, ""});
       w.batch.forEach([&](uint64_t pixel) { owner_[pixel] = id; });
+      w.rendered += w.batch.size();
       send(id, w.machine.batchDone(w.batch, now_ - w.workStart));
     }
     advance(id);
@@ -300,6 +411,11 @@ class Simulation {
     info.speedIndexRun = options_.speedIndexRun;
     info.faults.endgameCopies = master_.endgameCopies();
     info.faults.heartbeatSeconds = options_.heartbeatSeconds;
+    info.faults.workerTimeoutSeconds = options_.leaseSeconds;
+    for (const LostWorker& l : master_.ledger().losses()) {
+      info.faults.lostWorkers.push_back({l.worker, l.atSeconds, l.reason, l.unfinished});
+    }
+    info.faults.reissuedTasks = master_.ledger().reissuedTasks();
     closeSilences();
     load_.basis = "modelled_service";
     info.master = load_;
@@ -383,6 +499,28 @@ void validateSimulationOptions(const SimulationOptions& o, uint64_t pixelCount) 
   }
   if (!(o.heartbeatSeconds > 0) || !std::isfinite(o.heartbeatSeconds)) {
     throw InputError("the heartbeat interval must be a positive number of seconds");
+  }
+  if (!(o.leaseSeconds > 0) || !std::isfinite(o.leaseSeconds)) {
+    throw InputError("--worker-timeout must be a positive number of seconds");
+  }
+  for (const FaultInjection& f : o.faults) {
+    if (f.worker < 0 || static_cast<size_t>(f.worker) >= workers) {
+      throw InputError("--inject-fault: worker " + std::to_string(f.worker) +
+                       " is not one of the " + std::to_string(workers) + " workers");
+    }
+    if (f.kind == FaultInjection::Kind::Corrupt) {
+      throw InputError("--inject-fault: corrupt workers are not simulated (a simulated worker "
+                       "renders no colours to check); crash and hang are");
+    }
+  }
+  if (!(o.mtbfSeconds >= 0) || !std::isfinite(o.mtbfSeconds)) {
+    throw InputError("--mtbf must be a positive number of seconds");
+  }
+  if (!(o.failShare >= 0 && o.failShare <= 1)) {
+    throw InputError("--fail-share must be a fraction in [0, 1]");
+  }
+  if (!(o.failAtSeconds >= 0) || !std::isfinite(o.failAtSeconds)) {
+    throw InputError("--fail-at must be a time in seconds, 0 or more");
   }
   validateNetworkOptions(o.network);
   validateStrategy(o.strategy, o.strategyOptions);

@@ -20,9 +20,20 @@
 // the master half a service time (the measured cost of one message in or out, where a
 // service is a message in and its reply). The heartbeats that fall in a silence are worked
 // off in the master's idle time first, and delay its next service only when it had none.
-// The report's master_busy_share is that busy time over the elapsed time. Worker failures
-// are not simulated; workers joining mid-run are (--join-at: the
-// master admits each at its time, as the master loop does on a PeerJoined notice).
+// The report's master_busy_share is that busy time over the elapsed time. Workers joining
+// mid-run are simulated (--join-at: the master admits each at its time, as the master loop
+// does on a PeerJoined notice), and so are workers that fail:
+//   - --inject-fault W:PIXELS:crash|hang, as in a real run: the worker fails before its next
+//     batch once it has rendered PIXELS; a crash drops its connection (the master hears of it
+//     one latency later, as the thread driver's does), a hang goes silent;
+//   - --mtbf S: each starting worker's machine fails at a time drawn from an exponential
+//     distribution of mean S (--seed), once; --fail-share F --fail-at T: a fraction F of the
+//     workers, picked at random, fail together at T (a switch, a rack). Such machines go
+//     silent, mid-batch too.
+// A silent worker is lost a lease (leaseSeconds, --worker-timeout) after the master last heard
+// from it: its last message, or the last heartbeat it sent before it failed. The master then
+// hands its unfinished tasks back to the strategy, as in a real run; the report lists the
+// losses and the reissued tasks. A run whose every worker is lost throws.
 //
 // Work is proportional to messages and batches, never to pixels beyond one pass over the
 // map (tasks travel as compact runs), so 1,024 workers on a 3840x2160 image take seconds.
@@ -33,6 +44,7 @@
 #include <vector>
 
 #include "balance/registry.h"
+#include "cluster/fault_injection.h"
 #include "cluster/leases.h"
 #include "cluster/worker.h"
 #include "core/speed_schedule.h"
@@ -69,7 +81,13 @@ struct SimulationOptions {
                                           // report their true index (base / speed), as real
                                           // workers do with --speed-index slowdown
   bool endgame = false;                   // --endgame: copies of the last tasks (Master)
+  double leaseSeconds = kDefaultLeaseSeconds;  // silence after which a worker is lost
   double heartbeatSeconds = heartbeatSecondsFor(kDefaultLeaseSeconds);  // see above
+  std::vector<FaultInjection> faults;  // --inject-fault (crash or hang; corrupt is refused)
+  double mtbfSeconds = 0;    // > 0: each starting worker fails once, exponentially distributed
+  double failShare = 0;      // with failAtSeconds: this fraction of the workers fails at once
+  double failAtSeconds = 0;
+  uint64_t seed = 1;         // for --mtbf and --fail-share
   NetworkOptions network;
   uint64_t sceneBytes = 4096;  // the scene text the master sends to each worker
   // A frame sequence: the cost map holds this many frames one above the other (its pixels are

@@ -237,6 +237,102 @@ TEST_P(SimulatorStrategyTest, WorkersJoiningMidRunAreAdmitted) {
   EXPECT_GE(run.report.elapsedSeconds, *run.report.idealSeconds * (1 - 1e-9));
 }
 
+// Failures, as a real run has them: a crash is lost at once (its connection drops), a hang
+// a lease after the master last heard from it, a machine that fails mid-batch loses the batch
+// with it; every strategy gets every pixel rendered by the workers left, the lost workers'
+// unfinished tasks reissued and reported.
+TEST_P(SimulatorStrategyTest, FailedWorkersAreLostAndTheirTasksRenderedByTheOthers) {
+  const CostMap map = complexSceneCostMap(97, 61, 3.0);
+  SimulationOptions o = optionsFor(GetParam(), {1, 0.5, 0.25, 1, 0.7}, 16);
+  o.leaseSeconds = 0.5;
+  o.heartbeatSeconds = heartbeatSecondsFor(o.leaseSeconds);
+  o.faults = {FaultInjection{1, 40, FaultInjection::Kind::Crash},
+              FaultInjection{3, 40, FaultInjection::Kind::Hang}};
+  o.failShare = 0.2;  // one of five, mid-run
+  o.failAtSeconds = 0.3;
+  o.seed = 7;
+  const SimulatedRun run = simulate(map, o);
+  const FaultInfo& f = run.report.info.faults;
+  ASSERT_GE(f.lostWorkers.size(), 1u);
+  for (const LostWorkerInfo& l : f.lostWorkers) {
+    // A worker whose share was under 40 pixels never reaches its fault; one that does is
+    // lost, the hang only after a lease of silence.
+    if (l.worker == 3) {
+      EXPECT_GE(l.atSeconds, o.leaseSeconds);
+    }
+    if (l.worker == 1) {
+      EXPECT_EQ(l.reason, "connection dropped");
+    }
+  }
+  for (const WorkerReport& w : run.report.workers) {
+    if (w.worker == 1 || w.worker == 3) {
+      const bool lost = std::any_of(f.lostWorkers.begin(), f.lostWorkers.end(),
+                                    [&](const LostWorkerInfo& l) { return l.worker == w.worker; });
+      EXPECT_TRUE(lost || w.pixels < 40) << GetParam() << ", worker " << w.worker;
+    }
+  }
+  EXPECT_EQ(f.workerTimeoutSeconds, 0.5);
+  // Every pixel is in the image, from a worker that was not lost before it delivered it.
+  for (int32_t owner : run.owner) ASSERT_GE(owner, 0);
+  EXPECT_GE(renderedPixels(run), map.pixelCount());
+  uint64_t unfinished = 0;
+  for (const LostWorkerInfo& l : f.lostWorkers) unfinished += l.unfinished;
+  EXPECT_EQ(f.reissuedTasks, unfinished);
+}
+
+TEST(SimulatorTest, ACrashIsLostAtOnceAndAHangAfterTheLease) {
+  const CostMap map = uniformCostMap(64, 64, 8.0);
+  for (const auto kind : {FaultInjection::Kind::Crash, FaultInjection::Kind::Hang}) {
+    SimulationOptions o = optionsFor("self", {1, 1}, 64);
+    o.leaseSeconds = 2.0;
+    o.heartbeatSeconds = heartbeatSecondsFor(o.leaseSeconds);
+    o.speedIndexRun = false;
+    o.faults = {FaultInjection{1, 64, kind}};  // after its first batch
+    const SimulatedRun run = simulate(map, o);
+    const auto& lost = run.report.info.faults.lostWorkers;
+    ASSERT_EQ(lost.size(), 1u);
+    // Its first batch (64 px of 4,096 over 8 s: 0.125 s) then the failure; the hang is found
+    // a lease after its last result (no heartbeat fell in between).
+    const double failed = 0.125;
+    if (kind == FaultInjection::Kind::Crash) {
+      EXPECT_NEAR(lost[0].atSeconds, failed, 0.01);
+      EXPECT_EQ(lost[0].reason, "connection dropped");
+    } else {
+      EXPECT_NEAR(lost[0].atSeconds, failed + 2.0, 0.01);
+    }
+  }
+}
+
+TEST(SimulatorTest, EveryWorkerLostIsAFailure) {
+  const CostMap map = uniformCostMap(32, 32, 4.0);
+  SimulationOptions o = optionsFor("adaptive", {1, 1, 1});
+  o.failShare = 1.0;
+  o.failAtSeconds = 0.5;
+  EXPECT_THROW(simulate(map, o), std::runtime_error);
+  o.failShare = 0;
+  o.faults = {FaultInjection{0, 0, FaultInjection::Kind::Corrupt}};
+  EXPECT_THROW(simulate(map, o), InputError);
+  o.faults = {FaultInjection{3, 0, FaultInjection::Kind::Crash}};
+  EXPECT_THROW(simulate(map, o), InputError);
+}
+
+// A thousand machines with a mean time between failures of a few times the run: the lost
+// ones cost the run about a lease each, and the report counts them.
+TEST(SimulatorTest, MachinesFailingAtRandomAreLostAndTheRunFinishes) {
+  const CostMap map = complexSceneCostMap(320, 240, 1000.0);
+  SimulationOptions o = optionsFor("adaptive", std::vector<double>(1000, 1.0), 16);
+  o.mtbfSeconds = 10.0;
+  o.seed = 3;
+  o.leaseSeconds = 0.5;
+  o.heartbeatSeconds = heartbeatSecondsFor(o.leaseSeconds);
+  const SimulatedRun run = simulate(map, o);
+  const size_t lost = run.report.info.faults.lostWorkers.size();
+  // About 1 - exp(-T / 10) of them fail within the run's T of about a second.
+  EXPECT_GT(lost, 30u);
+  EXPECT_LT(lost, 300u);
+  for (int32_t owner : run.owner) ASSERT_GE(owner, 0);
+}
+
 TEST(SimulatorTest, DynamicStrategiesComeCloseToTheJoinSchedulesIdeal) {
   const CostMap map = complexSceneCostMap(160, 120, 12.0);
   for (const std::string name : {"adaptive", "stealing", "self"}) {

@@ -1,0 +1,19 @@
+#pragma once
+// Test and demonstration hook: make a worker fail part-way through. The same flag
+// (--inject-fault W:PIXELS:crash|hang|corrupt) for real runs (drive/worker_loop.h) and the
+// simulator (sim/simulator.h).
+
+#include <cstdint>
+
+namespace prt {
+
+struct FaultInjection {
+  enum class Kind { Crash, Hang, Corrupt };
+  int worker = 0;
+  uint64_t afterPixels = 0;  // fails once it has rendered at least this many pixels
+  // Crash: the connection drops; Hang: it goes silent; Corrupt: it goes on, but a bit of
+  // about half the pixels it renders from then on is flipped (see corruptPixels).
+  Kind kind = Kind::Crash;
+};
+
+}  // namespace prt
