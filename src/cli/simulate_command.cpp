@@ -59,6 +59,7 @@ struct SimulateOptions {
   double mtbfSeconds = 0;                      // --mtbf
   std::optional<double> failShare;             // --fail-share, with --fail-at
   std::optional<double> failAtSeconds;
+  double repairSeconds = 0;                    // --repair
   std::string reportPath;
   std::string tracePath;
   std::string htmlPath;     // the run's page
@@ -143,6 +144,7 @@ int runSimulate(const SimulateOptions& o) {
   }
   options.failShare = o.failShare.value_or(0);
   options.failAtSeconds = o.failAtSeconds.value_or(0);
+  options.repairSeconds = o.repairSeconds;
   options.seed = o.seed;
   // Cheap checks before building the map: a 4K synthetic map takes a moment.
   validateSimulationOptions(options, ~0ull);
@@ -350,6 +352,11 @@ Action addSimulateCommand(CLI::App& app, const std::string& commandLine) {
       ->check(CLI::Range(0.0, 1.0))
       ->group(failures);
   cmd->add_option("--fail-at", o->failAtSeconds, "When --fail-share's machines fail, seconds")
+      ->check(finiteIn(0, 1e12))
+      ->group(failures);
+  cmd->add_option("--repair", o->repairSeconds,
+                  "A machine that failed (--mtbf, --fail-share) comes back this many seconds "
+                  "later, as a new worker joining the run; with --mtbf it may fail again")
       ->check(finiteIn(0, 1e12))
       ->group(failures);
 

@@ -56,6 +56,11 @@ class NetworkModel {
   // The message reaches `to` at `now` (a time depart() returned): reserves the receiver's
   // incoming link and returns the delivery time. Call in time order.
   double arrive(int to, uint64_t bytes, double now);
+  // One more worker (a machine that comes back after a repair): its links, free now.
+  void addWorker() {
+    outFree_.push_back(0.0);
+    inFree_.push_back(0.0);
+  }
 
  private:
   double transmitSeconds(uint64_t bytes) const;

@@ -124,6 +124,7 @@ class Simulation {
           finishWork(e.endpoint);
           break;
         case SimEventKind::Join:
+          if (e.from != kMaster) e.endpoint = comeBack(e.from);  // a repaired machine
           log_.add({EventKind::WorkerJoined, e.endpoint, now_, now_, 0, 0, kMaster, ""});
           worker(e.endpoint).lastToMaster = now_;  // its silences start when it joins
           worker(e.endpoint).lastFromMaster = now_;
@@ -173,6 +174,22 @@ class Simulation {
     queue_.push(std::move(fail));
   }
 
+  // A repaired machine, once worker `was`, joins as a new worker with its speed; it may fail
+  // again. Returns its endpoint.
+  int comeBack(int was) {
+    const SimWorker& old = worker(was);
+    const int id = static_cast<int>(workers_.size());
+    const double speed = old.speed, speedIndex = old.speedIndex;
+    workers_.emplace_back(id, WorkerOptions{options_.batchPixels, options_.batchSeconds}, speed,
+                          speedIndex);
+    net_.addWorker();
+    if (options_.mtbfSeconds > 0) {
+      std::exponential_distribution<double> lifetime(1.0 / options_.mtbfSeconds);
+      pushFailure(id, now_ + lifetime(repairRandom_));
+    }
+    return id;
+  }
+
   // Worker `id` fails now. A crash drops its connection: the master hears of it one latency
   // later. Otherwise it goes silent, and the master finds out a lease after it last heard from
   // it: its last message, or the last heartbeat it sent before it failed.
@@ -183,6 +200,13 @@ class Simulation {
     w.crashed = crash;
     w.busy = false;
     w.mailbox.clear();
+    if (!crash && options_.repairSeconds > 0) {
+      SimEvent back;
+      back.time = now_ + options_.repairSeconds;
+      back.kind = SimEventKind::Join;
+      back.from = id;  // the machine it was
+      queue_.push(std::move(back));
+    }
     const double lastWord = w.lastToMaster;
     const uint64_t beats = beatsIn(w.lastToMaster);  // its silence ends here
     load_.heartbeatsReceived += beats;
@@ -448,6 +472,7 @@ class Simulation {
   double idleSince_ = 0;      // when the master last finished a service
   double now_ = 0;
   bool finished_ = false;
+  std::mt19937_64 repairRandom_{options_.seed ^ 0x9e3779b97f4a7c15ull};  // repaired lifetimes
 };
 
 }  // namespace
@@ -518,6 +543,13 @@ void validateSimulationOptions(const SimulationOptions& o, uint64_t pixelCount) 
   }
   if (!(o.failShare >= 0 && o.failShare <= 1)) {
     throw InputError("--fail-share must be a fraction in [0, 1]");
+  }
+  if (!(o.repairSeconds >= 0) || !std::isfinite(o.repairSeconds)) {
+    throw InputError("--repair must be a positive number of seconds");
+  }
+  if (o.repairSeconds > 0 && !o.joins.empty()) {
+    throw InputError("--repair and --join-at cannot be combined: machines that come back join "
+                     "after every other worker");
   }
   if (!(o.failAtSeconds >= 0) || !std::isfinite(o.failAtSeconds)) {
     throw InputError("--fail-at must be a time in seconds, 0 or more");

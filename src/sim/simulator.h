@@ -33,7 +33,10 @@
 // A silent worker is lost a lease (leaseSeconds, --worker-timeout) after the master last heard
 // from it: its last message, or the last heartbeat it sent before it failed. The master then
 // hands its unfinished tasks back to the strategy, as in a real run; the report lists the
-// losses and the reissued tasks. A run whose every worker is lost throws.
+// losses and the reissued tasks. With repairSeconds (--repair), a machine that failed comes
+// back that long after, as a new worker that joins the run (numbered after the others) and
+// may fail again (--mtbf); not with --join-at. A run whose every worker is lost at once
+// throws, as a real master gives up then, even if machines would come back.
 //
 // Work is proportional to messages and batches, never to pixels beyond one pass over the
 // map (tasks travel as compact runs), so 1,024 workers on a 3840x2160 image take seconds.
@@ -87,6 +90,8 @@ struct SimulationOptions {
   double mtbfSeconds = 0;    // > 0: each starting worker fails once, exponentially distributed
   double failShare = 0;      // with failAtSeconds: this fraction of the workers fails at once
   double failAtSeconds = 0;
+  double repairSeconds = 0;  // > 0: a machine that failed (--mtbf, --fail-share) comes back
+                             // this long after, as a new worker joining the run
   uint64_t seed = 1;         // for --mtbf and --fail-share
   NetworkOptions network;
   uint64_t sceneBytes = 4096;  // the scene text the master sends to each worker

@@ -333,6 +333,30 @@ TEST(SimulatorTest, MachinesFailingAtRandomAreLostAndTheRunFinishes) {
   for (int32_t owner : run.owner) ASSERT_GE(owner, 0);
 }
 
+// Repaired machines come back as new workers, numbered after the others, and may fail again.
+TEST(SimulatorTest, RepairedMachinesComeBackAsNewWorkers) {
+  const CostMap map = complexSceneCostMap(160, 120, 400.0);
+  SimulationOptions o = optionsFor("adaptive", std::vector<double>(100, 1.0), 16);
+  o.mtbfSeconds = 4.0;
+  o.repairSeconds = 0.5;
+  o.leaseSeconds = 0.5;
+  o.heartbeatSeconds = heartbeatSecondsFor(o.leaseSeconds);
+  const SimulatedRun run = simulate(map, o);
+  const FaultInfo& f = run.report.info.faults;
+  ASSERT_GT(f.lostWorkers.size(), 20u);
+  // Every loss of a machine that went silent brings a worker back half a second later,
+  // unless the run ended first.
+  const size_t back = run.report.workers.size() - 100;
+  EXPECT_GT(back, 10u);
+  EXPECT_LE(back, f.lostWorkers.size());
+  for (size_t w = 100; w < run.report.workers.size(); ++w) {
+    ASSERT_TRUE(run.report.workers[w].joinedAtSeconds.has_value()) << w;
+  }
+  for (int32_t owner : run.owner) ASSERT_GE(owner, 0);
+  o.joins = {JoinWave{1.0, 1}};
+  EXPECT_THROW(simulate(map, o), InputError);  // with --join-at: refused
+}
+
 TEST(SimulatorTest, DynamicStrategiesComeCloseToTheJoinSchedulesIdeal) {
   const CostMap map = complexSceneCostMap(160, 120, 12.0);
   for (const std::string name : {"adaptive", "stealing", "self"}) {
