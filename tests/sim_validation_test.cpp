@@ -20,6 +20,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 
 #include "balance/strategy.h"
 #include "core/speed_index.h"
@@ -79,6 +80,61 @@ TEST_P(SimValidationTest, SimulatedElapsedTimeIsWithinTenPercentOfARealRun) {
   }
   EXPECT_LT(bestError, 0.10) << GetParam() << ": real " << real << " s, simulated " << simulated
                              << " s";
+}
+
+// The same with a worker that fails part-way: crashed (its connection drops, as the thread
+// driver's does when its thread ends) or hung (silent: lost after the lease, 1 s here). The
+// simulation must lose the same worker, reissue tasks, and end within 15 % of the real run.
+TEST(SimValidationFaultTest, AFailedWorkerIsLostAsInARealRun) {
+  Scene scene = loadSceneFile(PRT_SOURCE_DIR "/scenes/complex.scene");
+  scene.image.width = 144;
+  scene.image.height = 108;
+  const SerialMeasurement serial = measureSerial(scene, *paperTestCase("A"), 1, true);
+  for (const std::string strategy : {"adaptive", "hybrid", "self"}) {
+    for (const auto kind : {FaultInjection::Kind::Crash, FaultInjection::Kind::Hang}) {
+      ParallelOptions options = parallelOptions(strategy, {8, 8, 16, 16});
+      options.batchPixels = 64;
+      options.speedIndexDiscs = 20;
+      options.speedIndexKind = SpeedIndexKind::Hanoi;
+      options.workerTimeoutSeconds = 1.0;
+      options.batchSeconds = 0;  // fixed batches: the fault comes 300 pixels in, mid-share
+      options.faults = {FaultInjection{1, 300, kind}};
+      const char* name = kind == FaultInjection::Kind::Crash ? "crash" : "hang";
+      double bestError = INFINITY, real = 0, simulated = 0;
+      for (int attempt = 0; attempt < 8 && bestError > 0.15; ++attempt) {
+        const double masterIndex = measureSpeedIndexSeconds(options.speedIndexDiscs, 5);
+        const RunReport r =
+            runReal(scene, *paperTestCase("A"), options, serial.medianSeconds, masterIndex);
+        double compute = 0;
+        std::vector<double> speedIndices;
+        for (const WorkerReport& w : r.workers) {
+          compute += w.busySeconds / w.slowdown;
+          speedIndices.push_back(w.speedIndexSeconds);
+        }
+        const RunReport s =
+            runSimulated(serial.costMap->scaledTo(compute), options, masterIndex, speedIndices);
+        const auto& realLost = r.info.faults.lostWorkers;
+        const auto& simLost = s.info.faults.lostWorkers;
+        ASSERT_EQ(realLost.size(), 1u) << strategy << ", " << name;
+        ASSERT_EQ(simLost.size(), 1u) << strategy << ", " << name << ": worker 1 rendered "
+                                      << s.workers[1].pixels << " px in the simulation, "
+                                      << r.workers[1].pixels << " in the real run; elapsed "
+                                      << s.elapsedSeconds << " s simulated, " << r.elapsedSeconds;
+        EXPECT_EQ(simLost[0].worker, 1);
+        EXPECT_GT(s.info.faults.reissuedTasks, 0u) << strategy << ", " << name;
+        const double error = std::abs(s.elapsedSeconds / r.elapsedSeconds - 1);
+        if (error < bestError) {
+          bestError = error;
+          real = r.elapsedSeconds;
+          simulated = s.elapsedSeconds;
+        }
+      }
+      EXPECT_LT(bestError, 0.15) << strategy << ", " << name << ": real " << real
+                                 << " s, simulated " << simulated << " s";
+      std::printf("%s, %s: real %.3f s, simulated %.3f s\n", strategy.c_str(), name, real,
+                  simulated);
+    }
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(AllStrategies, SimValidationTest, ::testing::ValuesIn(strategyNames()),

@@ -101,6 +101,9 @@ RunReport runSimulated(const CostMap& costs, const ParallelOptions& options,
   sim.speedIndexRun = options.speedIndexKind != SpeedIndexKind::None;
   sim.oracleSpeedIndex = options.speedIndexKind == SpeedIndexKind::Slowdown;
   sim.speedChanges = speedChangesOf(options);
+  sim.leaseSeconds = options.workerTimeoutSeconds;
+  sim.heartbeatSeconds = heartbeatSecondsFor(options.workerTimeoutSeconds);
+  sim.faults = options.faults;
   return simulate(costs, sim).report;
 }
 
