@@ -85,6 +85,12 @@ grep -v "PMIX ERROR" err.txt >&2 || true
 step="checking the outcome"
 if [ -f out.pfm ]; then
   cmp serial.pfm out.pfm || fail "the image differs from the serial one"
+  # The report is written after the image: wait for it (10 s at most).
+  for i in $(seq 1 100); do
+    [ -f report.json ] && break
+    sleep 0.1
+  done
+  [ -f report.json ] || fail "an image but no report"
   python3 - <<'PY'
 import json
 r = json.load(open("report.json"))
