@@ -1,15 +1,11 @@
 #include "mpi/mpi_acceptor.h"
 
-#include <sys/stat.h>
-
-#include <cerrno>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
 
 #include "core/thread_start.h"
 #include "core/input_error.h"
-#include "image/atomic_file.h"
 #include "mpi/mpi_transport.h"
 
 namespace prt::mpi_detail {
@@ -30,15 +26,7 @@ MpiAcceptor::MpiAcceptor(const std::string& portFile, const Secret& secret,
   state_->port = name;
   state_->secret = secret;
   try {
-    // Readable by its owner only: whoever reads the port can try to join. The mode is set on
-    // the temporary file before anything is written, so the name is never readable by others.
-    writeFileAtomically(file_, [&](std::FILE* f) {
-      if (::fchmod(::fileno(f), 0600) != 0) {
-        throw InputError("cannot make the port file '" + file_ + "' private: " +
-                         std::strerror(errno));
-      }
-      std::fputs(portFileText(state_->port, state_->secret, tcpAddresses).c_str(), f);
-    });
+    writePortFile(file_, state_->port, state_->secret, tcpAddresses);
   } catch (...) {
     MPI_Close_port(name);
     throw;

@@ -145,7 +145,7 @@ ParallelRun renderMpiMaster(MpiSession& session, const RunRequest& request) {
     }
     MpiAcceptor* acceptor = comm.acceptor.get();
     comm.link->setAcceptSource([acceptor] { return acceptor->take(); }, encodeWelcome(options));
-    comm.link->setTcpDoor(comm.door.get());
+    comm.link->setTcpDoor(*comm.door, encodeWelcome(options));
   }
   comm.runStarted = true;
   RunRequest withBlocklist = request;

@@ -154,21 +154,9 @@ MpiLink::Route* MpiLink::routeOf(int endpoint, int& rank) {
   return nullptr;
 }
 
-int MpiLink::tcpJoinerOf(int endpoint) const {
-  for (size_t j = 0; j < joinerEndpoints_.size(); ++j) {
-    if (joinerEndpoints_[j] == endpoint) return static_cast<int>(j);
-  }
-  return -1;
-}
-
 void MpiLink::send(int to, Channel channel, Bytes bytes) {
   const int tag = channel == Channel::Summary ? kSummaryTag : kMessageTag;
-  if (master_ && door_ != nullptr) {
-    if (const int j = tcpJoinerOf(to); j >= 0) {
-      door_->send(j, tag, bytes);
-      return;
-    }
-  }
+  if (master_ && joiners_ && joiners_->send(to, tag, bytes)) return;
   try {
     int rank = 0;
     if (Route* r = routeOf(to, rank)) {
@@ -186,12 +174,7 @@ void MpiLink::relay(int from, const Bytes& bytes) {
   int32_t to = 0, tag = 0;
   if (!readHeader(bytes, to, tag) || (tag != kMessageTag && tag != kSummaryTag)) return;
   const Bytes payload(bytes.begin() + 2 * sizeof(int32_t), bytes.end());
-  if (door_ != nullptr) {
-    if (const int j = tcpJoinerOf(to); j >= 0) {
-      door_->send(j, kRelayedTag, withHeader(from, tag, payload));
-      return;
-    }
-  }
+  if (joiners_ && joiners_->send(to, kRelayedTag, withHeader(from, tag, payload))) return;
   int rank = 0;
   Route* r = routeOf(to, rank);
   if (r == nullptr) return;  // no such worker: dropped, as a message to a dead one would be
@@ -232,12 +215,7 @@ std::vector<MpiLink::JoinedJob> MpiLink::joinedJobs() const {
 }
 
 void MpiLink::sendTagged(int endpoint, int tag, Bytes bytes) {
-  if (door_ != nullptr) {
-    if (const int j = tcpJoinerOf(endpoint); j >= 0) {
-      door_->send(j, tag, bytes);
-      return;
-    }
-  }
+  if (joiners_ && joiners_->send(endpoint, tag, bytes)) return;
   int rank = 0;
   Route* r = routeOf(endpoint, rank);
   if (r == nullptr) return;
@@ -248,7 +226,7 @@ void MpiLink::sendTagged(int endpoint, int tag, Bytes bytes) {
 }
 
 bool MpiLink::flush(double timeoutSeconds) {
-  bool all = door_ == nullptr || door_->flush(timeoutSeconds);
+  bool all = !joiners_ || joiners_->door().flush(timeoutSeconds);
   for (Route& r : routes_) all = r.net->flush(timeoutSeconds) && all;
   return all;
 }
@@ -259,7 +237,7 @@ Incoming MpiLink::poll(double deadline) {
     if (master_ && acceptSource_) {
       while (std::optional<MPI_Comm> inter = acceptSource_()) adopt(*inter, welcome_);
     }
-    if (master_ && door_ != nullptr) {
+    if (master_ && joiners_) {
       if (std::optional<Incoming> fromDoor = pollDoor()) return *fromDoor;
     }
     if (!pendingJoins_.empty()) {
@@ -319,33 +297,15 @@ Incoming MpiLink::poll(double deadline) {
   }
 }
 
+// Master: a TCP joiner is numbered after every worker adopted so far and announced in turn,
+// after the MPI joiners still to be announced.
 std::optional<Incoming> MpiLink::pollDoor() {
-  while (std::optional<TcpDoor::Event> e = door_->poll()) {
-    Incoming in;
-    if (e->kind == TcpDoor::Event::Kind::Joined) {
-      const int endpoint = endpoints_++;
-      PRT_CHECK(e->joiner == static_cast<int>(joinerEndpoints_.size()));
-      joinerEndpoints_.push_back(endpoint);
-      door_->send(e->joiner, kWelcomeTag, withHeader(endpoint, 0, welcome_));
-      pendingJoins_.push_back(endpoint);
-      continue;
-    }
-    in.from = joinerEndpoints_[static_cast<size_t>(e->joiner)];
-    if (e->kind == TcpDoor::Event::Kind::Closed) {
-      in.kind = Incoming::Kind::PeerLost;
-      return in;
-    }
-    if (e->tag == kRelayTag) {
-      relay(in.from, e->bytes);
-      continue;
-    }
-    if (e->tag != kMessageTag && e->tag != kSummaryTag) continue;  // not ours: dropped
-    in.kind = Incoming::Kind::Packet;
-    in.channel = e->tag == kSummaryTag ? Channel::Summary : Channel::Protocol;
-    in.bytes = std::move(e->bytes);
-    return in;
+  for (;;) {
+    std::optional<Incoming> in = joiners_->poll([this] { return endpoints_++; },
+                                                [this](int from, const Bytes& bytes) { relay(from, bytes); });
+    if (!in || in->kind != Incoming::Kind::PeerJoined) return in;
+    pendingJoins_.push_back(in->from);
   }
-  return std::nullopt;
 }
 
 std::optional<int32_t> MpiLink::awaitRelease(double deadline) {

@@ -21,7 +21,7 @@
 #include "cluster/messages.h"
 #include "drive/transport.h"
 #include "net/link_tags.h"
-#include "net/tcp_door.h"
+#include "net/tcp_joiners.h"
 
 namespace prt::mpi_detail {
 
@@ -122,9 +122,9 @@ class MpiLink final : public Transport {
   int endpointCount() const { return endpoints_; }
   // Master: workers that join over TCP come through `door` (net/tcp_door.h), numbered with
   // the others in arrival order; each gets the welcome and is reported as PeerJoined.
-  void setTcpDoor(TcpDoor* door) { door_ = door; }
+  void setTcpDoor(TcpDoor& door, Bytes welcome) { joiners_.emplace(door, std::move(welcome)); }
   // Master: the endpoints of the workers that joined over TCP.
-  std::vector<int> tcpJoiners() const { return joinerEndpoints_; }
+  std::vector<int> tcpJoiners() const { return joiners_ ? joiners_->endpoints() : std::vector<int>{}; }
   // Master: sends `bytes` with a tag of its own (a release) to worker `endpoint`.
   void sendTagged(int endpoint, int tag, Bytes bytes);
 
@@ -138,8 +138,6 @@ class MpiLink final : public Transport {
   };
   Route* routeOf(int endpoint, int& rank);
   void relay(int from, const Bytes& bytes);
-  // Master: the door's joiner for `endpoint`, or -1 when it is not one.
-  int tcpJoinerOf(int endpoint) const;
   // Master: takes what the TCP door has; an Incoming to return, if one came.
   std::optional<Incoming> pollDoor();
 
@@ -153,8 +151,7 @@ class MpiLink final : public Transport {
   std::optional<int32_t> release_;
   std::string wakePort_;
   int endpoints_ = 0;  // master: endpoints numbered so far
-  TcpDoor* door_ = nullptr;
-  std::vector<int> joinerEndpoints_;  // per TCP joiner of the door: its endpoint
+  std::optional<TcpJoiners> joiners_;  // master: those that joined through the TCP door
   size_t nextRoute_ = 0;  // round robin over the routes' polls
   double start_;
 };

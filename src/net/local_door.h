@@ -15,14 +15,17 @@
 #include "drive/parallel_options.h"
 #include "drive/transport.h"
 #include "net/tcp_door.h"
+#include "net/tcp_joiners.h"
 
 namespace prt {
 
 class LocalDoorTransport final : public Transport {
  public:
-  // `door` is owned; `welcome` is encodeWelcome(the run's options).
+  // `door` is owned; `welcome` is encodeWelcome(the run's options). When it goes (the run is
+  // over), `portFile` is removed and `refused` gets why each turned-away joiner was.
   LocalDoorTransport(Transport& master, LocalNetwork& network, std::unique_ptr<TcpDoor> door,
-                     Bytes welcome);
+                     Bytes welcome, std::string portFile,
+                     std::shared_ptr<std::vector<std::string>> refused);
   ~LocalDoorTransport() override;
 
   void send(int to, Channel channel, Bytes bytes) override;
@@ -30,17 +33,16 @@ class LocalDoorTransport final : public Transport {
   double now() const override { return master_.now(); }
   bool sharedClock() const override { return false; }  // the joiners' clocks are their own
   bool flush(double timeoutSeconds) override;
-  TcpDoor& door() { return *door_; }
 
  private:
-  int joinerOf(int endpoint) const;
   void relayFromJoiner(int from, const Bytes& bytes);
 
   Transport& master_;
   LocalNetwork& network_;
   std::unique_ptr<TcpDoor> door_;
-  Bytes welcome_;
-  std::vector<int> endpoints_;  // per joiner of the door: its endpoint
+  TcpJoiners joiners_;
+  std::string portFile_;
+  std::shared_ptr<std::vector<std::string>> refused_;
 };
 
 // The door of a local render's --accept-workers FILE: listens, writes FILE (private to its
