@@ -15,7 +15,7 @@ if [ $# -gt 0 ] && [ "$1" != "--" ]; then
 fi
 if [ "${1:-}" = "--" ]; then shift; fi
 [ -x build/prt ] || bash scripts/build.sh release
-for name in table3 speed-index initial-percent compare scale; do
+for name in table3 speed-index initial-percent compare scale faults; do
   echo "== prt experiment $name --out $out $*"
   build/prt experiment "$name" --out "$out" "$@" >/dev/null
 done

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <map>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -114,6 +115,56 @@ TEST_F(ExperimentCliTest, Joins) {
   EXPECT_NE(md.find("schedule's ideal"), std::string::npos) << md;
   const Result bad = quick("joins", "--slowdown 4");
   EXPECT_EQ(bad.exitCode, 2) << "one worker cannot be joined: " << bad.output;
+}
+
+// The CSV's rows as column -> value maps.
+std::vector<std::map<std::string, std::string>> csvRows(const std::string& text) {
+  std::istringstream in(text);
+  std::string line;
+  auto split = [](const std::string& l) {
+    std::vector<std::string> cells;
+    std::istringstream cellsIn(l);
+    for (std::string cell; std::getline(cellsIn, cell, ',');) cells.push_back(cell);
+    return cells;
+  };
+  std::getline(in, line);
+  const std::vector<std::string> names = split(line);
+  std::vector<std::map<std::string, std::string>> rows;
+  while (std::getline(in, line)) {
+    const std::vector<std::string> cells = split(line);
+    std::map<std::string, std::string> row;
+    for (size_t i = 0; i < names.size() && i < cells.size(); ++i) row[names[i]] = cells[i];
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+TEST_F(ExperimentCliTest, Faults) {
+  const Result r = quick("faults");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_EQ(rows("faults.csv"), 2 * 4 * 3);  // MTBF (none, 1 h) x strategies x leases
+  std::map<std::string, double> adaptive;    // "MTBF/lease" -> elapsed
+  for (const auto& row : csvRows(readWholeFile(dir_ / "out" / "faults.csv"))) {
+    EXPECT_EQ(row.at("source"), "simulated");
+    const bool failing = row.at("mtbf_h") != "0";
+    EXPECT_EQ(std::stod(row.at("lost_workers")) > 0, failing) << row.at("strategy");
+    EXPECT_EQ(std::stod(row.at("reissued_tasks")) > 0, failing) << row.at("strategy");
+    // No strategy beats the ideal: the work balanced over the machines while they were there.
+    EXPECT_GE(std::stod(row.at("elapsed_over_ideal")), 1.0) << row.at("strategy");
+    if (row.at("strategy") == "adaptive") {
+      adaptive[row.at("mtbf_h") + "/" + row.at("lease_s")] = std::stod(row.at("elapsed_s"));
+    }
+  }
+  // Failures cost time, and waiting longer for a machine that is gone costs more.
+  EXPECT_GT(adaptive.at("1/2"), adaptive.at("0/2"));
+  EXPECT_GT(adaptive.at("1/60"), adaptive.at("1/2"));
+  EXPECT_NEAR(adaptive.at("0/60"), adaptive.at("0/2"), 0.01 * adaptive.at("0/2"))
+      << "without failures the lease costs only heartbeats";
+  expectChart("faults-time-mtbf-none.png");
+  expectChart("faults-time-mtbf-1h.png");
+  expectChart("faults-cost.png");
+  const std::string md = readWholeFile(dir_ / "out" / "faults.md");
+  EXPECT_NE(md.find("What lease to choose"), std::string::npos) << md;
 }
 
 TEST_F(ExperimentCliTest, BadInputIsExitCodeTwoAndWritesNothing) {

@@ -128,6 +128,69 @@ TEST(SimValidationFaultTest, AFailedWorkerIsLostAsInARealRun) {
   }
 }
 
+// A worker that joins mid-render, and a fast worker that hangs near the end of its share, so
+// its loss falls in the run's last stretch, with and without endgame copies: the same worker
+// lost, tasks reissued (a hang's unfinished tasks; none are lost in the join run), the joiner
+// rendering in both, and the elapsed times within 15 %.
+TEST(SimValidationFaultTest, AJoinAndALossInTheEndgameAsInARealRun) {
+  Scene scene = loadSceneFile(PRT_SOURCE_DIR "/scenes/complex.scene");
+  scene.image.width = 144;
+  scene.image.height = 108;
+  const SerialMeasurement serial = measureSerial(scene, *paperTestCase("A"), 1, true);
+  struct Case {
+    const char* name;
+    bool join;
+    bool endgame;
+  };
+  for (const Case& k : {Case{"join", true, false}, Case{"endgame loss", false, false},
+                        Case{"endgame loss, --endgame", false, true}}) {
+    for (const std::string strategy : {"adaptive", "stealing"}) {
+      ParallelOptions options = parallelOptions(strategy, {8, 8, 16, 16});
+      options.batchPixels = 64;
+      options.speedIndexDiscs = 20;
+      options.speedIndexKind = SpeedIndexKind::Hanoi;
+      options.workerTimeoutSeconds = 1.0;
+      options.batchSeconds = 0;
+      options.endgame = k.endgame;
+      if (k.join) {
+        // A fifth worker, as fast as the fastest, joins a third of the way in (the run takes
+        // about serial * 8 / 3 / 1.25 seconds without it).
+        options.slowdowns.push_back(8);
+        options.joins = {JoinWave{serial.medianSeconds * 8 / 3 / 1.25 / 3, 1}};
+      } else {
+        // Worker 0 renders about a third of the image (its speed over the total, 1/8 of 3/8);
+        // it hangs once it has done nine tenths of that.
+        options.faults = {FaultInjection{0, 4600, FaultInjection::Kind::Hang}};
+      }
+      Comparison best;
+      for (int attempt = 0; attempt < 8 && best.error > 0.15; ++attempt) {
+        Comparison c = compare(scene, serial, options);
+        for (const RunReport* r : {&c.real, &c.simulated}) {
+          const char* which = r == &c.real ? "real" : "simulated";
+          const auto& lost = r->info.faults.lostWorkers;
+          if (k.join) {
+            EXPECT_TRUE(lost.empty()) << strategy << ", " << k.name << ", " << which;
+            ASSERT_EQ(r->workers.size(), 5u) << strategy << ", " << which;
+            EXPECT_GT(r->workers[4].pixels, 0u) << strategy << ", " << which << ": the joiner";
+          } else {
+            ASSERT_EQ(lost.size(), 1u) << strategy << ", " << k.name << ", " << which;
+            EXPECT_EQ(lost[0].worker, 0) << strategy << ", " << k.name << ", " << which;
+            EXPECT_GT(r->info.faults.reissuedTasks, 0u) << strategy << ", " << which;
+          }
+        }
+        if (c.error < best.error) best = std::move(c);
+      }
+      const double real = best.real.elapsedSeconds, simulated = best.simulated.elapsedSeconds;
+      EXPECT_LT(best.error, 0.15) << strategy << ", " << k.name << ": real " << real
+                                  << " s, simulated " << simulated << " s";
+      std::printf("%s, %s: real %.3f s, simulated %.3f s; reissued %llu real, %llu simulated\n",
+                  strategy.c_str(), k.name, real, simulated,
+                  static_cast<unsigned long long>(best.real.info.faults.reissuedTasks),
+                  static_cast<unsigned long long>(best.simulated.info.faults.reissuedTasks));
+    }
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(AllStrategies, SimValidationTest, ::testing::ValuesIn(strategyNames()),
                          [](const auto& param) {
                            std::string name = param.param;

@@ -1,6 +1,7 @@
 #include "balance/adaptive_reservoir.h"
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 
 #include "balance/interleaved_order.h"
@@ -68,6 +69,7 @@ void AdaptiveReservoirStrategy::onWorkerChanged(int worker) {
   if (!workers().isLive(worker)) {
     measured_.erase(worker);
     unmeasured_.erase(worker);
+    setFactor(w, NAN);
     return;
   }
   const uint64_t held = throughput().held(worker);
@@ -83,18 +85,29 @@ void AdaptiveReservoirStrategy::onWorkerChanged(int worker) {
     const double r = throughput().rate(worker);
     if (r > 0) {
       measured_.set(worker, {h / r, r, h, r * index, eligible});
+      setFactor(w, r * index);
     } else {
       measured_.erase(worker);
+      setFactor(w, NAN);
     }
   } else {
     measured_.erase(worker);
+    setFactor(w, NAN);
     unmeasured_.set(worker, {h * index, 1 / index, h, 0, eligible});
   }
 }
 
 double AdaptiveReservoirStrategy::unmeasuredFactor() const {
-  const FinishOrder::Sums m = measured_.total();
-  return m.count == 0 ? 0 : m.c / m.count;
+  return factors_.empty() ? 0 : *factors_.begin();
+}
+
+void AdaptiveReservoirStrategy::setFactor(size_t w, double factor) {
+  if (w >= factorOf_.size()) factorOf_.resize(w + 1, NAN);
+  double& mine = factorOf_[w];
+  if (mine == factor) return;
+  if (!std::isnan(mine)) factors_.erase(factors_.find(mine));
+  mine = factor;
+  if (!std::isnan(factor)) factors_.insert(factor);
 }
 
 double AdaptiveReservoirStrategy::rateOf(int worker) const {

@@ -8,8 +8,12 @@
 //    needed: run with --speed-index none and it starts with the scene.
 //  - Learning: each worker's rate is its tasks per second over its recent results
 //    (throughput.h); a worker not measured yet (at the start, or just joined) is assumed to
-//    run as the measured ones do per unit of speed index: the mean of their rate x speed
-//    index, over its own index (the mean measured rate when the indices are equal).
+//    run as the slowest measured one does per unit of speed index: the least of their
+//    rate x speed index, over its own index (the slowest measured rate when the indices are
+//    equal). Pessimism is the cheap error: a newcomer assumed too slow asks again soon, one
+//    assumed too fast (the mean, as this once was) takes a share it finishes long after the
+//    others near the end — a slow machine that rejoined in the last minutes of an hour's job
+//    on 1,024 workers held it up by 100 s in the simulator (prt experiment faults).
 //    The pool is in interleaved order (interleaved_order.h), so every hand-out samples the
 //    whole image and rates measured on one hand-out hold for the next.
 //  - Sizing, so that all finish together: a request from worker w finds the common finishing
@@ -43,6 +47,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -72,9 +77,10 @@ class AdaptiveReservoirStrategy final : public PooledStrategy {
   void onWorkerChanged(int worker) override;
 
  private:
-  // The factor K of the unmeasured workers' rates K / index_i: the mean over the measured of
+  // The factor K of the unmeasured workers' rates K / index_i: the least over the measured of
   // rate x speed index. 0 when nothing is measured yet (then every rate is 0).
   double unmeasuredFactor() const;
+  void setFactor(size_t worker, double factor);  // NaN: none
   // Worker's rate as the sizing uses it (measured, or K / index); 0 for lost workers.
   double rateOf(int worker) const;
   // The common finishing time T for `remaining` tasks in the pool (commonFinishSeconds()).
@@ -82,6 +88,8 @@ class AdaptiveReservoirStrategy final : public PooledStrategy {
 
   FinishOrder measured_;    // key h / r; a = r, b = h, c = r x index
   FinishOrder unmeasured_;  // key h x index; a = 1 / index, b = h
+  std::multiset<double> factors_;  // r x index of each measured worker (K is the least)
+  std::vector<double> factorOf_;   // per worker: its entry in factors_, NaN if none
   std::vector<uint64_t> held_;  // what each live worker holds, as indexed
   uint64_t heldSum_ = 0;        // over the live workers
 

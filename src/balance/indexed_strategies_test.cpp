@@ -86,19 +86,20 @@ class WalkingAdaptive final : public PooledStrategy {
   std::vector<double> rates() const {
     std::vector<double> out(static_cast<size_t>(workers().workerCount()), 0.0);
     const std::vector<double>& index = speedIndexSeconds();
-    double rateTimesIndex = 0;
+    double least = 0;  // of rate x index over the measured: the unmeasured are that slow
     int measured = 0;
     for (int w : workers().liveList()) {
-      if (throughput().measured(w)) {
+      if (throughput().measured(w) && throughput().rate(w) > 0) {
         out[static_cast<size_t>(w)] = throughput().rate(w);
-        rateTimesIndex += out[static_cast<size_t>(w)] * index[static_cast<size_t>(w)];
+        const double factor = out[static_cast<size_t>(w)] * index[static_cast<size_t>(w)];
+        least = measured == 0 ? factor : std::min(least, factor);
         ++measured;
       }
     }
     if (measured == 0) return out;
     for (int w : workers().liveList()) {
       if (!throughput().measured(w)) {
-        out[static_cast<size_t>(w)] = rateTimesIndex / measured / index[static_cast<size_t>(w)];
+        out[static_cast<size_t>(w)] = least / index[static_cast<size_t>(w)];
       }
     }
     return out;

@@ -41,7 +41,8 @@ Action addExperimentCommand(CLI::App& app, const std::string& commandLine) {
                   "while the sum of 1/k_i fits the free cores)")
       ->delimiter(',');
   cmd->add_option("--strategies", o->experiment.strategies,
-                  "compare, scale: the strategies (default: all)")
+                  "compare, scale, joins, faults: the strategies (default: all; faults: adaptive, "
+                  "reservoir-scatter, hybrid, stealing)")
       ->delimiter(',');
   cmd->add_option("--cases", o->experiment.cases,
                   "table3, compare: the test cases (default A,B,C,D; compare --quick: A,C)")
@@ -50,8 +51,8 @@ Action addExperimentCommand(CLI::App& app, const std::string& commandLine) {
                   "speed-index (default A), initial-percent (default C), scale (default A): "
                   "the test case");
   cmd->add_option("--serial-seconds", o->experiment.serialSeconds,
-                  "scale: the serial work the cost map is scaled to, seconds (default 3600; "
-                  "quick 60)");
+                  "scale, faults: the serial work the cost map is scaled to, seconds (scale: "
+                  "3600, quick 60; faults: an hour of balanced job time, quick ten minutes)");
   cmd->add_flag("-q,--quiet", o->experiment.quiet, "No progress lines");
   return [o, commandLine] {
     o->experiment.commandLine = commandLine;

@@ -221,7 +221,7 @@ TaskSet Ledger::markLost(int worker, double now, const std::string& reason) {
   --liveCount_;
   TaskSet left = unfinished(worker);
   reissued_ += left.size();
-  losses_.push_back(LostWorker{worker, now, reason, left.size()});
+  losses_.push_back(LostWorker{worker, now, reason, left.size(), workers_[index(worker)].lastHeard});
   return left;
 }
 

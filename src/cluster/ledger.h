@@ -27,6 +27,7 @@ struct LostWorker {
   double atSeconds = 0;     // when the master declared it lost
   std::string reason;       // "connection dropped", "silent for 5.0 s", ...
   uint64_t unfinished = 0;  // tasks it held that were not done, handed back for reissue
+  double lastHeardSeconds = 0;  // when the master last heard from it (heartbeats count)
 };
 
 class Ledger {

@@ -287,7 +287,8 @@ ParallelRun runMasterSide(Transport& net, const RunRequest& request, const std::
     info.rays += summary->rays;
   }
   for (const LostWorker& l : ledger.losses()) {
-    info.faults.lostWorkers.push_back({l.worker, l.atSeconds, l.reason, l.unfinished});
+    info.faults.lostWorkers.push_back(
+        {l.worker, l.atSeconds, l.reason, l.unfinished, l.lastHeardSeconds});
   }
   for (const RejectedWorker& r : master.rejections()) {
     info.faults.rejectedWorkers.push_back(

@@ -6,6 +6,7 @@
 #include <ctime>
 #include <filesystem>
 
+#include "balance/registry.h"
 #include "balance/strategy.h"
 #include "core/input_error.h"
 #include "core/machine.h"
@@ -35,6 +36,8 @@ constexpr Entry kExperiments[] = {
     {"scale", "Scaling from 4 to 1,024 simulated workers", runScale},
     {"joins", "Machines that join mid-render: every strategy against the schedule's ideal",
      runJoins},
+    {"faults", "Machines that fail in a large farm: job time against the lease and the MTBF",
+     runFaults},
 };
 
 const Entry& find(const std::string& name) {
@@ -78,7 +81,7 @@ void validate(const ExperimentOptions& o) {
   if (o.serialSeconds && !(*o.serialSeconds > 0 && std::isfinite(*o.serialSeconds))) {
     throw InputError("--serial-seconds must be positive");
   }
-  for (const std::string& s : o.strategies) makeStrategy(s, {});  // lists the valid names
+  for (const std::string& s : o.strategies) strategyRow(s);  // InputError listing the valid names
   for (const std::string& c : o.cases) testCaseSettings(c);
   if (!o.testCase.empty()) testCaseSettings(o.testCase);
   if (!std::filesystem::exists(o.scenePath)) {

@@ -11,6 +11,8 @@
 //                   claim about static schemes checked                             simulated
 //   joins           one slow worker starts, faster ones join later: every strategy
 //                   against the ideal for that schedule (beyond the paper)         real + simulated
+//   faults          1,024 workers whose machines fail (MTBF) and come back: job
+//                   time against the lease, every strategy beside the ideal        simulated
 // Each writes CSV files (the source of truth; a `source` column says real or simulated),
 // charts drawn by gnuplot from scripts kept beside them, and NAME.md, a summary saying what
 // ran, on what, and which numbers are real runs and which simulated.
@@ -37,7 +39,8 @@ struct ExperimentOptions {
   std::vector<std::string> strategies;  // compare, scale; empty: every strategy
   std::vector<std::string> cases;       // table3, compare; empty: A-D (quick: A, C)
   std::string testCase;                 // speed-index (default A), initial-percent (C)
-  std::optional<double> serialSeconds;  // scale: the simulated serial time (default 3600 s)
+  std::optional<double> serialSeconds;  // scale: the simulated serial time (default 3600 s);
+                                        // faults: default an hour of balanced job time
   bool quiet = false;                   // no progress lines on stderr
   std::string commandLine;              // recorded in the summary
 };

@@ -9,7 +9,8 @@ namespace {
 
 TEST(Experiment, NamesAreThePapersExperiments) {
   EXPECT_EQ(experimentNames(), (std::vector<std::string>{"table3", "speed-index", "initial-percent",
-                                                         "compare", "scale", "joins"}));
+                                                         "compare", "scale", "joins",
+                                                         "faults"}));
 }
 
 TEST(Experiment, UnknownNameListsTheValidOnes) {

@@ -12,5 +12,6 @@ void runInitialPercent(ExperimentContext& cx);  // initial_percent.cpp
 void runCompare(ExperimentContext& cx);         // compare.cpp
 void runScale(ExperimentContext& cx);           // scale.cpp
 void runJoins(ExperimentContext& cx);           // joins.cpp
+void runFaults(ExperimentContext& cx);          // faults.cpp
 
 }  // namespace prt

@@ -104,6 +104,7 @@ RunReport runSimulated(const CostMap& costs, const ParallelOptions& options,
   sim.leaseSeconds = options.workerTimeoutSeconds;
   sim.heartbeatSeconds = heartbeatSecondsFor(options.workerTimeoutSeconds);
   sim.faults = options.faults;
+  sim.endgame = options.endgame;
   return simulate(costs, sim).report;
 }
 
@@ -115,11 +116,7 @@ double median(std::vector<double> values) {
 }
 
 RunSummary medianSummary(const std::vector<RunReport>& reports) {
-  auto of = [&](auto field) {
-    std::vector<double> v;
-    for (const RunReport& r : reports) v.push_back(field(r));
-    return median(v);
-  };
+  auto of = [&](auto field) { return medianOf(reports, field); };
   RunSummary s;
   s.elapsedSeconds = of([](const RunReport& r) { return r.elapsedSeconds; });
   s.speedup = of([](const RunReport& r) { return r.speedup.value_or(0.0); });

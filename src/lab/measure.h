@@ -6,6 +6,7 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "drive/parallel_options.h"
@@ -75,6 +76,14 @@ struct RunSummary {
 RunSummary medianSummary(const std::vector<RunReport>& reports);
 
 double median(std::vector<double> values);
+// The median over `reports` of field(report) (a double).
+template <typename Field>
+double medianOf(const std::vector<RunReport>& reports, Field field) {
+  std::vector<double> values;
+  values.reserve(reports.size());
+  for (const RunReport& r : reports) values.push_back(field(r));
+  return median(std::move(values));
+}
 
 // A CSV header and row: the leading columns `head`, then a RunSummary's, in this order:
 // elapsed_s, speedup, efficiency, masu, asu, messages, bytes.

@@ -1,6 +1,7 @@
 #include "metrics/run_report.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <nlohmann/json.hpp>
 
@@ -15,28 +16,40 @@ double maximumAchievableSpeedup(double serialSpeedIndex, const std::vector<doubl
 }
 
 std::optional<double> balancedFinishSeconds(const std::vector<double>& rates,
-                                            const std::vector<double>& arrivals, double pixels) {
-  // Water filling over the arrivals in time order: between two arrivals the workers present
-  // render at their summed rate.
-  std::vector<size_t> order;
+                                            const std::vector<double>& arrivals, double pixels,
+                                            const std::vector<double>& departures) {
+  // Water filling over the arrivals and departures in time order: between two of them the
+  // workers present render at their summed rate.
+  struct Step {
+    double at;
+    double rate;  // added (an arrival) or taken away (a departure)
+  };
+  std::vector<Step> steps;
   for (size_t i = 0; i < rates.size(); ++i) {
-    if (rates[i] > 0) order.push_back(i);
+    if (!(rates[i] > 0)) continue;
+    const double from = arrivals[i];
+    const double to = i < departures.size() ? departures[i] : HUGE_VAL;
+    if (!(to > from)) continue;
+    steps.push_back({from, rates[i]});
+    if (to < HUGE_VAL) steps.push_back({to, -rates[i]});
   }
-  if (order.empty()) return std::nullopt;
-  std::stable_sort(order.begin(), order.end(),
-                   [&](size_t a, size_t b) { return arrivals[a] < arrivals[b]; });
+  if (steps.empty()) return std::nullopt;
+  std::stable_sort(steps.begin(), steps.end(),
+                   [](const Step& a, const Step& b) { return a.at < b.at; });
   double rate = 0;
   double left = pixels;
-  double t = arrivals[order.front()];
-  for (size_t k = 0; k < order.size(); ++k) {
-    rate += rates[order[k]];
-    const double next = k + 1 < order.size() ? arrivals[order[k + 1]] : t;
-    const double canDo = rate * (next - t);
-    if (k + 1 == order.size() || canDo >= left) return t + left / rate;
-    left -= canDo;
-    t = next;
+  double t = steps.front().at;
+  for (size_t k = 0; k < steps.size(); ++k) {
+    rate += steps[k].rate;
+    if (rate < 1e-12 * std::abs(steps[k].rate)) rate = 0;  // every one present has left
+    t = steps[k].at;
+    const double next = k + 1 < steps.size() ? steps[k + 1].at : HUGE_VAL;
+    if (rate > 0) {
+      if (next == HUGE_VAL || rate * (next - t) >= left) return t + left / rate;
+      left -= rate * (next - t);
+    }
   }
-  return t;
+  return std::nullopt;  // every worker left before the work was done
 }
 
 RunReport makeReport(const RunInfo& info, const std::vector<Event>& events,
@@ -114,19 +127,32 @@ RunReport makeReport(const RunInfo& info, const std::vector<Event>& events,
     WorkerReport& wr = r.workers[w];
     if (wr.pixels == 0 && wr.busySeconds == 0) wr.pixels = info.acceptedPixels[w];
   }
+  // Each worker is part of the run from its arrival until the end, or until it was last heard
+  // from before it was lost (what the lease waited for is not its time).
+  std::vector<double> departures(r.workers.size(), elapsedSeconds);
+  for (const LostWorkerInfo& l : info.faults.lostWorkers) {
+    if (l.worker >= 0 && static_cast<size_t>(l.worker) < departures.size()) {
+      departures[static_cast<size_t>(l.worker)] =
+          std::clamp(std::min(l.lastHeardSeconds, l.atSeconds), 0.0, elapsedSeconds);
+    }
+  }
   double busy = 0;
   double present = 0;
   std::vector<double> arrivals;
-  for (WorkerReport& wr : r.workers) {
+  for (size_t w = 0; w < r.workers.size(); ++w) {
+    WorkerReport& wr = r.workers[w];
     const double from = std::clamp(wr.joinedAtSeconds.value_or(0.0), 0.0, elapsedSeconds);
-    wr.idleSeconds = std::max(0.0, elapsedSeconds - from - wr.busySeconds);
+    const double to = std::max(from, departures[w]);
+    wr.idleSeconds = std::max(0.0, to - from - wr.busySeconds);
     busy += wr.busySeconds;
-    present += elapsedSeconds - from;
+    present += to - from;
     arrivals.push_back(from);
+    if (departures[w] >= elapsedSeconds) departures[w] = HUGE_VAL;  // present to the end
   }
   r.efficiency = present > 0 ? busy / present : 0;
   // The ideal: each worker's relative speed, the work done in speed-weighted busy seconds,
-  // and that work perfectly balanced over the workers from their arrivals.
+  // and that work perfectly balanced over the workers while they were part of the run (from
+  // their arrivals until last heard from, for those lost).
   const bool emulated = std::any_of(r.workers.begin(), r.workers.end(),
                                     [](const WorkerReport& w) { return w.slowdown != 1.0; });
   std::vector<double> speeds;
@@ -144,7 +170,7 @@ RunReport makeReport(const RunInfo& info, const std::vector<Event>& events,
     work += emulated || info.speedIndexRun ? wr.busySeconds * speed : static_cast<double>(wr.pixels);
   }
   r.idealBasis = emulated ? "slowdown" : info.speedIndexRun ? "speed_index" : "measured_throughput";
-  if (work > 0) r.idealSeconds = balancedFinishSeconds(speeds, arrivals, work);
+  if (work > 0) r.idealSeconds = balancedFinishSeconds(speeds, arrivals, work, departures);
   if (info.speedIndexRun) {
     r.speedIndexMasu =
         maximumAchievableSpeedup(info.masterSpeedIndexSeconds, info.workerSpeedIndexSeconds);
@@ -236,7 +262,8 @@ std::string RunReport::toJson() const {
     lost.push_back({{"worker", l.worker},
                     {"at_s", l.atSeconds},
                     {"reason", l.reason},
-                    {"unfinished_tasks", l.unfinished}});
+                    {"unfinished_tasks", l.unfinished},
+                    {"last_heard_s", l.lastHeardSeconds}});
   }
   j["lost_workers"] = lost;
   json rejected = json::array();

@@ -61,6 +61,9 @@ struct LostWorkerInfo {
   double atSeconds = 0;     // on the master's clock
   std::string reason;       // "connection dropped", "silent for 5.0 s", ...
   uint64_t unfinished = 0;  // tasks it held, not done, handed back for reissue
+  // When the master last heard from it (heartbeats count): the end of its part in the run.
+  // The simulator gives the same, from the heartbeats it models.
+  double lastHeardSeconds = 0;
 };
 
 // A worker whose results were found wrong (a failed spot check, a message that cannot be
@@ -163,10 +166,13 @@ struct RunReport {
 // `elapsedSeconds` is the master's wall time from sending the scene to writing the image.
 RunReport makeReport(const RunInfo& info, const std::vector<Event>& events, double elapsedSeconds);
 
-// The T at which workers of `rates` (pixels per second, 0: absent) arriving at `arrivals`
-// (seconds) render `pixels` between them when perfectly balanced; none without any rate.
+// The T at which workers of `rates` (pixels per second, 0: absent) present from `arrivals`
+// until `departures` (seconds; a shorter list, or infinity: to the end) render `pixels`
+// between them when perfectly balanced; none without any rate, or when every worker has left
+// before the work is done.
 std::optional<double> balancedFinishSeconds(const std::vector<double>& rates,
-                                            const std::vector<double>& arrivals, double pixels);
+                                            const std::vector<double>& arrivals, double pixels,
+                                            const std::vector<double>& departures = {});
 
 // Maximum achievable speed-up: sum of speedIndexSerial / speedIndex_i.
 double maximumAchievableSpeedup(double serialSpeedIndex, const std::vector<double>& speedIndices);

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <nlohmann/json.hpp>
 
 #include "metrics/chrome_trace.h"
@@ -107,12 +109,35 @@ TEST(RunReportTest, ALostWorkersPixelsAreThoseTheMasterAccepted) {
   EXPECT_EQ(r.workers[1].pixels, 30u);   // its events never came
 }
 
+TEST(RunReportTest, ALostWorkerIsPartOfTheRunUntilItsLossForEfficiencyAndTheIdeal) {
+  // Worker 0 (speed 1) computes 0-4 s; worker 1 (speed 1/2) computes 0-1 s, is last heard from
+  // at 2 s and lost at 3 s.
+  RunInfo info = twoWorkers();
+  info.faults.lostWorkers.push_back({1, 3.0, "silent for 1.0 s", 0, 2.0});
+  std::vector<Event> events;
+  events.push_back({EventKind::Compute, 0, 0.0, 4.0, 100, 0, 0, ""});
+  events.push_back({EventKind::Compute, 1, 0.0, 1.0, 10, 0, 0, ""});
+  const RunReport r = makeReport(info, events, 4.0);
+  EXPECT_DOUBLE_EQ(r.workers[1].idleSeconds, 1.0);  // not 3: it was gone from 2 s
+  EXPECT_DOUBLE_EQ(r.efficiency, 5.0 / 6.0);
+  // Work: 4 + 1 * 0.5 = 4.5 full-speed seconds; 1.5 per second until 2 s, then 1.
+  ASSERT_TRUE(r.idealSeconds.has_value());
+  EXPECT_DOUBLE_EQ(*r.idealSeconds, 3.5);
+}
+
 TEST(RunReportTest, BalancedFinishWaterFillsOverArrivals) {
   // One worker at 10/s has done 50 pixels by 5 s, when one at 30/s joins: 40 more take 1 s.
   EXPECT_DOUBLE_EQ(*balancedFinishSeconds({10, 30}, {0, 5}, 90), 6.0);
   EXPECT_DOUBLE_EQ(*balancedFinishSeconds({10, 30}, {0, 5}, 40), 4.0);  // done before it came
   EXPECT_DOUBLE_EQ(*balancedFinishSeconds({10, 0}, {0, 0}, 40), 4.0);   // an absent worker
   EXPECT_FALSE(balancedFinishSeconds({0}, {0}, 40).has_value());
+  // Departures: the second worker leaves at 2 s, after rendering 60 pixels with the first.
+  EXPECT_DOUBLE_EQ(*balancedFinishSeconds({10, 20}, {0, 0}, 100, {HUGE_VAL, 2}), 6.0);
+  // Leaves and another comes: 10/s alone from 2 s to 4 s, then 40/s.
+  EXPECT_DOUBLE_EQ(*balancedFinishSeconds({10, 20, 30}, {0, 0, 4}, 120, {HUGE_VAL, 2, HUGE_VAL}),
+                   5.0);
+  // Everyone gone before the work is done.
+  EXPECT_FALSE(balancedFinishSeconds({10}, {0}, 100, {5}).has_value());
 }
 
 TEST(RunReportTest, JsonHasThePapersKeysAtTopLevel) {

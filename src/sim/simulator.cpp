@@ -41,6 +41,7 @@ struct SimWorker {
   bool dead = false;      // failed: it reads, computes and sends nothing more
   bool crashed = false;   // its connection dropped (rather than going silent)
   bool lost = false;      // the master has been told
+  double lastHeard = 0;   // failed: when the master last heard from it (heartbeats count)
   uint64_t rendered = 0;  // pixels rendered so far (for --inject-fault)
   std::optional<FaultInjection> fault;
   double workStart = 0;
@@ -213,6 +214,7 @@ class Simulation {
     load_.received += beats;
     heartbeatLoad(beats);
     const double lastHeard = lastWord + static_cast<double>(beats) * options_.heartbeatSeconds;
+    w.lastHeard = lastHeard + options_.network.latencySeconds;
     SimEvent lost;
     lost.time = crash ? now_ + options_.network.latencySeconds
                       : std::max(now_, lastHeard + options_.network.latencySeconds +
@@ -437,7 +439,8 @@ class Simulation {
     info.faults.heartbeatSeconds = options_.heartbeatSeconds;
     info.faults.workerTimeoutSeconds = options_.leaseSeconds;
     for (const LostWorker& l : master_.ledger().losses()) {
-      info.faults.lostWorkers.push_back({l.worker, l.atSeconds, l.reason, l.unfinished});
+      info.faults.lostWorkers.push_back({l.worker, l.atSeconds, l.reason, l.unfinished,
+                                         worker(l.worker).lastHeard});
     }
     info.faults.reissuedTasks = master_.ledger().reissuedTasks();
     closeSilences();

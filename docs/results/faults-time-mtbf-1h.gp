@@ -1,0 +1,56 @@
+# Drawn by prt experiment; run `gnuplot faults-time-mtbf-1h.gp` in this directory to redraw.
+set terminal pngcairo noenhanced size 960,600 font "sans,11"
+set output "faults-time-mtbf-1h.png"
+set title "Simulated job time against the lease, MTBF 1 h, 1024 workers"
+set xlabel "lease (--worker-timeout), s"
+set ylabel "job time, min"
+set grid ytics
+set key outside right top
+set datafile missing "NaN"
+set logscale x 2
+set yrange [0:*]
+$d0 << EOD
+1 71.9604091
+2 71.7670782
+5 72.3986247
+15 71.3264776
+60 71.7597168
+180 73.6779698
+EOD
+$d1 << EOD
+1 70.3061687
+2 70.2899965
+5 70.2932588
+15 70.3061068
+60 70.9058077
+180 74.6310772
+EOD
+$d2 << EOD
+1 111.072855
+2 112.816688
+5 113.087282
+15 112.22603
+60 114.008608
+180 115.258772
+EOD
+$d3 << EOD
+1 77.9819659
+2 78.4808098
+5 78.7122214
+15 78.4351564
+60 79.2469042
+180 80.0651751
+EOD
+$d4 << EOD
+1 69.2834411
+2 69.2851897
+5 69.291483
+15 69.3103933
+60 69.387861
+180 69.5869433
+EOD
+plot $d0 using 1:2 with linespoints linewidth 2 pointtype 5 linecolor rgb "#1f77b4" title "adaptive", \
+    $d1 using 1:2 with linespoints linewidth 2 pointtype 7 linecolor rgb "#d62728" title "reservoir-scatter", \
+    $d2 using 1:2 with linespoints linewidth 2 pointtype 9 linecolor rgb "#2ca02c" title "hybrid", \
+    $d3 using 1:2 with linespoints linewidth 2 pointtype 11 linecolor rgb "#9467bd" title "stealing", \
+    $d4 using 1:2 with linespoints linewidth 2 pointtype 5 linecolor rgb "#ff7f0e" dashtype 2 title "ideal"
