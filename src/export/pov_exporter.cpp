@@ -10,6 +10,7 @@
 #include <variant>
 
 #include "core/check.h"
+#include "core/overloaded.h"
 #include "trace/shapes.h"
 
 namespace prt {
@@ -353,24 +354,30 @@ class PovWriter {
   }
 
   void object(std::string& out, const Object& object) {
-    if (const auto* s = std::get_if<SphereShape>(&object.shape)) {
-      line(out, 0, "sphere {");
-      line(out, 1, vec(s->center) + ", " + num(s->radius));
-    } else if (const auto* b = std::get_if<BoxShape>(&object.shape)) {
-      line(out, 0, "box {");
-      line(out, 1, vec(b->min) + ", " + vec(b->max));
-    } else if (const auto* m = std::get_if<MeshShape>(&object.shape)) {
-      writeMesh(out, *m->mesh);
-    } else if (const auto* i = std::get_if<InstanceShape>(&object.shape)) {
-      return instance(out, *i, object.material);
-    } else {
-      const auto& p = std::get<PlaneShape>(object.shape);
-      const Vec3 n = normalize(p.normal);
-      // POV-Ray's plane is the solid half-space below it, visible from both sides; PRT's is
-      // visible, and casts shadows, only from the side its normal faces.
-      line(out, 0, "plane {  // through " + vec(p.point) + "; PRT's plane is one-sided");
-      line(out, 1, vec(n) + ", " + num(dot(p.point, n)));
+    if (const auto* i = std::get_if<InstanceShape>(&object.shape)) {
+      return instance(out, *i, object.material);  // writes its own material and braces
     }
+    std::visit(Overloaded{
+                   [&](const SphereShape& s) {
+                     line(out, 0, "sphere {");
+                     line(out, 1, vec(s.center) + ", " + num(s.radius));
+                   },
+                   [&](const BoxShape& b) {
+                     line(out, 0, "box {");
+                     line(out, 1, vec(b.min) + ", " + vec(b.max));
+                   },
+                   [&](const MeshShape& m) { writeMesh(out, *m.mesh); },
+                   [&](const PlaneShape& p) {
+                     const Vec3 n = normalize(p.normal);
+                     // POV-Ray's plane is the solid half-space below it, visible from both
+                     // sides; PRT's is visible, and casts shadows, only from the side its
+                     // normal faces.
+                     line(out, 0, "plane {  // through " + vec(p.point) + "; PRT's plane is one-sided");
+                     line(out, 1, vec(n) + ", " + num(dot(p.point, n)));
+                   },
+                   [](const InstanceShape&) {},  // above
+               },
+               object.shape);
     writeMaterial(out, object.material);
     line(out, 0, "}");
   }

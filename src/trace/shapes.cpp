@@ -1,5 +1,8 @@
 #include "trace/shapes.h"
 
+#include <variant>
+
+#include "core/overloaded.h"
 #include "trace/triangle.h"
 
 namespace prt {
@@ -103,19 +106,26 @@ Bounds placedBounds(const Bounds& box, const Transform& transform) {
 
 Bounds boundsOf(const Shape& shape) {
   Bounds b;
-  if (const auto* s = std::get_if<SphereShape>(&shape)) {
-    b.extend(s->center - Vec3(s->radius));
-    b.extend(s->center + Vec3(s->radius));
-  } else if (const auto* x = std::get_if<BoxShape>(&shape)) {
-    b.extend(x->min);
-    b.extend(x->max);
-  } else if (const auto* m = std::get_if<MeshShape>(&shape)) {
-    for (const auto& t : m->mesh->triangles) {
-      for (const uint32_t v : t) b.extend(m->mesh->vertices[v]);
-    }
-  } else if (const auto* i = std::get_if<InstanceShape>(&shape)) {
-    b = placedBounds(meshBounds(*i->mesh), i->worldFromMesh);
-  }
+  std::visit(Overloaded{
+                 [&](const SphereShape& s) {
+                   b.extend(s.center - Vec3(s.radius));
+                   b.extend(s.center + Vec3(s.radius));
+                 },
+                 [&](const BoxShape& x) {
+                   b.extend(x.min);
+                   b.extend(x.max);
+                 },
+                 [&](const MeshShape& m) {
+                   for (const auto& t : m.mesh->triangles) {
+                     for (const uint32_t v : t) b.extend(m.mesh->vertices[v]);
+                   }
+                 },
+                 [&](const InstanceShape& i) {
+                   b = placedBounds(meshBounds(*i.mesh), i.worldFromMesh);
+                 },
+                 [](const PlaneShape&) {},  // unbounded: the empty box
+             },
+             shape);
   return b;
 }
 

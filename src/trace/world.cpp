@@ -5,11 +5,13 @@
 #include <cmath>
 #include <limits>
 #include <utility>
+#include <variant>
 
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
 
+#include "core/overloaded.h"
 #include "trace/bvh.h"
 #include "trace/shapes.h"
 #include "trace/triangle.h"
@@ -113,28 +115,37 @@ World::World(Scene scene, const World* reuse) : scene_(std::move(scene)) {
   for (uint32_t i = 0; i < scene_.objects.size(); ++i) {
     const Object& o = scene_.objects[i];
     const double transmissivity = o.material.transmissivity;
-    if (const auto* s = std::get_if<SphereShape>(&o.shape)) {
-      items_.push_back({s->center, Vec3(s->radius, 1.0 / s->radius, 0), boundsOf(o.shape),
-                        transmissivity, i, Kind::sphere});
-    } else if (const auto* b = std::get_if<BoxShape>(&o.shape)) {
-      items_.push_back({b->min, b->max, boundsOf(o.shape), transmissivity, i, Kind::box});
-    } else if (const auto* m = std::get_if<MeshShape>(&o.shape)) {
-      const MeshBvh& mesh = treeFor(m->mesh, reuse);
-      items_.push_back({Vec3(), Vec3(), mesh.bounds(), transmissivity, i, Kind::mesh, &mesh});
-    } else if (const auto* instance = std::get_if<InstanceShape>(&o.shape)) {
-      const MeshBvh& mesh = treeFor(instance->mesh, reuse);
-      ++meshStats_.instances;
-      placements_.push_back(std::make_unique<Transform>(instance->worldFromMesh.inverse()));
-      const Bounds box = placedBounds(mesh.bounds(), instance->worldFromMesh);
-      // Tested before a ray is carried into the mesh's coordinates; widened far beyond the
-      // rounding of the placement, so that it never turns away a ray the mesh's tree meets.
-      const Bounds reach = box.widened(1e-9 * std::max(1.0, box.largestMagnitude()));
-      items_.push_back({reach.lo, reach.hi, box, transmissivity, i, Kind::mesh, &mesh,
-                        placements_.back().get()});
-    } else {
-      const auto& p = std::get<PlaneShape>(o.shape);
-      planes_.push_back({p.point, p.normal, transmissivity, i});
-    }
+    std::visit(
+        Overloaded{
+            [&](const SphereShape& s) {
+              items_.push_back({s.center, Vec3(s.radius, 1.0 / s.radius, 0), boundsOf(o.shape),
+                                transmissivity, i, itemKind<SphereItem>()});
+            },
+            [&](const BoxShape& b) {
+              items_.push_back(
+                  {b.min, b.max, boundsOf(o.shape), transmissivity, i, itemKind<BoxItem>()});
+            },
+            [&](const MeshShape& m) {
+              const MeshBvh& mesh = treeFor(m.mesh, reuse);
+              items_.push_back({Vec3(), Vec3(), mesh.bounds(), transmissivity, i,
+                                itemKind<MeshItem>(), &mesh});
+            },
+            [&](const InstanceShape& instance) {
+              const MeshBvh& mesh = treeFor(instance.mesh, reuse);
+              ++meshStats_.instances;
+              placements_.push_back(
+                  std::make_unique<Transform>(instance.worldFromMesh.inverse()));
+              const Bounds box = placedBounds(mesh.bounds(), instance.worldFromMesh);
+              // Tested before a ray is carried into the mesh's coordinates; widened far beyond
+              // the rounding of the placement, so that it never turns away a ray the mesh's
+              // tree meets.
+              const Bounds reach = box.widened(1e-9 * std::max(1.0, box.largestMagnitude()));
+              items_.push_back({reach.lo, reach.hi, box, transmissivity, i, itemKind<MeshItem>(),
+                                &mesh, placements_.back().get()});
+            },
+            [&](const PlaneShape& p) { planes_.push_back({p.point, p.normal, transmissivity, i}); },
+        },
+        o.shape);
   }
   const std::vector<Bounds> boxes = itemBounds();
   for (const Bounds& b : boxes) itemsBox_.extend(b);
@@ -209,12 +220,12 @@ bool World::intersectFromInside(uint32_t object, const Ray& ray, Hit& hit) const
 SurfaceAttributes World::attributesAt(const Ray& ray, const Hit& hit) const {
   SurfaceAttributes a;
   const uint32_t index = hit.object < itemOfObject_.size() ? itemOfObject_[hit.object] : ~0u;
-  if (index >= items_.size() || items_[index].kind != Kind::mesh) return a;
+  if (index >= items_.size() || items_[index].mesh == nullptr) return a;
   const Item& item = items_[index];
   const TriangleMesh& mesh = item.mesh->triangles();
   if (mesh.uvs.empty() && mesh.colors.empty()) return a;
   const auto& t = mesh.triangles[hit.triangle];
-  const TriangleHit h = triangleHit(ShearedRay(local(item, ray)), mesh.vertices[t[0]],
+  const TriangleHit h = triangleHit(ShearedRay(MeshItem::local(item, ray)), mesh.vertices[t[0]],
                                     mesh.vertices[t[1]], mesh.vertices[t[2]]);
   // Weights of a ray that grazes an edge may be a hair outside [0, 1]; they still interpolate.
   if (!mesh.uvs.empty()) {
@@ -256,54 +267,29 @@ bool World::intersect(const Ray& ray, double tMin, double tMax, Hit& hit,
   const uint32_t* ranks = ranks_.data() + octantOf(ray.direction) * items_.size();
   candidates(nearest, [&](uint32_t index) {
     const Item& item = items_[index];
-    if (item.kind == Kind::mesh) {
-      if (item.meshFromWorld != nullptr &&
-          !hitsBounds(Bounds{item.a, item.b}, RayQuery(ray), tMin, nearest)) {
-        return nearest;  // an instance the ray passes by: not worth carrying the ray over
-      }
-      double t = nearest;
+    return visitItemKind(item.kind, [&]<typename Kind>(Kind) {
       uint32_t triangle = 0;
-      if (!item.mesh->nearest(local(item, ray), tMin, t, triangle)) return nearest;
-      if (!(t < nearest || ranks[index] < bestRank)) return nearest;  // t == nearest: a tie
+      const double t = Kind::firstAfter(item, ray, tMin, nearest, triangle);
+      // Farther, or as far but later in the order (NaN, no crossing, fails both tests).
+      if (!(t < nearest || (t == nearest && ranks[index] < bestRank))) return nearest;
+      // The paper's per-object box test, which the object had to pass before.
+      if constexpr (Kind::kBoxTested) {
+        if (!hitsBounds(item.box, RayQuery(ray), tMin, nearest)) return nearest;
+      }
       nearest = t;
       bestRank = ranks[index];
       bestItem = &item;
       bestTriangle = triangle;
       return nearest;
-    }
-    const double t = item.kind == Kind::sphere ? sphereRoots(item.a, item.b.x, ray).firstAfter(tMin)
-                                               : boxSpan(item.a, item.b, ray).firstAfter(tMin);
-    // Farther, or as far but later in the order (NaN, no crossing, fails both tests).
-    if (!(t < nearest || (t == nearest && ranks[index] < bestRank))) return nearest;
-    // The paper's per-object box test, which the object had to pass before.
-    if (!hitsBounds(item.box, RayQuery(ray), tMin, nearest)) return nearest;
-    nearest = t;
-    bestRank = ranks[index];
-    bestItem = &item;
-    return nearest;
+    });
   });
   if (bestItem != nullptr) {
     // The normal as intersect(shape) gives it for its first crossing, which is this one.
     hit.object = bestItem->object;
-    if (bestItem->kind == Kind::mesh) {
-      hit.triangle = bestTriangle;
-      if (bestItem->meshFromWorld == nullptr) {
-        hit.normal = bestItem->mesh->normal(ray, bestTriangle);
-      } else {
-        hit.normal = normalize(Transform::normal(
-            *bestItem->meshFromWorld, bestItem->mesh->normal(local(*bestItem, ray), bestTriangle)));
-      }
-    } else if (bestItem->kind == Kind::sphere) {
-      hit.normal = (ray.at(nearest) - bestItem->a) * bestItem->b.y;  // times 1 / radius
-    } else {
-      const BoxSlabs s = boxSlabs(bestItem->a, bestItem->b, ray);
-      hit.normal = Vec3();
-      if (nearest == s.tNear) {
-        hit.normal[s.nearAxis] = s.nearSign;
-      } else {
-        hit.normal[s.farAxis] = s.farSign;
-      }
-    }
+    hit.triangle = bestTriangle;
+    hit.normal = visitItemKind(bestItem->kind, [&]<typename Kind>(Kind) {
+      return Kind::normal(*bestItem, ray, nearest, bestTriangle);
+    });
   } else if (bestPlane != nullptr) {
     hit.object = bestPlane->object;
     hit.normal = bestPlane->normal;
@@ -335,27 +321,14 @@ double World::transmittance(const Ray& ray, double tMin, double distance,
   bool opaque = false;
   candidates([&](uint32_t index) {
     const Item& item = items[index];
-    int crossings = 0;
-    if (item.kind == Kind::sphere) {
-      const SphereRoots r = sphereRoots(item.a, item.b.x, ray);
-      if (!r.hit) return distance;
-      crossings = (r.t0 > tMin && r.t0 < distance) + (r.t1 > tMin && r.t1 < distance);
-    } else if (item.kind == Kind::box) {
-      const BoxSpan s = boxSpan(item.a, item.b, ray);
-      if (!s.hit) return distance;
-      crossings = s.nearCrosses(tMin, distance) + s.farCrosses(tMin, distance);
-    } else {
-      if (item.meshFromWorld != nullptr &&
-          !hitsBounds(Bounds{item.a, item.b}, RayQuery(ray), tMin, distance)) {
-        return distance;
+    const int crossings = visitItemKind(item.kind, [&]<typename Kind>(Kind) {
+      const int c = Kind::crossings(item, ray, tMin, distance);
+      if constexpr (Kind::kBoxTested) {
+        if (c != 0 && !hitsBounds(item.box, RayQuery(ray), tMin, distance)) return 0;
       }
-      crossings = item.mesh->crossings(local(item, ray), tMin, distance, item.transmissivity == 0);
-      if (crossings == 0) return distance;
-    }
-    if (crossings == 0 ||
-        (item.kind != Kind::mesh && !hitsBounds(item.box, RayQuery(ray), tMin, distance))) {
-      return distance;
-    }
+      return c;
+    });
+    if (crossings == 0) return distance;
     if (item.transmissivity == 0) {  // nothing passes, whatever else is crossed
       opaque = true;
       return -1.0;

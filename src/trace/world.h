@@ -20,6 +20,7 @@
 #include "trace/quad_bvh.h"
 #include "trace/scene.h"
 #include "trace/shadow_shafts.h"
+#include "trace/world_items.h"
 
 namespace prt {
 
@@ -97,25 +98,8 @@ class World {
                               double distance) const;
 
  private:
-  // A bounded object as the BVH's item, flattened for the hot loops.
-  enum class Kind : uint8_t { box, sphere, mesh };
-  struct Item {
-    Vec3 a, b;   // sphere: centre, (radius, 1 / radius, 0); box: min, max; an instance of a
-                 // mesh: its box, widened; a mesh in world space: unused
-    Bounds box;  // for the paper's per-object box test (a mesh's tree tests boxes itself)
-    double transmissivity = 0;
-    uint32_t object = 0;
-    Kind kind = Kind::box;
-    const MeshBvh* mesh = nullptr;  // for a mesh; owned by meshes_
-    // For an instance of a mesh: the inverse of its placement (owned by placements_), which
-    // carries rays into the mesh's coordinates; null for a mesh placed in world space.
-    const Transform* meshFromWorld = nullptr;
-  };
-  // The ray in the coordinates of a mesh item's tree (the same distances along it).
-  static Ray local(const Item& item, const Ray& ray) {
-    if (item.meshFromWorld == nullptr) return ray;
-    return {item.meshFromWorld->point(ray.origin), item.meshFromWorld->vector(ray.direction)};
-  }
+  // A bounded object as the BVH's item, flattened for the hot loops (trace/world_items.h).
+  using Item = WorldItem;
   const MeshBvh& treeFor(const std::shared_ptr<const TriangleMesh>& mesh, const World* reuse);
   struct Plane {
     Vec3 point, normal;
