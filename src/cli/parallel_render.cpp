@@ -31,19 +31,6 @@
 namespace prt::cli {
 namespace {
 
-// Digits only (no sign, no space), at most `max`: sscanf's %llu would take "-5" as 2^64 - 5.
-std::optional<uint64_t> parseCount(std::string_view text, uint64_t max) {
-  if (text.empty() || text.size() > 19) return std::nullopt;
-  uint64_t value = 0;
-  for (const char c : text) {
-    if (c < '0' || c > '9') return std::nullopt;
-    value = value * 10 + static_cast<uint64_t>(c - '0');
-  }
-  if (value > max) return std::nullopt;
-  return value;
-}
-
-
 // Serial time for speed-up: given, or measured here by rendering serially on one thread.
 std::optional<double> serialSeconds(const RenderOptions& o, const Scene& scene,
                                     const RenderSettings& settings) {
@@ -64,36 +51,6 @@ std::optional<double> serialSeconds(const RenderOptions& o, const Scene& scene,
 
 }  // namespace
 
-std::vector<FaultInjection> parseFaults(const std::vector<std::string>& specs) {
-  std::vector<FaultInjection> faults;
-  for (const std::string& spec : specs) {
-    const size_t first = spec.find(':');
-    const size_t second = first == std::string::npos ? first : spec.find(':', first + 1);
-    const auto fail = [&](const std::string& why) {
-      throw InputError("--inject-fault '" + spec + "': " + why +
-                       "; expected WORKER:PIXELS:crash|hang|corrupt, e.g. 1:500:crash");
-    };
-    if (second == std::string::npos) fail("three fields separated by ':' needed");
-    const std::string_view text(spec);
-    const auto worker = parseCount(text.substr(0, first), 1u << 20);
-    if (!worker) fail("WORKER must be a worker number, 0 or more");
-    const auto pixels = parseCount(text.substr(first + 1, second - first - 1), 1ull << 28);
-    if (!pixels) fail("PIXELS must be a whole number of pixels from 0 to 2^28");
-    const std::string_view kind = text.substr(second + 1);
-    if (kind != "crash" && kind != "hang" && kind != "corrupt") {
-      fail("the fault must be crash, hang or corrupt");
-    }
-    FaultInjection f;
-    f.worker = static_cast<int>(*worker);
-    f.afterPixels = *pixels;
-    f.kind = kind == "crash"  ? FaultInjection::Kind::Crash
-             : kind == "hang" ? FaultInjection::Kind::Hang
-                              : FaultInjection::Kind::Corrupt;
-    faults.push_back(f);
-  }
-  return faults;
-}
-
 void addParallelOptions(CLI::App& cmd, RenderOptions& o) {
   const std::string parallel = "Parallel";
   cmd.add_option("--workers", o.workers,
@@ -110,11 +67,6 @@ void addParallelOptions(CLI::App& cmd, RenderOptions& o) {
   cmd.add_option("--slowdown-at", o.slowdownAt,
                  "Speeds that change mid-render: W:T:K,... makes worker W run K times slower "
                  "(K >= 1, instead of its --slowdown) from T seconds after its start")
-      ->group(parallel);
-  cmd.add_option("--join-at", o.joinAt,
-                 "Workers that join the running render (local driver): T:K,... starts K more "
-                 "workers T seconds in, numbered after the others in the order they join "
-                 "(--slowdown then lists every worker, joiners included)")
       ->group(parallel);
   cmd.add_option("--accept-workers", o.acceptWorkersPath,
                  "Let machines join the running render: write to FILE (readable by you only) "
@@ -144,29 +96,11 @@ void addParallelOptions(CLI::App& cmd, RenderOptions& o) {
       ->check(finiteIn(0, 60))
       ->default_str("auto")
       ->group(parallel);
-  cmd.add_option("--batch", o.batchPixels, "Pixels a worker renders between returning results")
-      ->check(CLI::Range(1ull, 1ull << 28))  // no image has more pixels; "-1" would wrap
-      ->capture_default_str()
-      ->group(parallel);
-  cmd.add_option("--worker-timeout", o.workerTimeoutSeconds,
-                 "Seconds of silence (no message, not even a heartbeat) after which a worker is "
-                 "declared lost and its tasks go to the others; heartbeats go after a fifth of "
-                 "it in silence. Default: 5 s, longer past 10,000 workers (0.5 ms per worker) "
-                 "so that heartbeats never keep one master more than 5 % busy")
-      ->check(finiteIn(0.1, 86400))
-      ->default_str("auto")
-      ->group(parallel);
   cmd.add_option("--startup-timeout", o.startupTimeoutSeconds,
                  "Under mpirun: seconds MPI start-up may take; a rank killed while the job "
                  "starts would leave the others waiting in it for ever, so each ends instead "
                  "(exit 1)")
       ->check(finiteIn(1, 86400))
-      ->capture_default_str()
-      ->group(parallel);
-  cmd.add_option("--endgame", o.endgame,
-                 "on: when nothing is left to hand out, an idle worker renders a copy of the "
-                 "tasks expected to finish last (the first result wins)")
-      ->check(CLI::IsMember({"on", "off"}))
       ->capture_default_str()
       ->group(parallel);
   cmd.add_option("--serial-seconds", o.serialSeconds,
@@ -226,11 +160,7 @@ void addParallelOptions(CLI::App& cmd, RenderOptions& o) {
                  "which of its pixels are checked)")
       ->check(CLI::Range(uint64_t{1}, std::numeric_limits<uint64_t>::max()))
       ->group(parallel);
-  cmd.add_option("--inject-fault", o.faults,
-                 "WORKER:PIXELS:crash|hang|corrupt makes worker WORKER (rank WORKER+1 under MPI) "
-                 "fail after rendering that many pixels; corrupt: return wrong pixels from then "
-                 "on (a bit flipped in about half of them)")
-      ->group("Testing");
+  addRunPlanFlags(cmd, o, {parallel, parallel, "Testing", /*simulated=*/false});
 }
 
 bool launchedByMpirun() {
@@ -242,11 +172,9 @@ bool launchedByMpirun() {
 
 ParallelOptions toParallelOptions(const RenderOptions& o, int workers) {
   ParallelOptions p;
+  static_cast<RunPlan&>(p) = runPlanFrom(o, workers);
   p.workers = workers;
-  p.strategy = o.strategyFlags.name();
-  p.strategyOptions = strategyOptionsFrom(o.strategyFlags);
   p.slowdowns = o.slowdowns;
-  if (!o.joinAt.empty()) p.joins = parseJoinWaves(o.joinAt, "--join-at");
   p.acceptWorkersPath = o.acceptWorkersPath;
   p.acceptAddress = o.acceptAddress;
   if (!o.slowdownAt.empty()) {
@@ -256,16 +184,12 @@ ParallelOptions toParallelOptions(const RenderOptions& o, int workers) {
   p.speedIndexKind =
       automatic ? (runsSpeedIndexByDefault(p.strategy) ? SpeedIndexKind::Hanoi : SpeedIndexKind::None)
                 : parseSpeedIndexKind(o.speedIndex);
-  p.batchPixels = o.batchPixels;
   p.batchSeconds = o.batchSeconds.value_or(defaultBatchSeconds(p.totalWorkers()));
   p.threads = o.threads;
-  p.workerTimeoutSeconds = o.workerTimeoutSeconds.value_or(defaultLeaseSeconds(p.totalWorkers()));
-  p.endgame = o.endgame == "on";
   p.checkpointPath = o.checkpointPath;
   p.checkpointAutomatic = o.checkpointAutomatic;
   p.announceCheckpoint = !o.quiet;
   p.checkpointEverySeconds = o.checkpointEverySeconds;
-  p.faults = parseFaults(o.faults);
   p.verifyPercent = o.verifyPercent;
   p.verifySeed = o.verifySeed;
   return p;

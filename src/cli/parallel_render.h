@@ -19,8 +19,6 @@ void addParallelOptions(CLI::App& cmd, RenderOptions& o);
 // True when this process was started by mpirun/mpiexec (Open MPI, MPICH or PMIx launchers).
 bool launchedByMpirun();
 
-// --inject-fault W:PIXELS:crash|hang|corrupt, as prt render and prt simulate read it.
-std::vector<FaultInjection> parseFaults(const std::vector<std::string>& specs);
 
 
 ParallelOptions toParallelOptions(const RenderOptions& o, int workers);

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "cli/commands.h"
+#include "cli/run_plan_flags.h"
 #include "cli/strategy_flags.h"
 #include "cluster/leases.h"
 #include "cluster/worker.h"
@@ -18,7 +19,9 @@ struct RenderOptions;
 // The frames --frames or --frame ask for (a still: one frame at time 0). Throws InputError.
 FrameSequence framesOf(const RenderOptions& o);
 
-struct RenderOptions {
+// RunPlanFlags: --strategy, --batch, --worker-timeout, --endgame, --inject-fault, --join-at
+// (local driver), shared with prt simulate.
+struct RenderOptions : RunPlanFlags {
   SceneSource scene;  // the scene or model file and how to read it
   std::string output;         // empty: the scene's own output file
   std::optional<int> width;   // overrides the scene's image width, pixels
@@ -38,19 +41,14 @@ struct RenderOptions {
 
   // Parallel rendering.
   std::optional<int> workers;              // local driver: worker threads
-  StrategyFlags strategyFlags;             // --strategy and the strategies' options
   std::vector<double> slowdowns;           // per worker, >= 1
   std::string slowdownAt;                  // --slowdown-at W:T:K,...
-  std::string joinAt;                      // --join-at T:K,... (local driver)
   std::string acceptWorkersPath;           // --accept-workers FILE
   std::string acceptAddress;               // --accept-address [ADDRESS][:PORT]
   std::string speedIndex = "auto";         // what workers measure: auto | hanoi | probe | none
-  unsigned long long batchPixels = WorkerOptions::kDefaultBatchPixels;  // per returned batch
   std::optional<double> batchSeconds;      // batches grow to this much work; none: by the
                                            // worker count (defaultBatchSeconds)
-  std::optional<double> workerTimeoutSeconds;  // the lease; none: defaultLeaseSeconds
   double startupTimeoutSeconds = 120;      // --startup-timeout: MPI start-up's deadline
-  std::string endgame = "off";             // on | off: copies of the last tasks
   std::string checkpointPath;              // --checkpoint FILE (or, resolved, OUTPUT.ckpt)
   bool noCheckpoint = false;               // --no-checkpoint: no automatic checkpoint
   bool checkpointAutomatic = false;        // resolved: the path is the automatic one, kept
@@ -64,7 +62,6 @@ struct RenderOptions {
   std::string ownershipPath;               // --ownership FILE.png
   std::string htmlPath;                    // --html FILE.html: the run's page
   std::string commandLine;                 // as typed, recorded in the report and the page
-  std::vector<std::string> faults;         // --inject-fault W:PIXELS:crash|hang|corrupt
   double verifyPercent = 1;                // --verify: spot-check rate (0: off)
   uint64_t verifySeed = 0;                 // --verify-seed: the sample's seed (0: random)
 };

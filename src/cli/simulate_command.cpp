@@ -29,15 +29,14 @@
 namespace prt::cli {
 namespace {
 
-struct SimulateOptions {
+// RunPlanFlags: --strategy, --batch, --worker-timeout, --endgame, --inject-fault, --join-at,
+// as in prt render.
+struct SimulateOptions : RunPlanFlags {
   int workers = 4;
   std::optional<int> width;   // default: the cost map's, or 640 for the synthetic one
   std::optional<int> height;  // default: the cost map's, or 480
-  StrategyFlags strategyFlags;          // --strategy and the strategies' options
   std::string speedIndexRun = "auto";   // on | off | auto (off for the adaptive strategies)
-  std::string endgame = "off";          // on | off
   std::string speedAt;                  // --speed-at W:T:SPEED,...
-  std::string joinAt;                   // --join-at T:K,...
   std::vector<double> speeds;           // per worker; empty: see slowShare, lognormal, else all 1
   std::optional<double> slowShare;      // fraction of the workers that are slow
   double slowFactor = 4;                // how many times slower they are
@@ -46,7 +45,6 @@ struct SimulateOptions {
   std::string costMapPath;              // empty: the synthetic complex-scene map
   uint64_t frames = 1;                  // --frames N: a sequence of N frames, the map reused
   std::optional<double> serialSeconds;  // rescale the map to this total; synthetic default 60
-  unsigned long long batchPixels = WorkerOptions::kDefaultBatchPixels;
   double batchSeconds = 0;
   double batchOverheadMicroseconds = 0;
   double speedIndexSeconds = 0.08;
@@ -54,8 +52,6 @@ struct SimulateOptions {
   double latencyMicroseconds = 50;
   double bandwidthMbps = 1000;
   double masterServiceMicroseconds = 5;
-  std::optional<double> workerTimeoutSeconds;  // the lease; none: defaultLeaseSeconds
-  std::vector<std::string> faults;             // --inject-fault W:PIXELS:crash|hang
   double mtbfSeconds = 0;                      // --mtbf
   std::optional<double> failShare;             // --fail-share, with --fail-at
   std::optional<double> failAtSeconds;
@@ -111,10 +107,8 @@ std::vector<double> workerSpeeds(const SimulateOptions& o, int joiners) {
 
 int runSimulate(const SimulateOptions& o) {
   SimulationOptions options;
-  options.strategy = o.strategyFlags.name();
-  options.strategyOptions = strategyOptionsFrom(o.strategyFlags);
-  if (!o.joinAt.empty()) options.joins = parseJoinWaves(o.joinAt, "--join-at");
-  options.speeds = workerSpeeds(o, joinerCount(options.joins));
+  static_cast<RunPlan&>(options) = runPlanFrom(o, o.workers);
+  options.speeds = workerSpeeds(o, options.joinerCount());
   if (!o.speedAt.empty()) {
     options.speedChanges = parseSpeedChanges(o.speedAt, "--speed-at",
                                              static_cast<int>(options.speeds.size()), 0);
@@ -124,19 +118,13 @@ int runSimulate(const SimulateOptions& o) {
   }
   options.speedIndexRun = o.speedIndexRun == "auto" ? runsSpeedIndexByDefault(options.strategy)
                                                     : o.speedIndexRun == "on";
-  options.batchPixels = o.batchPixels;
   options.batchSeconds = o.batchSeconds;
-  options.endgame = o.endgame == "on";
   options.batchOverheadSeconds = o.batchOverheadMicroseconds * 1e-6;
   options.baseSpeedIndexSeconds = o.speedIndexSeconds;
   options.speedIndexSeconds = o.speedIndices;
   options.network.latencySeconds = o.latencyMicroseconds * 1e-6;
   options.network.bandwidthBytesPerSecond = o.bandwidthMbps * 1e6 / 8;
   options.network.masterServiceSeconds = o.masterServiceMicroseconds * 1e-6;
-  const int workers = static_cast<int>(options.speeds.size());
-  options.leaseSeconds = o.workerTimeoutSeconds.value_or(defaultLeaseSeconds(workers));
-  options.heartbeatSeconds = heartbeatSecondsFor(options.leaseSeconds);
-  options.faults = parseFaults(o.faults);
   options.mtbfSeconds = o.mtbfSeconds;
   if (o.failShare.has_value() != o.failAtSeconds.has_value()) {
     throw InputError("--fail-share F and --fail-at T go together: a fraction F of the workers "
@@ -233,11 +221,6 @@ Action addSimulateCommand(CLI::App& app, const std::string& commandLine) {
                   "Image height (synthetic map: default 480; with --cost-map: must match)")
       ->check(CLI::Range(1, 32768));
   addStrategyFlags(*cmd, o->strategyFlags, "Strategy");
-  cmd->add_option("--endgame", o->endgame,
-                  "on: when nothing is left to hand out, an idle worker renders a copy of the "
-                  "tasks expected to finish last (the first result wins), as prt render does")
-      ->check(CLI::IsMember({"on", "off"}))
-      ->capture_default_str();
   cmd->add_option("--speed-index-run", o->speedIndexRun,
                   "Whether the workers run a speed index first: on, off (they start at once; "
                   "MASU and ASU then come from measured throughput) or auto (off for the "
@@ -267,11 +250,6 @@ Action addSimulateCommand(CLI::App& app, const std::string& commandLine) {
                   "Speeds that change mid-run: W:T:SPEED,... makes worker W run at relative "
                   "speed SPEED (> 0) from T virtual seconds on")
       ->group(speeds);
-  cmd->add_option("--join-at", o->joinAt,
-                  "Workers that join the running render: T:K,... adds K workers T virtual "
-                  "seconds in, numbered after the --workers N in the order they join; --speeds "
-                  "then lists every worker, joiners included")
-      ->group(speeds);
   cmd->add_option("--seed", o->seed, "Seed for --slow-share, --lognormal, --mtbf and --fail-share")
       ->capture_default_str()
       ->group(speeds);
@@ -289,9 +267,6 @@ Action addSimulateCommand(CLI::App& app, const std::string& commandLine) {
                   "Scale the map to this serial time, seconds (synthetic default 60; a "
                   "recorded map keeps its own total)")
       ->check(positiveUpTo(1e9, "seconds"))
-      ->group(model);
-  cmd->add_option("--batch", o->batchPixels, "Pixels a worker renders between returning results")
-      ->capture_default_str()
       ->group(model);
   cmd->add_option("--batch-seconds", o->batchSeconds,
                   "Batches grow past --batch pixels to what a worker renders in S simulated "
@@ -326,21 +301,8 @@ Action addSimulateCommand(CLI::App& app, const std::string& commandLine) {
                   "out, costs half of it)")
       ->capture_default_str()
       ->group(model);
-  cmd->add_option("--worker-timeout", o->workerTimeoutSeconds,
-                  "The lease, as prt render's (default: 5 s, longer past 10,000 workers): a "
-                  "worker silent this long is lost and its tasks reissued; its heartbeat "
-                  "interval, a fifth of it, sets how often silent workers and the master send "
-                  "heartbeats, which the master's modelled load counts")
-      ->check(finiteIn(0.1, 86400))
-      ->default_str("auto")
-      ->group(model);
 
   const std::string failures = "Failures";
-  cmd->add_option("--inject-fault", o->faults,
-                  "WORKER:PIXELS:crash|hang, as prt render's: the worker fails before its next "
-                  "batch once it has rendered PIXELS; a crash drops its connection (lost at "
-                  "once), a hang goes silent (lost after --worker-timeout)")
-      ->group(failures);
   cmd->add_option("--mtbf", o->mtbfSeconds,
                   "Mean time between failures, virtual seconds: each starting worker's machine "
                   "fails once, at an exponentially distributed time (--seed), silently")
@@ -359,6 +321,7 @@ Action addSimulateCommand(CLI::App& app, const std::string& commandLine) {
                   "later, as a new worker joining the run; with --mtbf it may fail again")
       ->check(finiteIn(0, 1e12))
       ->group(failures);
+  addRunPlanFlags(*cmd, *o, {model, speeds, failures, /*simulated=*/true});
 
   cmd->add_option("--report", o->reportPath, "Write the run report as JSON")->check(fileName());
   cmd->add_option("--trace", o->tracePath, "Write a Chrome trace-event timeline (Perfetto)")

@@ -8,6 +8,7 @@
 
 #include "balance/registry.h"
 #include "cluster/leases.h"
+#include "cluster/run_plan.h"
 #include "cluster/worker.h"
 #include "core/task_set.h"
 #include "core/speed_index.h"
@@ -28,25 +29,20 @@ void corruptPixels(const TaskSet& tasks, std::vector<float>& rgb);
 // output without being asked (--no-checkpoint: never).
 inline constexpr double kAutomaticCheckpointSeconds = 30;
 
-struct ParallelOptions {
+// The plan (strategy, batches, lease, faults, joins: cluster/run_plan.h), shared with the
+// simulator, and what only a real run has.
+struct ParallelOptions : RunPlan {
   int workers = 4;                     // local driver: worker threads; MPI: ranks - 1
-  std::string strategy = kDefaultStrategy;  // see strategyNames()
-  StrategyOptions strategyOptions;
   std::vector<double> slowdowns;       // per worker, each >= 1; empty: all 1
   std::vector<SpeedChange> slowdownChanges;  // --slowdown-at: factors >= 1 from a time on
-  uint64_t batchPixels = WorkerOptions::kDefaultBatchPixels;  // pixels per returned batch of
-                                                              // results, per thread
   double batchSeconds = WorkerOptions::kSmallScaleBatchSeconds;  // batches grow to this much
                                        // work (WorkerOptions; the CLI: defaultBatchSeconds)
   int threads = 1;                     // rendering threads of each worker; 0: all the CPUs
                                        // its affinity allows (mpirun --bind-to sets it)
-  double workerTimeoutSeconds = kDefaultLeaseSeconds;  // the lease: silence (not even a
-                                       // heartbeat) after which a worker is lost; also the
-                                       // master's, for the workers (the CLI: defaultLeaseSeconds)
   SpeedIndexKind speedIndexKind = SpeedIndexKind::Hanoi;  // what each worker measures
   int speedIndexDiscs = kSpeedIndexDiscs;  // size of each worker's Towers of Hanoi run
-  std::vector<FaultInjection> faults;  // worker W is rank W+1 under MPI
-  bool endgame = false;                // copies of the last tasks for workers left idle
+  // faults (RunPlan): worker W is rank W+1 under MPI. workerTimeoutSeconds: the CLI sets
+  // defaultLeaseSeconds for the worker count.
   double verifyPercent = 1;            // --verify: spot checks (cluster/spot_checks.h); 0: off
   uint64_t verifySeed = 0;             // which pixels are checked; 0: drawn at random per run
                                        // (the report gives it: --verify-seed repeats it)
@@ -58,10 +54,8 @@ struct ParallelOptions {
   double checkpointEverySeconds = 10;  // between periodic checkpoints
   std::string acceptWorkersPath;       // open doors for `prt join`: addresses and secret in this file
   std::string acceptAddress;           // the TCP door's [ADDRESS][:PORT] ("": every interface, any port)
-  std::vector<JoinWave> joins;         // threads: workers that join mid-render, numbered
-                                       // after the others, waves in time order (--join-at)
+  // joins (RunPlan): threads only.
 
-  int joinerCount() const { return prt::joinerCount(joins); }
   // Every worker of the run: the starting ones and those that join (per-worker lists such as
   // --slowdown cover them all).
   int totalWorkers() const { return workers + joinerCount(); }

@@ -7,19 +7,13 @@
 
 #include "core/check.h"
 #include "core/input_error.h"
+#include "core/number_format.h"
 #include "scene/scene_file.h"
 
 namespace prt {
 namespace {
 
 constexpr double kMaxSlowdown = 1000;
-
-// A number as a user would write it ("1e+300", "-1", "0.5"), not std::to_string's 300 digits.
-std::string formatNumber(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.6g", value);
-  return text;
-}
 
 }  // namespace
 
@@ -46,11 +40,6 @@ void validateParallelOptions(const ParallelOptions& o, uint64_t pixelCount) {
   }
   validateJoinWaves(o.joins, "--join-at");
   const int total = o.totalWorkers();
-  const std::string numbered =
-      o.joins.empty() ? std::to_string(o.workers) + " workers are numbered 0 to " +
-                            std::to_string(o.workers - 1)
-                      : std::to_string(total) + " workers (with those that join) are numbered 0 to " +
-                            std::to_string(total - 1);
   if (!o.slowdowns.empty()) {
     if (o.slowdowns.size() != static_cast<size_t>(total)) {
       throw InputError("--slowdown lists " + std::to_string(o.slowdowns.size()) +
@@ -66,12 +55,6 @@ void validateParallelOptions(const ParallelOptions& o, uint64_t pixelCount) {
       }
     }
   }
-  for (const FaultInjection& f : o.faults) {
-    if (f.worker < 0 || f.worker >= total) {
-      throw InputError("--inject-fault names worker " + std::to_string(f.worker) + ", but the " +
-                       numbered);
-    }
-  }
   for (const SpeedChange& c : o.slowdownChanges) {
     if (c.worker < 0 || c.worker >= total || !(c.value >= 1.0) || !(c.atSeconds >= 0)) {
       throw InputError("--slowdown-at: worker " + std::to_string(c.worker) + " at " +
@@ -84,19 +67,14 @@ void validateParallelOptions(const ParallelOptions& o, uint64_t pixelCount) {
     throw InputError("--verify must be a percentage from 0 (no spot checks) to 100 (got " +
                      formatNumber(o.verifyPercent) + ")");
   }
-  if (o.batchPixels < 1) throw InputError("--batch must be at least 1");
   if (!(o.batchSeconds >= 0 && o.batchSeconds <= 60)) {
     throw InputError("--batch-seconds must be in [0, 60] (0: batches of --batch pixels)");
-  }
-  if (!(o.workerTimeoutSeconds >= 0.1) || !(o.workerTimeoutSeconds <= 86400)) {
-    throw InputError("--worker-timeout must be between 0.1 and 86400 seconds (got " +
-                     formatNumber(o.workerTimeoutSeconds) + ")");
   }
   if (!(o.checkpointEverySeconds >= 0.01) || !(o.checkpointEverySeconds <= 86400)) {
     throw InputError("--checkpoint-every must be between 0.01 and 86400 seconds (got " +
                      formatNumber(o.checkpointEverySeconds) + ")");
   }
-  validateStrategy(o.strategy, o.strategyOptions);
+  validateRunPlan(o, total);
 }
 
 ImageAssembler::ImageAssembler(int width, int height, int frameHeight)

@@ -97,8 +97,7 @@ void runFaults(ExperimentContext& cx) {
         sim.speeds = speeds;
         sim.speedIndexRun = runsSpeedIndexByDefault(strategy);
         sim.oracleSpeedIndex = true;  // the sharing is compared, not a short benchmark
-        sim.leaseSeconds = lease;
-        sim.heartbeatSeconds = heartbeatSecondsFor(lease);
+        sim.workerTimeoutSeconds = lease;
         if (mtbf > 0) {
           sim.mtbfSeconds = mtbf * 3600;
           sim.repairSeconds = kRepairSeconds;

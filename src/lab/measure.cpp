@@ -88,23 +88,16 @@ RunReport runSimulated(const CostMap& costs, const ParallelOptions& options,
                        double masterSpeedIndexSeconds,
                        const std::vector<double>& workerSpeedIndices) {
   SimulationOptions sim;
-  sim.strategy = options.strategy;
-  sim.strategyOptions = options.strategyOptions;
+  static_cast<RunPlan&>(sim) = options;  // strategy, batches, lease, faults, joins, endgame
   for (int w = 0; w < options.totalWorkers(); ++w) {
     sim.speeds.push_back(1.0 / options.slowdownOf(w));
   }
-  sim.joins = options.joins;
-  sim.batchPixels = options.batchPixels;
   sim.batchSeconds = options.batchSeconds;
   sim.baseSpeedIndexSeconds = masterSpeedIndexSeconds;
   sim.speedIndexSeconds = workerSpeedIndices;
   sim.speedIndexRun = options.speedIndexKind != SpeedIndexKind::None;
   sim.oracleSpeedIndex = options.speedIndexKind == SpeedIndexKind::Slowdown;
   sim.speedChanges = speedChangesOf(options);
-  sim.leaseSeconds = options.workerTimeoutSeconds;
-  sim.heartbeatSeconds = heartbeatSecondsFor(options.workerTimeoutSeconds);
-  sim.faults = options.faults;
-  sim.endgame = options.endgame;
   return simulate(costs, sim).report;
 }
 

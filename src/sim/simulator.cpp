@@ -213,12 +213,12 @@ class Simulation {
     load_.heartbeatsReceived += beats;
     load_.received += beats;
     heartbeatLoad(beats);
-    const double lastHeard = lastWord + static_cast<double>(beats) * options_.heartbeatSeconds;
+    const double lastHeard = lastWord + static_cast<double>(beats) * options_.heartbeatSeconds();
     w.lastHeard = lastHeard + options_.network.latencySeconds;
     SimEvent lost;
     lost.time = crash ? now_ + options_.network.latencySeconds
                       : std::max(now_, lastHeard + options_.network.latencySeconds +
-                                           options_.leaseSeconds);
+                                           options_.workerTimeoutSeconds);
     lost.kind = SimEventKind::Lost;
     lost.endpoint = id;
     queue_.push(std::move(lost));
@@ -236,7 +236,7 @@ class Simulation {
     if (w.crashed) {
       std::snprintf(reason, sizeof reason, "connection dropped");
     } else {
-      std::snprintf(reason, sizeof reason, "silent for %.1f s", options_.leaseSeconds);
+      std::snprintf(reason, sizeof reason, "silent for %.1f s", options_.workerTimeoutSeconds);
     }
     send(kMaster, master_.onWorkerLost(id, now_, reason));
     if (master_.failed()) {
@@ -252,7 +252,7 @@ class Simulation {
   uint64_t beatsIn(double& last) {
     const double gap = now_ - last;
     last = now_;
-    const double h = options_.heartbeatSeconds;
+    const double h = options_.heartbeatSeconds();
     return gap >= h ? static_cast<uint64_t>(gap / h) : 0;
   }
 
@@ -436,8 +436,8 @@ class Simulation {
     info.serialSeconds = costs_.totalSeconds();
     info.speedIndexRun = options_.speedIndexRun;
     info.faults.endgameCopies = master_.endgameCopies();
-    info.faults.heartbeatSeconds = options_.heartbeatSeconds;
-    info.faults.workerTimeoutSeconds = options_.leaseSeconds;
+    info.faults.heartbeatSeconds = options_.heartbeatSeconds();
+    info.faults.workerTimeoutSeconds = options_.workerTimeoutSeconds;
     for (const LostWorker& l : master_.ledger().losses()) {
       info.faults.lostWorkers.push_back({l.worker, l.atSeconds, l.reason, l.unfinished,
                                          worker(l.worker).lastHeard});
@@ -484,8 +484,8 @@ void validateSimulationOptions(const SimulationOptions& o, uint64_t pixelCount) 
   const auto workers = o.speeds.size();
   if (workers < 1) throw InputError("--workers must be at least 1");
   validateWorkerSpeeds(o.speeds, static_cast<int>(workers));
-  validateJoinWaves(o.joins, "--join-at");
-  const int joiners = joinerCount(o.joins);
+  validateRunPlan(o, static_cast<int>(workers));
+  const int joiners = o.joinerCount();
   if (static_cast<size_t>(joiners) >= workers) {
     throw InputError("--join-at adds " + std::to_string(joiners) + " workers but the run has " +
                      std::to_string(workers) + " in all: at least one must start");
@@ -497,7 +497,6 @@ void validateSimulationOptions(const SimulationOptions& o, uint64_t pixelCount) 
     throw InputError("more workers (" + std::to_string(starting) + ") than pixels (" +
                      std::to_string(pixelCount) + ")");
   }
-  if (o.batchPixels < 1) throw InputError("--batch must be at least 1");
   if (!(o.batchSeconds >= 0 && o.batchSeconds <= 60)) {
     throw InputError("--batch-seconds must be in [0, 60] (0: batches of --batch pixels)");
   }
@@ -525,17 +524,7 @@ void validateSimulationOptions(const SimulationOptions& o, uint64_t pixelCount) 
                        " is not one of the workers, or its time or speed is not positive");
     }
   }
-  if (!(o.heartbeatSeconds > 0) || !std::isfinite(o.heartbeatSeconds)) {
-    throw InputError("the heartbeat interval must be a positive number of seconds");
-  }
-  if (!(o.leaseSeconds > 0) || !std::isfinite(o.leaseSeconds)) {
-    throw InputError("--worker-timeout must be a positive number of seconds");
-  }
   for (const FaultInjection& f : o.faults) {
-    if (f.worker < 0 || static_cast<size_t>(f.worker) >= workers) {
-      throw InputError("--inject-fault: worker " + std::to_string(f.worker) +
-                       " is not one of the " + std::to_string(workers) + " workers");
-    }
     if (f.kind == FaultInjection::Kind::Corrupt) {
       throw InputError("--inject-fault: corrupt workers are not simulated (a simulated worker "
                        "renders no colours to check); crash and hang are");
@@ -558,7 +547,6 @@ void validateSimulationOptions(const SimulationOptions& o, uint64_t pixelCount) 
     throw InputError("--fail-at must be a time in seconds, 0 or more");
   }
   validateNetworkOptions(o.network);
-  validateStrategy(o.strategy, o.strategyOptions);
 }
 
 SimulatedRun simulate(const CostMap& costs, const SimulationOptions& options) {

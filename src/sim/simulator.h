@@ -49,6 +49,7 @@
 #include "balance/registry.h"
 #include "cluster/fault_injection.h"
 #include "cluster/leases.h"
+#include "cluster/run_plan.h"
 #include "cluster/worker.h"
 #include "core/speed_schedule.h"
 #include "metrics/events.h"
@@ -58,14 +59,12 @@
 
 namespace prt {
 
-struct SimulationOptions {
-  std::string strategy = kDefaultStrategy;  // see strategyNames()
-  StrategyOptions strategyOptions;
+// The plan (cluster/run_plan.h: strategy, --batch, --endgame, --worker-timeout, faults,
+// --join-at), as a real run has it, and what only a simulation has. Joiners: the last
+// joinerCount() workers of `speeds`. The lease: silence after which a worker is lost.
+// Faults: crash or hang (corrupt is refused).
+struct SimulationOptions : RunPlan {
   std::vector<double> speeds;             // one per worker, those that join included
-  std::vector<JoinWave> joins;            // --join-at: the last joinerCount(joins) workers of
-                                          // `speeds` join at these times (in time order)
-  uint64_t batchPixels = WorkerOptions::kDefaultBatchPixels;  // pixels per returned batch, as
-                                                              // in a real run
   double batchSeconds = 0;                // > 0: batches grow to this much work, as a real
                                           // run's do (WorkerOptions); 0: fixed batches
   double batchOverheadSeconds = 0;        // full-speed seconds a batch costs besides its
@@ -83,10 +82,6 @@ struct SimulationOptions {
   bool oracleSpeedIndex = false;          // with speedIndexRun: workers set up at once and
                                           // report their true index (base / speed), as real
                                           // workers do with --speed-index slowdown
-  bool endgame = false;                   // --endgame: copies of the last tasks (Master)
-  double leaseSeconds = kDefaultLeaseSeconds;  // silence after which a worker is lost
-  double heartbeatSeconds = heartbeatSecondsFor(kDefaultLeaseSeconds);  // see above
-  std::vector<FaultInjection> faults;  // --inject-fault (crash or hang; corrupt is refused)
   double mtbfSeconds = 0;    // > 0: each starting worker fails once, exponentially distributed
   double failShare = 0;      // with failAtSeconds: this fraction of the workers fails at once
   double failAtSeconds = 0;

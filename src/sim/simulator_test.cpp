@@ -54,7 +54,7 @@ TEST(SimulatorTest, TheMastersLoadCountsServicesAndTheHeartbeatsOfSilences) {
   const CostMap map = uniformCostMap(64, 64, 10.0);
   for (const double beat : {1.0, 100.0}) {
     SimulationOptions o = optionsFor("blocks", {1.0}, 64 * 64);
-    o.heartbeatSeconds = beat;
+    o.workerTimeoutSeconds = kBeatsPerLease * beat;  // heartbeats every `beat` seconds
     const SimulatedRun run = simulate(map, o);
     ASSERT_TRUE(run.report.info.master.has_value());
     const MasterLoad& m = *run.report.info.master;
@@ -244,8 +244,7 @@ TEST_P(SimulatorStrategyTest, WorkersJoiningMidRunAreAdmitted) {
 TEST_P(SimulatorStrategyTest, FailedWorkersAreLostAndTheirTasksRenderedByTheOthers) {
   const CostMap map = complexSceneCostMap(97, 61, 3.0);
   SimulationOptions o = optionsFor(GetParam(), {1, 0.5, 0.25, 1, 0.7}, 16);
-  o.leaseSeconds = 0.5;
-  o.heartbeatSeconds = heartbeatSecondsFor(o.leaseSeconds);
+  o.workerTimeoutSeconds = 0.5;
   o.faults = {FaultInjection{1, 40, FaultInjection::Kind::Crash},
               FaultInjection{3, 40, FaultInjection::Kind::Hang}};
   o.failShare = 0.2;  // one of five, mid-run
@@ -258,7 +257,7 @@ TEST_P(SimulatorStrategyTest, FailedWorkersAreLostAndTheirTasksRenderedByTheOthe
     // A worker whose share was under 40 pixels never reaches its fault; one that does is
     // lost, the hang only after a lease of silence.
     if (l.worker == 3) {
-      EXPECT_GE(l.atSeconds, o.leaseSeconds);
+      EXPECT_GE(l.atSeconds, o.workerTimeoutSeconds);
     }
     if (l.worker == 1) {
       EXPECT_EQ(l.reason, "connection dropped");
@@ -284,9 +283,8 @@ TEST(SimulatorTest, ACrashIsLostAtOnceAndAHangAfterTheLease) {
   const CostMap map = uniformCostMap(64, 64, 8.0);
   for (const auto kind : {FaultInjection::Kind::Crash, FaultInjection::Kind::Hang}) {
     SimulationOptions o = optionsFor("self", {1, 1}, 64);
-    o.leaseSeconds = 2.0;
-    o.heartbeatSeconds = heartbeatSecondsFor(o.leaseSeconds);
-    o.speedIndexRun = false;
+    o.workerTimeoutSeconds = 2.0;
+      o.speedIndexRun = false;
     o.faults = {FaultInjection{1, 64, kind}};  // after its first batch
     const SimulatedRun run = simulate(map, o);
     const auto& lost = run.report.info.faults.lostWorkers;
@@ -323,8 +321,7 @@ TEST(SimulatorTest, MachinesFailingAtRandomAreLostAndTheRunFinishes) {
   SimulationOptions o = optionsFor("adaptive", std::vector<double>(1000, 1.0), 16);
   o.mtbfSeconds = 10.0;
   o.seed = 3;
-  o.leaseSeconds = 0.5;
-  o.heartbeatSeconds = heartbeatSecondsFor(o.leaseSeconds);
+  o.workerTimeoutSeconds = 0.5;
   const SimulatedRun run = simulate(map, o);
   const size_t lost = run.report.info.faults.lostWorkers.size();
   // About 1 - exp(-T / 10) of them fail within the run's T of about a second.
@@ -339,8 +336,7 @@ TEST(SimulatorTest, RepairedMachinesComeBackAsNewWorkers) {
   SimulationOptions o = optionsFor("adaptive", std::vector<double>(100, 1.0), 16);
   o.mtbfSeconds = 4.0;
   o.repairSeconds = 0.5;
-  o.leaseSeconds = 0.5;
-  o.heartbeatSeconds = heartbeatSecondsFor(o.leaseSeconds);
+  o.workerTimeoutSeconds = 0.5;
   const SimulatedRun run = simulate(map, o);
   const FaultInfo& f = run.report.info.faults;
   ASSERT_GT(f.lostWorkers.size(), 20u);
