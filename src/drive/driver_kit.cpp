@@ -81,7 +81,7 @@ ParallelRun runMasterSide(Transport& net, const RunRequest& request, const std::
   // It renders on a thread of its own while this one heartbeats the workers, so that a long
   // check (a few costly pixels can take seconds) does not make them think the master gone;
   // the loop drains their messages before it looks at their leases.
-  const double beat = heartbeatSecondsFor(options.workerTimeoutSeconds);
+  const double beat = options.heartbeatSeconds();
   std::function<int()> workerCount;  // set once the master exists
   masterOptions.referee = [&](const TaskSet& checked) {
     FrameRenderer& renderer = ownRenderer();
@@ -163,7 +163,7 @@ ParallelRun runMasterSide(Transport& net, const RunRequest& request, const std::
 
   MasterLoopOptions loop;
   loop.leaseSeconds = options.workerTimeoutSeconds;
-  loop.heartbeatSeconds = heartbeatSecondsFor(options.workerTimeoutSeconds);
+  loop.heartbeatSeconds = options.heartbeatSeconds();
   loop.checkpointEverySeconds = options.checkpointEverySeconds;
   loop.interrupted = request.interrupted;
   loop.abandoned = std::move(abandoned);
@@ -194,15 +194,20 @@ ParallelRun runMasterSide(Transport& net, const RunRequest& request, const std::
   }
   const CheckpointKey key = checkpointKey(scene, request.settings, frames);
   bool warned = false;
+  uint64_t checkpoints = 0;        // written during the run
+  double checkpointSeconds = 0;    // the master's wall time writing them
   auto saveCheckpoint = [&](const std::string& why) {
     // Unarmed, only a stop saves the pixels done: a short run is cheap to render again.
     const bool periodic =
         why == "periodic" || why == "a worker was lost" || why == "a worker was rejected";
     if (!armed && (periodic || master.doneCount() == master.resumedCount())) return;
     armed = true;
+    const double from = net.now();
     try {
       writeCheckpoint(options.checkpointPath, key, master.checkedDoneSet(), assembler.image(),
                       assembler.owner());
+      ++checkpoints;
+      checkpointSeconds += net.now() - from;
     } catch (const std::exception& e) {
       // The render goes on: a checkpoint that cannot be written loses nothing yet.
       if (!warned) {
@@ -305,6 +310,8 @@ ParallelRun runMasterSide(Transport& net, const RunRequest& request, const std::
   info.faults.workerTimeoutSeconds = loop.leaseSeconds;
   info.faults.heartbeatSeconds = loop.heartbeatSeconds;
   info.master = result.load;
+  info.master->checkpoints = checkpoints;
+  info.master->checkpointSeconds = checkpointSeconds;
   if (!frameInfo.empty()) {
     info.frames = std::move(frameInfo);
     info.fps = frames.fps;
@@ -323,7 +330,7 @@ WorkerExit runWorkerSide(Transport& net, int id, const ParallelOptions& options,
   WorkerLoopOptions loop;
   loop.batchPixels = options.batchPixels;
   loop.batchSeconds = options.batchSeconds;
-  loop.heartbeatSeconds = heartbeatSecondsFor(options.workerTimeoutSeconds);
+  loop.heartbeatSeconds = options.heartbeatSeconds();
   loop.masterTimeoutSeconds = options.workerTimeoutSeconds;
   for (const FaultInjection& f : options.faults) {
     if (f.worker == id) loop.fault = f;

@@ -300,6 +300,8 @@ std::string RunReport::toJson() const {
                    {"messages_sent", m.sent},
                    {"heartbeats_received", m.heartbeatsReceived},
                    {"heartbeats_sent", m.heartbeatsSent},
+                   {"checkpoints", m.checkpoints},
+                   {"checkpoint_s", m.checkpointSeconds},
                    {"us_per_message", handled > 0 ? json(1e6 * m.busySeconds /
                                                          static_cast<double>(handled))
                                                   : json(nullptr)}};
@@ -413,6 +415,11 @@ std::string RunReport::toTable() const {
                   static_cast<unsigned long long>(m.heartbeatsReceived),
                   static_cast<unsigned long long>(m.heartbeatsSent));
     out += line;
+    if (m.checkpoints > 0) {
+      std::snprintf(line, sizeof line, "master: %llu checkpoints written in %.2f s\n",
+                    static_cast<unsigned long long>(m.checkpoints), m.checkpointSeconds);
+      out += line;
+    }
   }
   std::snprintf(line, sizeof line,
                 "scene: %llu bytes, with every worker %.3f s after it was sent\n",

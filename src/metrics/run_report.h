@@ -110,6 +110,10 @@ struct MasterLoad {
   uint64_t received = 0, sent = 0;                      // every message, heartbeats included
   uint64_t heartbeatsReceived = 0, heartbeatsSent = 0;  // of those, heartbeats
   std::string basis = "measured_cpu";                   // or "modelled_service"
+  // Checkpoints written, and the wall time the master spent writing them (it takes no
+  // message meanwhile); in a simulation, modelled (--checkpoint-every).
+  uint64_t checkpoints = 0;
+  double checkpointSeconds = 0;
 };
 
 struct RunInfo {

@@ -21,6 +21,7 @@ enum class SimEventKind {
   Join,        // worker `endpoint` joins the running render
   Fail,        // worker `endpoint`'s machine fails now, silently (--mtbf, --fail-share)
   Lost,        // the master finds worker `endpoint` lost (its connection dropped, or its lease ran out)
+  Checkpoint,  // the master writes a checkpoint (--checkpoint-every)
 };
 
 struct SimEvent {

@@ -101,6 +101,12 @@ class Simulation {
       }
     }
     scheduleFailures();
+    if (options_.checkpointEverySeconds > 0) {
+      SimEvent checkpoint;
+      checkpoint.time = options_.checkpointEverySeconds;
+      checkpoint.kind = SimEventKind::Checkpoint;
+      queue_.push(std::move(checkpoint));
+    }
     while (!finished_) {
       if (queue_.empty()) {
         throw std::runtime_error("simulation stalled with " +
@@ -139,6 +145,9 @@ class Simulation {
           break;
         case SimEventKind::Lost:
           lose(e.endpoint);
+          break;
+        case SimEventKind::Checkpoint:
+          checkpoint();
           break;
       }
     }
@@ -247,6 +256,35 @@ class Simulation {
     }
   }
 
+  // The master writes a checkpoint: after the message it is handling, if any, it takes none
+  // for the time the write lasts; the next one comes an interval after this one ends.
+  void checkpoint() {
+    const double seconds =
+        options_.checkpointSecondsPerPixel * static_cast<double>(master_.doneCount());
+    ++load_.checkpoints;
+    load_.checkpointSeconds += seconds;
+    load_.busySeconds += seconds;
+    double ends = now_ + seconds;
+    if (masterBusy_) {
+      checkpointDebt_ += seconds;  // finishService pays it
+      ends = std::max(ends, now_ + checkpointDebt_);
+    } else {
+      masterBusy_ = true;
+      pushMasterDone(ends);
+    }
+    SimEvent next;
+    next.time = ends + options_.checkpointEverySeconds;
+    next.kind = SimEventKind::Checkpoint;
+    queue_.push(std::move(next));
+  }
+
+  void pushMasterDone(double at) {
+    SimEvent done;
+    done.time = at;
+    done.kind = SimEventKind::MasterDone;
+    queue_.push(std::move(done));
+  }
+
   // The heartbeats that a silence between `last` and `now` holds (one per interval), and the
   // silence restarts now.
   uint64_t beatsIn(double& last) {
@@ -349,11 +387,8 @@ class Simulation {
     load_.busySeconds += options_.network.masterServiceSeconds;
     // Heartbeats that came in while it was idle were handled then; the rest delay this one.
     heartbeatDebt_ = std::max(0.0, heartbeatDebt_ - (now_ - idleSince_));
-    SimEvent done;
-    done.time = now_ + options_.network.masterServiceSeconds + heartbeatDebt_;
+    pushMasterDone(now_ + options_.network.masterServiceSeconds + heartbeatDebt_);
     heartbeatDebt_ = 0;
-    done.kind = SimEventKind::MasterDone;
-    queue_.push(std::move(done));
   }
 
   // The run ends when the master has handled the last results, as in the local driver.
@@ -364,6 +399,10 @@ class Simulation {
     masterOut_.clear();
     if (master_.complete()) {
       finished_ = true;
+    } else if (checkpointDebt_ > 0) {  // a checkpoint came meanwhile: written now
+      masterBusy_ = true;
+      pushMasterDone(now_ + checkpointDebt_);
+      checkpointDebt_ = 0;
     } else if (!masterInbox_.empty()) {
       startService();
     }
@@ -472,6 +511,7 @@ class Simulation {
   Outbox masterOut_;
   MasterLoad load_;
   double heartbeatDebt_ = 0;  // heartbeat service not yet worked off
+  double checkpointDebt_ = 0;  // a checkpoint due while the master was busy
   double idleSince_ = 0;      // when the master last finished a service
   double now_ = 0;
   bool finished_ = false;
@@ -545,6 +585,10 @@ void validateSimulationOptions(const SimulationOptions& o, uint64_t pixelCount) 
   }
   if (!(o.failAtSeconds >= 0) || !std::isfinite(o.failAtSeconds)) {
     throw InputError("--fail-at must be a time in seconds, 0 or more");
+  }
+  if (!(o.checkpointEverySeconds >= 0) || !std::isfinite(o.checkpointEverySeconds) ||
+      !(o.checkpointSecondsPerPixel >= 0) || !std::isfinite(o.checkpointSecondsPerPixel)) {
+    throw InputError("--checkpoint-every and the checkpoint's cost must be 0 or more seconds");
   }
   validateNetworkOptions(o.network);
 }

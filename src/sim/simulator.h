@@ -63,6 +63,11 @@ namespace prt {
 // --join-at), as a real run has it, and what only a simulation has. Joiners: the last
 // joinerCount() workers of `speeds`. The lease: silence after which a worker is lost.
 // Faults: crash or hang (corrupt is refused).
+// A checkpoint's cost to the master per pixel done: writing a 3840x2160 checkpoint (every pixel
+// done, or half of them in the default's interleaved order) took 0.9 to 1.7 s on the 2-core
+// machine of docs/results.md, about 0.15 us a pixel.
+inline constexpr double kCheckpointSecondsPerPixel = 1.5e-7;
+
 struct SimulationOptions : RunPlan {
   std::vector<double> speeds;             // one per worker, those that join included
   double batchSeconds = 0;                // > 0: batches grow to this much work, as a real
@@ -88,6 +93,11 @@ struct SimulationOptions : RunPlan {
   double repairSeconds = 0;  // > 0: a machine that failed (--mtbf, --fail-share) comes back
                              // this long after, as a new worker joining the run
   uint64_t seed = 1;         // for --mtbf and --fail-share
+  // --checkpoint-every: every this many seconds (0: never) the master writes a checkpoint, and
+  // takes no message for checkpointSecondsPerPixel times the pixels done (a real master writes
+  // its checkpoints on its own thread, between messages).
+  double checkpointEverySeconds = 0;
+  double checkpointSecondsPerPixel = kCheckpointSecondsPerPixel;
   NetworkOptions network;
   uint64_t sceneBytes = 4096;  // the scene text the master sends to each worker
   // A frame sequence: the cost map holds this many frames one above the other (its pixels are

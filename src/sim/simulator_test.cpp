@@ -9,6 +9,8 @@
 #include <numeric>
 #include <string>
 
+#include <nlohmann/json.hpp>
+
 #include "core/input_error.h"
 #include "metrics/chrome_trace.h"
 #include "sim/synthetic_cost.h"
@@ -440,6 +442,38 @@ TEST(SimulatorTest, BadOptionsAreInputErrors) {
   SimulationOptions o = optionsFor("scatter", {1});
   o.network.bandwidthBytesPerSecond = 0;
   EXPECT_NE(message(o).find("bandwidth"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace prt
+
+namespace prt {
+namespace {
+
+// --checkpoint-every: the master writes a checkpoint every interval and takes no message
+// meanwhile, for a time proportional to the pixels done; with many workers that wait on it,
+// the run takes longer, and the report counts the checkpoints and their time.
+TEST(SimulatorTest, CheckpointsStopTheMasterForTheirModelledTime) {
+  const CostMap map = uniformCostMap(256, 256, 60.0);
+  SimulationOptions o = optionsFor("self", std::vector<double>(16, 1.0), 16);
+  const SimulatedRun plain = simulate(map, o);
+  o.checkpointEverySeconds = 0.5;
+  o.checkpointSecondsPerPixel = 0;  // free: the same run
+  const SimulatedRun free = simulate(map, o);
+  EXPECT_DOUBLE_EQ(free.report.elapsedSeconds, plain.report.elapsedSeconds);
+  o.checkpointSecondsPerPixel = 4e-6;  // up to 0.26 s for the whole image
+  const SimulatedRun costly = simulate(map, o);
+  const MasterLoad& m = *costly.report.info.master;
+  const double elapsed = costly.report.elapsedSeconds;
+  EXPECT_GT(elapsed, plain.report.elapsedSeconds * 1.05);  // self-scheduling waits on each
+  // One per interval plus the write, none after the end.
+  EXPECT_GE(static_cast<double>(m.checkpoints), elapsed / (0.5 + 0.27) - 1);
+  EXPECT_LE(static_cast<double>(m.checkpoints), elapsed / 0.5);
+  EXPECT_GT(m.checkpointSeconds, 0.0);
+  EXPECT_LE(m.checkpointSeconds, static_cast<double>(m.checkpoints) * 4e-6 * 256 * 256);
+  const nlohmann::json j = nlohmann::json::parse(costly.report.toJson());
+  EXPECT_EQ(j["master"]["checkpoints"].get<uint64_t>(), m.checkpoints);
+  EXPECT_EQ(renderedPixels(costly), 256u * 256u);
 }
 
 }  // namespace
