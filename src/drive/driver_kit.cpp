@@ -23,6 +23,40 @@
 namespace prt {
 namespace {
 
+// Runs `work` on a thread of its own while this one sends every worker a heartbeat each `beat`
+// seconds: a long step of the master's own (a spot check it renders, a checkpoint it writes —
+// a second or more for a 4K image) must not make the workers take it for gone. Their
+// messages wait meanwhile; the master loop drains them before it judges any lease. Rethrows
+// what `work` throws.
+void whileHeartbeating(Transport& net, double beat, const std::function<int()>& workers,
+                       const std::function<void()>& work) {
+  std::exception_ptr error;
+  std::mutex mutex;
+  std::condition_variable finished;
+  bool done = false;
+  std::thread thread = startThread([&] {
+    try {
+      work();
+    } catch (...) {
+      error = std::current_exception();
+    }
+    std::lock_guard<std::mutex> lock(mutex);
+    done = true;
+    finished.notify_one();
+  });
+  {
+    std::unique_lock<std::mutex> lock(mutex);
+    while (!finished.wait_for(lock, std::chrono::duration<double>(beat), [&] { return done; })) {
+      lock.unlock();
+      const Bytes heartbeat = encode(HeartbeatMsg{});
+      for (int w = 0; workers && w < workers(); ++w) net.send(w, Channel::Protocol, heartbeat);
+      lock.lock();
+    }
+  }
+  thread.join();
+  if (error) std::rethrow_exception(error);
+}
+
 std::string percent(uint64_t part, uint64_t whole) {
   char text[32];
   std::snprintf(text, sizeof text, "%.1f%%",
@@ -86,33 +120,7 @@ ParallelRun runMasterSide(Transport& net, const RunRequest& request, const std::
   masterOptions.referee = [&](const TaskSet& checked) {
     FrameRenderer& renderer = ownRenderer();
     std::vector<Color> colors;
-    std::exception_ptr error;
-    std::mutex mutex;
-    std::condition_variable finished;
-    bool done = false;
-    std::thread render = startThread([&] {
-      try {
-        renderer.render(checked, 1, colors);
-      } catch (...) {
-        error = std::current_exception();
-      }
-      std::lock_guard<std::mutex> lock(mutex);
-      done = true;
-      finished.notify_one();
-    });
-    {
-      std::unique_lock<std::mutex> lock(mutex);
-      while (!finished.wait_for(lock, std::chrono::duration<double>(beat), [&] { return done; })) {
-        lock.unlock();
-        const Bytes heartbeat = encode(HeartbeatMsg{});
-        for (int w = 0; workerCount && w < workerCount(); ++w) {
-          net.send(w, Channel::Protocol, heartbeat);
-        }
-        lock.lock();
-      }
-    }
-    render.join();
-    if (error) std::rethrow_exception(error);
+    whileHeartbeating(net, beat, workerCount, [&] { renderer.render(checked, 1, colors); });
     return asFloats(colors);
   };
   // The version rule (drive/build_info.h): the same PRT version, any trace kernels.
@@ -204,8 +212,10 @@ ParallelRun runMasterSide(Transport& net, const RunRequest& request, const std::
     armed = true;
     const double from = net.now();
     try {
-      writeCheckpoint(options.checkpointPath, key, master.checkedDoneSet(), assembler.image(),
-                      assembler.owner());
+      const TaskSet done = master.checkedDoneSet();
+      whileHeartbeating(net, beat, workerCount, [&] {
+        writeCheckpoint(options.checkpointPath, key, done, assembler.image(), assembler.owner());
+      });
       ++checkpoints;
       checkpointSeconds += net.now() - from;
     } catch (const std::exception& e) {
