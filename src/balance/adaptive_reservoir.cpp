@@ -80,7 +80,8 @@ void AdaptiveReservoirStrategy::onWorkerChanged(int worker) {
   // A victim must hold something and have no steal on its way to it. (set() leaves an entry
   // that did not change alone.)
   const bool eligible = held > 0 && !awaitingSteal(worker);
-  if (throughput().measured(worker)) {
+  if (throughput().measured(worker) &&
+      throughput().measuredTasks(worker) >= static_cast<double>(kMeasuredTasks)) {
     unmeasured_.erase(worker);
     const double r = throughput().rate(worker);
     if (r > 0) {

@@ -15,7 +15,9 @@
 //    others near the end — a slow machine that rejoined in the last minutes of an hour's job
 //    on 1,024 workers held it up by 100 s in the simulator (prt experiment faults).
 //    The pool is in interleaved order (interleaved_order.h), so every hand-out samples the
-//    whole image and rates measured on one hand-out hold for the next.
+//    whole image and rates measured on one hand-out hold for the next. A rate counts once the
+//    worker has returned a stratum's worth of tasks (kMeasuredTasks): a newcomer's first few
+//    pixels may all be sky or all glass, hundreds of times apart in cost.
 //  - Sizing, so that all finish together: a request from worker w finds the common finishing
 //    time T at which the pool and every queue would be done, each worker i at rate r_i,
 //    holding h_i: sum over i of max(0, r_i T - h_i) = R (a worker whose queue already lasts
@@ -52,6 +54,7 @@
 #include <vector>
 
 #include "balance/finish_order.h"
+#include "balance/interleaved_order.h"
 #include "balance/pooled_strategy.h"
 
 namespace prt {
@@ -63,6 +66,11 @@ double commonFinishSeconds(const std::vector<double>& rates, const std::vector<u
 
 class AdaptiveReservoirStrategy final : public PooledStrategy {
  public:
+  // A worker's rate counts once its results hold this many tasks, one stratum of the
+  // interleaved order (interleaved_order.h): fewer have seen only part of the image, and pixel
+  // costs differ by hundreds of times across it. Until then it is sized as unmeasured.
+  static constexpr uint64_t kMeasuredTasks = kStratumTasks;
+
   // firstPercent in (0, 100], reservePercent in [0, 100), minChunk >= 1.
   AdaptiveReservoirStrategy(double firstPercent, double reservePercent, uint64_t minChunk);
   std::string name() const override { return "adaptive"; }

@@ -95,20 +95,33 @@ TEST(AdaptiveReservoirTest, HandOutsFollowMeasuredSpeedsAndKeepAReserve) {
   EXPECT_EQ(std::get<Assign>(start[0]).tasks.size(), 50u);
   EXPECT_EQ(std::get<Assign>(start[1]).tasks.size(), 50u);
   adaptive.onResults(0, std::get<Assign>(start[0]).tasks, 5.0);  // 10 tasks/s
-  adaptive.onResults(1, TaskSet::range(0, 10), 4.0);            // 2.5 tasks/s, holds 40
-  // Pool 900, worker 1 holds 40 (16 s). T: (900 + 40) / 12.5 = 75.2 s; worker 0's part
-  // 752, half of it handed out.
-  EXPECT_EQ(std::get<Assign>(adaptive.onRequest(0)[0]).tasks.size(), 376u);
+  adaptive.onResults(1, TaskSet::range(50, 40), 16.0);          // 2.5 tasks/s, holds 10
+  // Pool 900, worker 1 holds 10 (4 s). T: (900 + 10) / 12.5 = 72.8 s; worker 0's part
+  // 728, half of it handed out.
+  EXPECT_EQ(std::get<Assign>(adaptive.onRequest(0)[0]).tasks.size(), 364u);
+}
+
+TEST(AdaptiveReservoirTest, ARateFromFewerTasksThanAStratumDoesNotCountYet) {
+  AdaptiveReservoirStrategy adaptive(10, 50, 1);
+  const Decisions start = adaptive.start(StartInfo{1000, {1, 1}});
+  adaptive.onResults(0, std::get<Assign>(start[0]).tasks, 5.0);  // 50 tasks, 10 tasks/s
+  // Ten cheap pixels in 0.1 s: 100 tasks/s, but ten pixels have not seen the image. Worker 1
+  // asks once its queue is empty, and is sized as the slowest measured worker, 10 tasks/s:
+  // T = 900 / 20 = 45 s, its part 450, half handed out (at 100 tasks/s it would be 409).
+  adaptive.onResults(1, TaskSet::range(50, 10), 0.1);
+  static_assert(AdaptiveReservoirStrategy::kMeasuredTasks > 10);
+  EXPECT_EQ(std::get<Assign>(adaptive.onRequest(1)[0]).tasks.size(), 225u);
 }
 
 TEST(AdaptiveReservoirTest, StealsFromTheWorkerExpectedToFinishLast) {
   AdaptiveReservoirStrategy adaptive(100, 50, 1);
   const Decisions start = adaptive.start(StartInfo{300, {1, 1, 1}});  // 100 each, pool empty
   adaptive.onResults(0, std::get<Assign>(start[0]).tasks, 10.0);  // 10 tasks/s, done
-  adaptive.onResults(1, TaskSet::range(100, 10), 1.0);            // 10 tasks/s, 90 left (9 s)
-  adaptive.onResults(2, TaskSet::range(200, 10), 4.0);            // 2.5 tasks/s, 90 left (36 s)
-  // Worker 0 takes 90 * 10 / (2.5 + 10) = 72 of worker 2's, so that both finish at 7.2 s.
-  EXPECT_EQ(adaptive.onRequest(0), (Decisions{Transfer{2, 0, 72}}));
+  adaptive.onResults(1, TaskSet::range(100, 40), 4.0);            // 10 tasks/s, 60 left (6 s)
+  adaptive.onResults(2, TaskSet::range(200, 40), 16.0);           // 2.5 tasks/s, 60 left (24 s)
+  // Worker 0 takes 60 * 10 / (2.5 + 10) = 48 of worker 2's, so that both finish at 4.8 s
+  // (below its fair part, 10 * 120 / 22.5 = 53).
+  EXPECT_EQ(adaptive.onRequest(0), (Decisions{Transfer{2, 0, 48}}));
 }
 
 TEST(AdaptiveReservoirTest, SlowWorkersFinishWithTheFast) {

@@ -83,13 +83,18 @@ class WalkingAdaptive final : public PooledStrategy {
 
  private:
   uint64_t kMinChunk;
+  bool isMeasured(int w) const {
+    return throughput().measured(w) &&
+           throughput().measuredTasks(w) >=
+               static_cast<double>(AdaptiveReservoirStrategy::kMeasuredTasks);
+  }
   std::vector<double> rates() const {
     std::vector<double> out(static_cast<size_t>(workers().workerCount()), 0.0);
     const std::vector<double>& index = speedIndexSeconds();
     double least = 0;  // of rate x index over the measured: the unmeasured are that slow
     int measured = 0;
     for (int w : workers().liveList()) {
-      if (throughput().measured(w) && throughput().rate(w) > 0) {
+      if (isMeasured(w) && throughput().rate(w) > 0) {
         out[static_cast<size_t>(w)] = throughput().rate(w);
         const double factor = out[static_cast<size_t>(w)] * index[static_cast<size_t>(w)];
         least = measured == 0 ? factor : std::min(least, factor);
@@ -98,7 +103,7 @@ class WalkingAdaptive final : public PooledStrategy {
     }
     if (measured == 0) return out;
     for (int w : workers().liveList()) {
-      if (!throughput().measured(w)) {
+      if (!isMeasured(w)) {
         out[static_cast<size_t>(w)] = least / index[static_cast<size_t>(w)];
       }
     }

@@ -41,6 +41,8 @@ class Throughput {
 
   uint64_t held(int worker) const { return at(worker).held; }
   bool measured(int worker) const { return at(worker).recentSeconds > 0; }
+  // Tasks over all its measured results.
+  double measuredTasks(int worker) const { return at(worker).tasks; }
   // Tasks per second over the recent results; 0 before any measured result.
   double rate(int worker) const;
   // Seconds per task over all results (mu) and their variance (sigma^2); 0 before any.

@@ -334,7 +334,7 @@ Action addSimulateCommand(CLI::App& app, const std::string& commandLine) {
       ->group(failures);
   cmd->add_option("--checkpoint-ns-per-pixel", o->checkpointNanosecondsPerPixel,
                   "What a checkpoint costs the master per pixel done, nanoseconds (measured: "
-                  "about 150 for a 3840x2160 image)")
+                  "about 100 for a 3840x2160 image)")
       ->check(finiteIn(0, 1e6))
       ->capture_default_str()
       ->group(failures);

@@ -23,40 +23,6 @@
 namespace prt {
 namespace {
 
-// Runs `work` on a thread of its own while this one sends every worker a heartbeat each `beat`
-// seconds: a long step of the master's own (a spot check it renders, a checkpoint it writes —
-// a second or more for a 4K image) must not make the workers take it for gone. Their
-// messages wait meanwhile; the master loop drains them before it judges any lease. Rethrows
-// what `work` throws.
-void whileHeartbeating(Transport& net, double beat, const std::function<int()>& workers,
-                       const std::function<void()>& work) {
-  std::exception_ptr error;
-  std::mutex mutex;
-  std::condition_variable finished;
-  bool done = false;
-  std::thread thread = startThread([&] {
-    try {
-      work();
-    } catch (...) {
-      error = std::current_exception();
-    }
-    std::lock_guard<std::mutex> lock(mutex);
-    done = true;
-    finished.notify_one();
-  });
-  {
-    std::unique_lock<std::mutex> lock(mutex);
-    while (!finished.wait_for(lock, std::chrono::duration<double>(beat), [&] { return done; })) {
-      lock.unlock();
-      const Bytes heartbeat = encode(HeartbeatMsg{});
-      for (int w = 0; workers && w < workers(); ++w) net.send(w, Channel::Protocol, heartbeat);
-      lock.lock();
-    }
-  }
-  thread.join();
-  if (error) std::rethrow_exception(error);
-}
-
 std::string percent(uint64_t part, uint64_t whole) {
   char text[32];
   std::snprintf(text, sizeof text, "%.1f%%",

@@ -9,6 +9,7 @@
 // One transport per endpoint, used by one thread.
 
 #include <cstdint>
+#include <functional>
 
 #include "cluster/messages.h"
 #include "metrics/events.h"
@@ -57,5 +58,13 @@ class Transport {
 // Encodes and sends every message of `out` from endpoint `from`, logging each as a
 // MessageSent event on the transport's clock: how both loops send what a state machine says.
 void sendOutbox(Transport& net, int from, const Outbox& out, EventLog& log);
+
+// The master runs `work` on a thread of its own while this one sends workers 0 ..
+// workers() - 1 a heartbeat every `beat` seconds: a long step of its own (a spot check it
+// renders, a checkpoint it writes — a second or more for a 4K image) must not make the
+// workers take it for gone. Their messages wait meanwhile; the master loop drains them before
+// it judges any lease. Rethrows what `work` throws.
+void whileHeartbeating(Transport& net, double beat, const std::function<int()>& workers,
+                       const std::function<void()>& work);
 
 }  // namespace prt

@@ -63,10 +63,11 @@ namespace prt {
 // --join-at), as a real run has it, and what only a simulation has. Joiners: the last
 // joinerCount() workers of `speeds`. The lease: silence after which a worker is lost.
 // Faults: crash or hang (corrupt is refused).
-// A checkpoint's cost to the master per pixel done: writing a 3840x2160 checkpoint (every pixel
-// done, or half of them in the default's interleaved order) took 0.9 to 1.7 s on the 2-core
-// machine of docs/results.md, about 0.15 us a pixel.
-inline constexpr double kCheckpointSecondsPerPixel = 1.5e-7;
+// A checkpoint's cost to the master per pixel done: writing a 3840x2160 checkpoint took 0.77 s
+// with every pixel done and 0.54 s with half of them (in the default's interleaved order, so
+// its done set is 0.9 million runs) on the 2-core machine of docs/results.md: about 0.1 us a
+// pixel.
+inline constexpr double kCheckpointSecondsPerPixel = 1e-7;
 
 struct SimulationOptions : RunPlan {
   std::vector<double> speeds;             // one per worker, those that join included

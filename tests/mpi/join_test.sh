@@ -230,15 +230,16 @@ PY
     "$prt" render "$scene" $size -q -o serial.pfm
     # shellcheck disable=SC2086
     timeout -k 5 120 "$mpiexec" $mca $uri -np 3 "$prt" render "$scene" $size -q \
-      --speed-index slowdown --slowdown 1,600 --batch 8 --verify 10 --inject-fault 0:0:corrupt \
+      --speed-index slowdown --slowdown 1,1000 --batch 8 --verify 10 --inject-fault 0:0:corrupt \
       -o mpi.pfm --accept-workers "$work/port" --report report.json >master.out 2>master.err &
     master=$!
     for i in $(seq 1 200); do [ -s port ] && break; sleep 0.05; done
     [ -s port ] || fail "the master wrote no port file"
-    # Worker 0 is caught at its first checked batch; worker 1, 600 times slower, then needs
+    # Worker 0 is caught at its first checked batch; worker 1, 1000 times slower, then needs
     # several seconds for the rest (at 200 times slower the render could end, under load,
-    # before the joining job had started).
-    sleep 1
+    # before the joining job had started). The join comes 3 s in: with 1 s, under the load of
+    # the whole suite, worker 0's first check once came after the joiner had been admitted.
+    sleep 3
     set +e
     # shellcheck disable=SC2086
     timeout -k 5 60 "$mpiexec" $mca $uri -np 1 "$prt" join "$work/port" >join.out 2>join.err
