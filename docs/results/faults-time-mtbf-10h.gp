@@ -10,12 +10,12 @@ set datafile missing "NaN"
 set logscale x 2
 set yrange [0:*]
 $d0 << EOD
-1 61.5049234
+1 61.537159
 2 61.4968565
-5 61.52838
-15 61.5324798
-60 61.9011534
-180 63.3280255
+5 61.487066
+15 61.4966906
+60 61.507351
+180 63.7404042
 EOD
 $d1 << EOD
 1 61.3838646
@@ -46,7 +46,7 @@ $d4 << EOD
 2 60.8892117
 5 60.8898281
 15 60.8913722
-60 60.8973344
+60 60.8973512
 180 60.9126481
 EOD
 plot $d0 using 1:2 with linespoints linewidth 2 pointtype 5 linecolor rgb "#1f77b4" title "adaptive", \

@@ -10,12 +10,12 @@ set datafile missing "NaN"
 set logscale x 2
 set yrange [0:*]
 $d0 << EOD
-1 71.9604091
-2 71.7670782
-5 72.3986247
-15 71.3264776
-60 71.7597168
-180 73.6779698
+1 70.9836775
+2 70.7199081
+5 70.6253476
+15 70.7870349
+60 71.1348904
+180 74.1677509
 EOD
 $d1 << EOD
 1 70.3061687
@@ -46,8 +46,8 @@ $d4 << EOD
 2 69.2851897
 5 69.291483
 15 69.3103933
-60 69.387861
-180 69.5869433
+60 69.3878267
+180 69.5854926
 EOD
 plot $d0 using 1:2 with linespoints linewidth 2 pointtype 5 linecolor rgb "#1f77b4" title "adaptive", \
     $d1 using 1:2 with linespoints linewidth 2 pointtype 7 linecolor rgb "#d62728" title "reservoir-scatter", \
