@@ -158,13 +158,17 @@ TEST(SimValidationFaultTest, AJoinAndALossInTheEndgameAsInARealRun) {
         options.slowdowns.push_back(8);
         options.joins = {JoinWave{serial.medianSeconds * 8 / 3 / 1.25 / 3, 1}};
       } else {
-        // Worker 0 renders about a third of the image (its speed over the total, 1/8 of 3/8);
-        // it hangs once it has done nine tenths of that.
-        options.faults = {FaultInjection{0, 4600, FaultInjection::Kind::Hang}};
+        // Worker 0 renders about a third of the image (its speed over the total, 1/8 of 3/8),
+        // 5,184 pixels; it hangs once it has done 4,300 of them. (Its share varies with the
+        // machine's load: a real run where it fell short of the fault is tried again.)
+        options.faults = {FaultInjection{0, 4300, FaultInjection::Kind::Hang}};
       }
       Comparison best;
+      int compared = 0;
       for (int attempt = 0; attempt < 8 && best.error > 0.15; ++attempt) {
         Comparison c = compare(scene, serial, options);
+        if (!k.join && c.real.info.faults.lostWorkers.empty()) continue;  // not the scenario
+        ++compared;
         for (const RunReport* r : {&c.real, &c.simulated}) {
           const char* which = r == &c.real ? "real" : "simulated";
           const auto& lost = r->info.faults.lostWorkers;
@@ -180,6 +184,8 @@ TEST(SimValidationFaultTest, AJoinAndALossInTheEndgameAsInARealRun) {
         }
         if (c.error < best.error) best = std::move(c);
       }
+      ASSERT_GT(compared, 0) << strategy << ", " << k.name
+                             << ": worker 0 never reached its fault in eight real runs";
       const double real = best.real.elapsedSeconds, simulated = best.simulated.elapsedSeconds;
       EXPECT_LT(best.error, 0.15) << strategy << ", " << k.name << ": real " << real
                                   << " s, simulated " << simulated << " s";
