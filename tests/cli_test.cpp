@@ -9,6 +9,9 @@
 #include <iterator>
 #include <string>
 
+#include <nlohmann/json.hpp>
+
+#include "core/subprocess.h"
 #include "image/image_io.h"
 #include "prt_command.h"
 
@@ -225,6 +228,9 @@ TEST_F(CliTest, ParallelInputErrors) {
   EXPECT_EQ(r.exitCode, 2) << r.output;
   r = run("simulate --workers 2 --speed-at 2:1:0.5");
   EXPECT_EQ(r.exitCode, 2) << r.output;
+  r = run("simulate --workers 2 --slowdown-at 1:1:0.5");  // a slowdown is at least 1
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_NE(r.output.find("--slowdown-at"), std::string::npos) << r.output;
   r = run("simulate --workers 2 --speed-index-run maybe");
   EXPECT_EQ(r.exitCode, 2) << r.output;
   r = run("render " + scene + out + " --workers 1000");
@@ -325,6 +331,18 @@ TEST_F(CliTest, EveryBuildOfTheKernelsRendersTheSameImages) {
                                   << lesser << " builds rendered different images";
   }
   EXPECT_GE(scenes, 8);
+}
+
+// prt simulate takes prt render's --slowdown-at: K times slower is a speed of 1/K.
+TEST_F(CliTest, SimulateTakesRendersSlowdownAt) {
+  const auto elapsed = [&](const std::string& flags) {
+    const Result r = run("simulate --workers 3 -q --report " + path("s.json") + " " + flags);
+    EXPECT_EQ(r.exitCode, 0) << flags << ": " << r.output;
+    return nlohmann::json::parse(readWholeFile(path("s.json")))["elapsed_s"].get<double>();
+  };
+  const double slowed = elapsed("--slowdown-at 1:2:4");
+  EXPECT_DOUBLE_EQ(slowed, elapsed("--speed-at 1:2:0.25"));
+  EXPECT_GT(slowed, elapsed(""));
 }
 
 }  // namespace

@@ -37,6 +37,7 @@ struct SimulateOptions : RunPlanFlags {
   std::optional<int> height;  // default: the cost map's, or 480
   std::string speedIndexRun = "auto";   // on | off | auto (off for the adaptive strategies)
   std::string speedAt;                  // --speed-at W:T:SPEED,...
+  std::string slowdownAt;               // --slowdown-at W:T:K,..., as prt render's
   std::vector<double> speeds;           // per worker; empty: see slowShare, lognormal, else all 1
   std::optional<double> slowShare;      // fraction of the workers that are slow
   double slowFactor = 4;                // how many times slower they are
@@ -111,9 +112,16 @@ int runSimulate(const SimulateOptions& o) {
   SimulationOptions options;
   static_cast<RunPlan&>(options) = runPlanFrom(o, o.workers);
   options.speeds = workerSpeeds(o, options.joinerCount());
+  const int everyWorker = static_cast<int>(options.speeds.size());
   if (!o.speedAt.empty()) {
-    options.speedChanges = parseSpeedChanges(o.speedAt, "--speed-at",
-                                             static_cast<int>(options.speeds.size()), 0);
+    options.speedChanges = parseSpeedChanges(o.speedAt, "--speed-at", everyWorker, 0);
+  }
+  if (!o.slowdownAt.empty()) {
+    // prt render's form: K times slower than full speed (the cost map's machine) from T on.
+    for (SpeedChange c : parseSpeedChanges(o.slowdownAt, "--slowdown-at", everyWorker, 1)) {
+      c.value = 1 / c.value;
+      options.speedChanges.push_back(c);
+    }
   }
   if (o.speedIndexRun != "auto" && o.speedIndexRun != "on" && o.speedIndexRun != "off") {
     throw InputError("--speed-index-run '" + o.speedIndexRun + "': expected on, off or auto");
@@ -253,6 +261,10 @@ Action addSimulateCommand(CLI::App& app, const std::string& commandLine) {
   cmd->add_option("--speed-at", o->speedAt,
                   "Speeds that change mid-run: W:T:SPEED,... makes worker W run at relative "
                   "speed SPEED (> 0) from T virtual seconds on")
+      ->group(speeds);
+  cmd->add_option("--slowdown-at", o->slowdownAt,
+                  "As prt render's: W:T:K,... makes worker W run K times slower than full "
+                  "speed (K >= 1, speed 1/K) from T virtual seconds on")
       ->group(speeds);
   cmd->add_option("--seed", o->seed, "Seed for --slow-share, --lognormal, --mtbf and --fail-share")
       ->capture_default_str()
