@@ -78,9 +78,8 @@ ParallelRun runMasterSide(Transport& net, const RunRequest& request, const std::
   uint64_t seed = options.verifySeed;
   while (seed == 0) seed = (uint64_t{std::random_device{}()} << 32) ^ std::random_device{}();
   masterOptions.checks = {options.verifyPercent, seed};
-  // It renders on a thread of its own while this one heartbeats the workers, so that a long
-  // check (a few costly pixels can take seconds) does not make them think the master gone;
-  // the loop drains their messages before it looks at their leases.
+  // It renders while the master heartbeats the workers (whileHeartbeating): a few costly
+  // pixels can take seconds. So are checkpoints written, below.
   const double beat = options.heartbeatSeconds();
   std::function<int()> workerCount;  // set once the master exists
   masterOptions.referee = [&](const TaskSet& checked) {

@@ -101,12 +101,7 @@ class Simulation {
       }
     }
     scheduleFailures();
-    if (options_.checkpointEverySeconds > 0) {
-      SimEvent checkpoint;
-      checkpoint.time = options_.checkpointEverySeconds;
-      checkpoint.kind = SimEventKind::Checkpoint;
-      queue_.push(std::move(checkpoint));
-    }
+    if (options_.checkpointEverySeconds > 0) pushCheckpoint(options_.checkpointEverySeconds);
     while (!finished_) {
       if (queue_.empty()) {
         throw std::runtime_error("simulation stalled with " +
@@ -272,10 +267,14 @@ class Simulation {
       masterBusy_ = true;
       pushMasterDone(ends);
     }
-    SimEvent next;
-    next.time = ends + options_.checkpointEverySeconds;
-    next.kind = SimEventKind::Checkpoint;
-    queue_.push(std::move(next));
+    pushCheckpoint(ends + options_.checkpointEverySeconds);
+  }
+
+  void pushCheckpoint(double at) {
+    SimEvent checkpoint;
+    checkpoint.time = at;
+    checkpoint.kind = SimEventKind::Checkpoint;
+    queue_.push(std::move(checkpoint));
   }
 
   void pushMasterDone(double at) {
