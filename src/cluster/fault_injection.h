@@ -4,6 +4,9 @@
 // simulator (sim/simulator.h).
 
 #include <cstdint>
+#include <vector>
+
+#include "core/task_set.h"
 
 namespace prt {
 
@@ -15,5 +18,10 @@ struct FaultInjection {
   // about half the pixels it renders from then on is flipped (see corruptPixels).
   Kind kind = Kind::Crash;
 };
+
+// What a Corrupt fault does to a rendered batch: flips bit 20 of the red channel (a change
+// of about 12 % of its value) of the pixels whose index hashes odd, so some pixels of every
+// batch are wrong and the others right.
+void corruptPixels(const TaskSet& tasks, std::vector<float>& rgb);
 
 }  // namespace prt

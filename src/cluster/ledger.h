@@ -54,6 +54,8 @@ class Ledger {
   std::vector<int> expired(double now, double leaseSeconds) const;
   // When the next lease runs out (for a driver's poll deadline); +inf when none is live. O(1).
   double nextExpiry(double leaseSeconds) const;
+  // The live worker heard from longest ago (the next lease to run out); -1 when none is live.
+  int longestSilent() const { return byLastHeard_.empty() ? -1 : byLastHeard_.begin()->second; }
 
   // Holdings.
   void gave(int worker, const TaskSet& tasks);

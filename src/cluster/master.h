@@ -89,6 +89,11 @@ class Master {
   // The driver's verdict that `worker` is gone. Its unfinished tasks go back to the strategy;
   // a later result from it is still accepted where it is the first.
   Outbox onWorkerLost(int worker, double now, const std::string& reason);
+  // The transport heard from `worker` at `at` without a message for the protocol (a
+  // simulated keep-alive): its lease is renewed, nothing else changes.
+  void renewLease(int worker, double at) {
+    if (ledger_.isLive(worker)) ledger_.heard(worker, at);
+  }
   // Declares lost every live worker silent for more than `leaseSeconds`.
   Outbox expireLeases(double now, double leaseSeconds);
   // A worker joins at `now`; `worker` must be workerCount() (drivers number joiners in

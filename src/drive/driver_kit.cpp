@@ -192,13 +192,16 @@ ParallelRun runMasterSide(Transport& net, const RunRequest& request, const std::
       warned = true;
     }
   };
-  if (!options.checkpointPath.empty() && options.checkpointAutomatic) {
-    loop.checkpoint = saveCheckpoint;
-  } else if (!options.checkpointPath.empty()) {
-    // Written before any rendering: a path that cannot take it fails now, not hours later.
-    writeCheckpoint(options.checkpointPath, key, master.checkedDoneSet(), assembler.image(),
-                    assembler.owner());
-    loop.checkpoint = saveCheckpoint;
+  if (!options.checkpointPath.empty()) {
+    if (!options.checkpointAutomatic) {
+      // Written before any rendering: a path that cannot take it fails now, not hours later.
+      writeCheckpoint(options.checkpointPath, key, master.checkedDoneSet(), assembler.image(),
+                      assembler.owner());
+    }
+    loop.checkpoint = [&](const std::string& why, double) {
+      saveCheckpoint(why);
+      return net.now();
+    };
   }
 
   startTime = net.now();

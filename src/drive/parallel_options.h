@@ -20,10 +20,6 @@ namespace prt {
 
 // FaultInjection (--inject-fault): cluster/fault_injection.h.
 
-// What a Corrupt fault does to a rendered batch: flips bit 20 of the red channel (a change
-// of about 12 % of its value) of the pixels whose index hashes odd, so some pixels of every
-// batch are wrong and the others right.
-void corruptPixels(const TaskSet& tasks, std::vector<float>& rgb);
 
 // A render expected to take longer than this (elapsed + ETA) keeps a checkpoint beside its
 // output without being asked (--no-checkpoint: never).

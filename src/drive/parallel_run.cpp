@@ -17,21 +17,6 @@ constexpr double kMaxSlowdown = 1000;
 
 }  // namespace
 
-void corruptPixels(const TaskSet& tasks, std::vector<float>& rgb) {
-  size_t i = 0;
-  tasks.forEach([&](uint64_t pixel) {
-    uint64_t h = pixel * 0x9e3779b97f4a7c15ull;
-    h ^= h >> 29;
-    if (h & 1) {
-      uint32_t bits;
-      std::memcpy(&bits, &rgb[3 * i], sizeof bits);
-      bits ^= 1u << 20;
-      std::memcpy(&rgb[3 * i], &bits, sizeof bits);
-    }
-    ++i;
-  });
-}
-
 void validateParallelOptions(const ParallelOptions& o, uint64_t pixelCount) {
   if (o.workers < 1) throw InputError("--workers must be at least 1");
   if (static_cast<uint64_t>(o.workers) > pixelCount) {

@@ -2,28 +2,24 @@
 // The worker loop of the driver kit: one worker's side of a run over any Transport, written
 // once for threads and MPI (the simulator runs the same Worker state machine in virtual time).
 //
-//   - All mail waiting is read before the worker computes, and none is handed to the state
-//     machine while it computes (setup, or a batch), as the simulator models it. The heavy
-//     work runs on an EffectThread so that this loop's thread stays free to send a
-//     HeartbeatMsg after `heartbeatSeconds` of silence towards the master while the worker
-//     renders or waits: the master's lease on the worker is renewed by any message,
-//     heartbeats included, so results sent often make heartbeats unnecessary.
-//   - The master heartbeats too; a worker that hears nothing from the master for
-//     `masterTimeoutSeconds` stops (the master is gone: nothing it renders can be used).
+//   - The rules (mail waits while the worker computes, heartbeats, the master's silence,
+//     injected faults, the events of its summary) are the WorkerReactor's
+//     (loops/worker_reactor.h), which the simulator pumps too; this is its pump over a
+//     Transport, with a WorkerEngine that renders.
+//   - The heavy work runs on an EffectThread so that this loop's thread stays free to send
+//     heartbeats while the worker renders; a batch expected to be short renders here, with
+//     heartbeats and mail taken between its pieces.
 //   - After StopMsg the worker sends its summary (events, rays, task count) on the summary
 //     channel and returns.
-//   - The batch wrapper is here, once: fault injection, the Compute/Setup events and the
-//     ray count. Throttling is the WorkerEngine's.
 
 #include <cstdint>
 #include <functional>
 #include <optional>
 
-#include "cluster/leases.h"
-#include "cluster/worker.h"
 #include "drive/parallel_options.h"
 #include "drive/transport.h"
 #include "drive/worker_engine.h"
+#include "loops/worker_reactor.h"
 
 namespace prt {
 
@@ -35,15 +31,8 @@ struct WorkerFaultActions {
   std::function<void()> hang;
 };
 
-struct WorkerLoopOptions {
-  uint64_t batchPixels = WorkerOptions::kDefaultBatchPixels;  // pixels per returned batch of
-                                                              // results (per thread)
-  double batchSeconds = 0;            // batches grow to this much work (WorkerOptions)
-  double heartbeatSeconds = 1.0;      // a message to the master at least this often
-  double masterTimeoutSeconds = kDefaultLeaseSeconds;  // silence from the master after which
-                                                       // the worker stops
-  std::optional<FaultInjection> fault;
-};
+// Its `threads` is the engine's.
+using WorkerLoopOptions = WorkerReactorOptions;
 
 enum class WorkerExit {
   Stopped,     // the image is complete; the summary was sent

@@ -1,4 +1,4 @@
-#include "drive/worker_summary.h"
+#include "loops/worker_summary.h"
 
 #include <algorithm>
 #include <stdexcept>
