@@ -19,6 +19,7 @@
 #include "drive/parallel_run.h"
 #include "drive/run_progress.h"
 #include "drive/worker_engine.h"
+#include "loops/run_info.h"
 
 namespace prt {
 namespace {
@@ -240,53 +241,13 @@ ParallelRun runMasterSide(Transport& net, const RunRequest& request, const std::
   info.samplesPerPixel = request.settings.samplesPerPixel;
   info.drtRate = request.settings.drtRate;
   info.masterSpeedIndexSeconds = request.masterSpeedIndexSeconds;
-  info.workerSpeedIndexSeconds = master.speedIndices();
   info.serialSeconds = request.serialSeconds;
   info.speedIndexRun = options.speedIndexKind != SpeedIndexKind::None;
-  const std::vector<Event> masterEvents = run.events;
-  const Ledger& ledger = master.ledger();
-  // Every worker of the run, those that joined included.
-  for (int w = 0; w < master.workerCount(); ++w) {
-    info.joinedAt.push_back(ledger.joinedAt(w));
-    info.acceptedPixels.push_back(ledger.acceptedFrom(w));
-    info.hosts.push_back(master.identity(w).host);
-    const auto& summary = result.summaries[static_cast<size_t>(w)];
-    if (!summary) {
-      info.slowdowns.push_back(options.slowdownOf(w));
-      if (master.isLive(w)) info.faults.missingSummaries.push_back(w);
-      info.tasksReceived.push_back(0);
-      info.threads.push_back(0);  // unknown
-      continue;
-    }
-    info.slowdowns.push_back(summary->slowdown);
-    const double offset = net.sharedClock() ? 0.0 : workerClockOffset(masterEvents, summary->events, w);
-    for (Event e : summary->events) {
-      e.start += offset;
-      e.end += offset;
-      run.events.push_back(std::move(e));
-    }
-    info.tasksReceived.push_back(summary->tasksReceived);
-    info.threads.push_back(summary->threads);
-    info.rays += summary->rays;
-  }
-  for (const LostWorker& l : ledger.losses()) {
-    info.faults.lostWorkers.push_back(
-        {l.worker, l.atSeconds, l.reason, l.unfinished, l.lastHeardSeconds});
-  }
-  for (const RejectedWorker& r : master.rejections()) {
-    info.faults.rejectedWorkers.push_back(
-        {r.worker, r.atSeconds, r.reason, r.pixelsTakenBack, r.host});
-  }
+  recordMaster(info, {master, result.summaries, run.events, net.sharedClock(),
+                      loop.leaseSeconds, loop.heartbeatSeconds,
+                      [&](int w) { return options.slowdownOf(w); }});
   info.faults.verifyPercent = master.spotChecks().enabled() ? options.verifyPercent : 0;
   info.faults.verifySeed = seed;
-  info.faults.verifiedPixels = master.spotChecks().verifiedPixels();
-  info.faults.refereeChecks = master.spotChecks().refereeChecks();
-  info.faults.reissuedTasks = ledger.reissuedTasks();
-  info.faults.duplicatePixels = ledger.duplicates();
-  info.faults.endgameCopies = master.endgameCopies();
-  info.faults.resumedPixels = master.resumedCount();
-  info.faults.workerTimeoutSeconds = loop.leaseSeconds;
-  info.faults.heartbeatSeconds = loop.heartbeatSeconds;
   info.master = result.load;
   info.master->checkpoints = checkpoints;
   info.master->checkpointSeconds = checkpointSeconds;

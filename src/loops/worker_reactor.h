@@ -100,7 +100,7 @@ class WorkerReactor {
   void readMail(double now);
 
   int id_;
-  const WorkerReactorOptions& options_;
+  const WorkerReactorOptions options_;  // its own copy: a pump may keep many reactors
   Worker worker_;
   EventLog log_;
   Outbox outbox_;

@@ -20,8 +20,8 @@ enum class SimEventKind {
   WorkerDone,  // a worker finished its setup or its batch
   Join,        // worker `endpoint` joins the running render
   Fail,        // worker `endpoint`'s machine fails now, silently (--mtbf, --fail-share)
-  Lost,        // the master finds worker `endpoint` lost (its connection dropped, or its lease ran out)
-  Checkpoint,  // the master writes a checkpoint (--checkpoint-every)
+  Lost,        // the master hears that worker `endpoint`'s connection dropped
+  Deadline,    // the master's next deadline (a lease, a checkpoint): MasterReactor::onDeadline
 };
 
 struct SimEvent {

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <deque>
+#include <limits>
 #include <numeric>
 #include <optional>
 #include <random>
@@ -12,14 +13,18 @@
 #include <utility>
 
 #include "cluster/master.h"
-#include "cluster/worker.h"
 #include "core/check.h"
 #include "core/input_error.h"
+#include "loops/master_reactor.h"
+#include "loops/run_info.h"
+#include "loops/worker_reactor.h"
 #include "sim/event_queue.h"
 #include "sim/worker_speeds.h"
 
 namespace prt {
 namespace {
+
+constexpr double kNever = std::numeric_limits<double>::infinity();
 
 struct Mail {
   int from = kMaster;
@@ -27,33 +32,38 @@ struct Mail {
   Message message;
 };
 
+// The reactor of a simulated worker: the drivers' rules, in virtual time. Heartbeats are the
+// virtual network's (counted from silences), so the reactor sends none and never finds the
+// master silent.
+WorkerReactorOptions workerOptions(const SimulationOptions& o, int w) {
+  WorkerReactorOptions r;
+  r.batchPixels = o.batchPixels;
+  r.batchSeconds = o.batchSeconds;
+  r.heartbeatSeconds = kNever;
+  r.masterTimeoutSeconds = kNever;
+  r.colours = false;
+  for (const FaultInjection& f : o.faults) {
+    if (f.worker == w) r.fault = f;
+  }
+  return r;
+}
+
+// A simulated machine: the worker reactor every driver pumps, its speed, and what the virtual
+// network knows of it.
 struct SimWorker {
-  SimWorker(int id, WorkerOptions options, double speed_, double speedIndex_)
-      : machine(id, options), speed(speed_), speedIndex(speedIndex_) {}
-  Worker machine;
+  SimWorker(int id, const SimulationOptions& options, double speed_, double speedIndex_)
+      : reactor(id, workerOptions(options, id)), speed(speed_), speedIndex(speedIndex_) {}
+  WorkerReactor reactor;
   double speed;       // relative to the cost map's machine
   double speedIndex;  // seconds; what it measures during setup
   std::vector<SpeedChange> speedChanges;  // its own, sorted
-  bool busy = false;  // computing (setup or a batch): mail waits in the mailbox
+  bool inSetup = false;       // computing its setup (else a batch)
+  double workStart = 0;
   double lastToMaster = 0;    // when it last sent the master anything (heartbeats counted)
   double lastFromMaster = 0;  // when the master last sent it anything (heartbeats counted)
-  bool inSetup = false;
-  bool dead = false;      // failed: it reads, computes and sends nothing more
-  bool crashed = false;   // its connection dropped (rather than going silent)
-  bool lost = false;      // the master has been told
-  double lastHeard = 0;   // failed: when the master last heard from it (heartbeats count)
-  uint64_t rendered = 0;  // pixels rendered so far (for --inject-fault)
-  std::optional<FaultInjection> fault;
-  double workStart = 0;
-  TaskSet batch;
-  std::deque<Mail> mailbox;
+  bool dead = false;          // failed: it reads, computes and sends nothing more
+  bool lost = false;          // the master knows: it heartbeats it no more
 };
-
-MasterOptions masterOptions(const SimulationOptions& options) {
-  MasterOptions m;
-  m.endgame = options.endgame;
-  return m;
-}
 
 SceneMsg sceneMessage(const SimulationOptions& options) {
   SceneMsg scene{std::string(options.sceneBytes, ' '), 1, 1};
@@ -64,6 +74,15 @@ SceneMsg sceneMessage(const SimulationOptions& options) {
   return scene;
 }
 
+MasterOptions masterOptions(const SimulationOptions& options) {
+  MasterOptions m;
+  m.endgame = options.endgame;
+  return m;
+}
+
+// The virtual network and machines that pump the reactors: an agenda of timed events
+// (messages reaching their receiver, the master's services ending, work ending, joins,
+// failures, the master's deadlines), the network model, and the master's service time.
 class Simulation {
  public:
   Simulation(const CostMap& costs, const SimulationOptions& options)
@@ -71,25 +90,24 @@ class Simulation {
         options_(options),
         net_(workerCount(), options.network),
         master_(makeStrategy(options.strategy, options.strategyOptions), startingWorkers(),
-                costs.pixelCount(), sceneMessage(options), nullptr,
-                masterOptions(options)) {
+                costs.pixelCount(), sceneMessage(options), nullptr, masterOptions(options)),
+        reactorOptions_(reactorOptions()),
+        reactor_(master_, reactorOptions_) {
     for (int w = 0; w < workerCount(); ++w) {
       const auto i = static_cast<size_t>(w);
       const double speed = options.speeds[i];
       const double speedIndex = options.speedIndexSeconds.empty()
                                     ? options.baseSpeedIndexSeconds / speed
                                     : options.speedIndexSeconds[i];
-      workers_.emplace_back(w, WorkerOptions{options.batchPixels, options.batchSeconds}, speed,
-                            speedIndex);
+      workers_.emplace_back(w, options, speed, speedIndex);
       workers_.back().speedChanges = changesOf(options.speedChanges, w);
-      for (const FaultInjection& f : options.faults) {
-        if (f.worker == w) workers_.back().fault = f;
-      }
     }
   }
 
   SimulatedRun run() {
-    send(kMaster, master_.start(now_));
+    reactor_.start(now_);
+    send(kMaster, reactor_.takeOutbox());
+    for (int w = 0; w < startingWorkers(); ++w) worker(w).reactor.begin(now_);
     int next = startingWorkers();
     for (const JoinWave& wave : options_.joins) {
       for (int k = 0; k < wave.count; ++k) {
@@ -101,7 +119,7 @@ class Simulation {
       }
     }
     scheduleFailures();
-    if (options_.checkpointEverySeconds > 0) pushCheckpoint(options_.checkpointEverySeconds);
+    scheduleDeadline();
     while (!finished_) {
       if (queue_.empty()) {
         throw std::runtime_error("simulation stalled with " +
@@ -126,23 +144,24 @@ class Simulation {
           finishWork(e.endpoint);
           break;
         case SimEventKind::Join:
-          if (e.from != kMaster) e.endpoint = comeBack(e.from);  // a repaired machine
-          log_.add({EventKind::WorkerJoined, e.endpoint, now_, now_, 0, 0, kMaster, ""});
-          worker(e.endpoint).lastToMaster = now_;  // its silences start when it joins
-          worker(e.endpoint).lastFromMaster = now_;
-          send(kMaster, master_.onWorkerJoined(e.endpoint, now_));
+          join(e.from != kMaster ? comeBack(e.from) : e.endpoint);
           break;
         case SimEventKind::Fail:
           // A machine that has not joined yet, or has finished, fails unnoticed.
-          if (e.endpoint < master_.workerCount() && !worker(e.endpoint).machine.stopped()) {
+          if (e.endpoint < master_.workerCount() &&
+              !worker(e.endpoint).reactor.worker().stopped()) {
             die(e.endpoint, false);
           }
           break;
         case SimEventKind::Lost:
-          lose(e.endpoint);
+          reactor_.onPeerLost(e.endpoint, now_);
+          deadline();
           break;
-        case SimEventKind::Checkpoint:
-          checkpoint();
+        case SimEventKind::Deadline:
+          if (e.time == deadlineAt_) {
+            deadlineAt_ = kNever;
+            deadline();
+          }
           break;
       }
     }
@@ -153,6 +172,77 @@ class Simulation {
   int workerCount() const { return static_cast<int>(options_.speeds.size()); }
   int startingWorkers() const { return workerCount() - joinerCount(options_.joins); }
   SimWorker& worker(int w) { return workers_[static_cast<size_t>(w)]; }
+
+  // The master's reactor: the lease and the checkpoints of the plan; heartbeats are the
+  // virtual network's, counted from silences, and a checkpoint's cost is modelled.
+  MasterReactorOptions reactorOptions() {
+    MasterReactorOptions m;
+    m.leaseSeconds = options_.workerTimeoutSeconds;
+    m.heartbeatSeconds = kNever;
+    m.checkpointEverySeconds = options_.checkpointEverySeconds;
+    if (options_.checkpointEverySeconds > 0) {
+      m.checkpoint = [this](const std::string&, double now) { return checkpoint(now); };
+    }
+    return m;
+  }
+
+  // What follows anything the master does outside a service (a join, a loss, a deadline):
+  // its messages leave at once, losses close the master's silences towards the lost, and a
+  // run with no worker left fails.
+  void afterMaster() {
+    send(kMaster, reactor_.takeOutbox());
+    const auto& losses = master_.ledger().losses();
+    for (; lossesSeen_ < losses.size(); ++lossesSeen_) {
+      SimWorker& w = worker(losses[lossesSeen_].worker);
+      if (w.lost) continue;
+      w.lost = true;
+      const uint64_t beats = beatsIn(w.lastFromMaster);  // the master stops heartbeating it
+      reactor_.load().heartbeatsSent += beats;
+      reactor_.load().sent += beats;
+      heartbeatLoad(beats);
+    }
+    if (master_.failed()) {
+      char text[128];
+      std::snprintf(text, sizeof text,
+                    "every worker was lost by %.1f s; the image cannot be finished", now_);
+      throw std::runtime_error(text);
+    }
+    scheduleDeadline();
+  }
+
+  // The master's deadline: first the heartbeats of every live machine renew its lease (they
+  // are counted, not sent), so only the silent ones run out.
+  void deadline() {
+    for (int w : master_.ledger().expired(now_, options_.workerTimeoutSeconds)) {
+      if (!worker(w).dead) reactor_.onKeepAlive(w, now_);
+    }
+    reactor_.onDeadline(now_);
+    afterMaster();
+  }
+
+  // Just after the reactor's next deadline (a lease runs out once it is exceeded).
+  void scheduleDeadline() {
+    const double due = reactor_.nextDeadline();
+    if (!std::isfinite(due)) return;
+    const double at = std::nextafter(std::max(due, now_), kNever);
+    if (at >= deadlineAt_) return;  // one comes sooner; it schedules the next
+    deadlineAt_ = at;
+    SimEvent e;
+    e.time = at;
+    e.kind = SimEventKind::Deadline;
+    queue_.push(std::move(e));
+  }
+
+  // A worker joins (--join-at, or a repaired machine): the master admits it as it does a
+  // PeerJoined notice.
+  void join(int id) {
+    SimWorker& w = worker(id);
+    w.lastToMaster = now_;  // its silences start when it joins
+    w.lastFromMaster = now_;
+    w.reactor.begin(now_);
+    reactor_.onPeerJoined(id, now_);
+    afterMaster();
+  }
 
   // --mtbf and --fail-share: the machines' failure times, drawn once (deterministic per seed).
   void scheduleFailures() {
@@ -185,8 +275,7 @@ class Simulation {
     const SimWorker& old = worker(was);
     const int id = static_cast<int>(workers_.size());
     const double speed = old.speed, speedIndex = old.speedIndex;
-    workers_.emplace_back(id, WorkerOptions{options_.batchPixels, options_.batchSeconds}, speed,
-                          speedIndex);
+    workers_.emplace_back(id, options_, speed, speedIndex);
     net_.addWorker();
     if (options_.mtbfSeconds > 0) {
       std::exponential_distribution<double> lifetime(1.0 / options_.mtbfSeconds);
@@ -196,15 +285,12 @@ class Simulation {
   }
 
   // Worker `id` fails now. A crash drops its connection: the master hears of it one latency
-  // later. Otherwise it goes silent, and the master finds out a lease after it last heard from
-  // it: its last message, or the last heartbeat it sent before it failed.
+  // later. Otherwise it goes silent: the master last heard its last message, or the last
+  // heartbeat it sent before it failed, and its lease runs out a lease after that.
   void die(int id, bool crash) {
     SimWorker& w = worker(id);
     if (w.dead) return;
     w.dead = true;
-    w.crashed = crash;
-    w.busy = false;
-    w.mailbox.clear();
     if (!crash && options_.repairSeconds > 0) {
       SimEvent back;
       back.time = now_ + options_.repairSeconds;
@@ -214,67 +300,40 @@ class Simulation {
     }
     const double lastWord = w.lastToMaster;
     const uint64_t beats = beatsIn(w.lastToMaster);  // its silence ends here
-    load_.heartbeatsReceived += beats;
-    load_.received += beats;
+    reactor_.load().heartbeatsReceived += beats;
+    reactor_.load().received += beats;
     heartbeatLoad(beats);
-    const double lastHeard = lastWord + static_cast<double>(beats) * options_.heartbeatSeconds();
-    w.lastHeard = lastHeard + options_.network.latencySeconds;
-    SimEvent lost;
-    lost.time = crash ? now_ + options_.network.latencySeconds
-                      : std::max(now_, lastHeard + options_.network.latencySeconds +
-                                           options_.workerTimeoutSeconds);
-    lost.kind = SimEventKind::Lost;
-    lost.endpoint = id;
-    queue_.push(std::move(lost));
+    if (crash) {
+      SimEvent lost;
+      lost.time = now_ + options_.network.latencySeconds;
+      lost.kind = SimEventKind::Lost;
+      lost.endpoint = id;
+      queue_.push(std::move(lost));
+      return;
+    }
+    const double lastBeat = lastWord + static_cast<double>(beats) * options_.heartbeatSeconds();
+    reactor_.onKeepAlive(id, lastBeat + options_.network.latencySeconds);
+    scheduleDeadline();
   }
 
-  void lose(int id) {
-    SimWorker& w = worker(id);
-    if (w.lost || finished_) return;
-    w.lost = true;
-    const uint64_t beats = beatsIn(w.lastFromMaster);  // the master stops heartbeating it
-    load_.heartbeatsSent += beats;
-    load_.sent += beats;
-    heartbeatLoad(beats);
-    char reason[64];
-    if (w.crashed) {
-      std::snprintf(reason, sizeof reason, "connection dropped");
-    } else {
-      std::snprintf(reason, sizeof reason, "silent for %.1f s", options_.workerTimeoutSeconds);
-    }
-    send(kMaster, master_.onWorkerLost(id, now_, reason));
-    if (master_.failed()) {
-      char text[128];
-      std::snprintf(text, sizeof text,
-                    "every worker was lost by %.1f s; the image cannot be finished", now_);
-      throw std::runtime_error(text);
-    }
-  }
-
-  // The master writes a checkpoint: after the message it is handling, if any, it takes none
-  // for the time the write lasts; the next one comes an interval after this one ends.
-  void checkpoint() {
+  // The master writes a checkpoint (MasterReactor asks): after the message it is handling,
+  // if any, it takes none for the time the write lasts. Returns when the write ends.
+  double checkpoint(double now) {
     const double seconds =
         options_.checkpointSecondsPerPixel * static_cast<double>(master_.doneCount());
-    ++load_.checkpoints;
-    load_.checkpointSeconds += seconds;
-    load_.busySeconds += seconds;
-    double ends = now_ + seconds;
+    MasterLoad& load = reactor_.load();
+    ++load.checkpoints;
+    load.checkpointSeconds += seconds;
+    load.busySeconds += seconds;
+    double ends = now + seconds;
     if (masterBusy_) {
       checkpointDebt_ += seconds;  // finishService pays it
-      ends = std::max(ends, now_ + checkpointDebt_);
+      ends = std::max(ends, now + checkpointDebt_);
     } else {
       masterBusy_ = true;
       pushMasterDone(ends);
     }
-    pushCheckpoint(ends + options_.checkpointEverySeconds);
-  }
-
-  void pushCheckpoint(double at) {
-    SimEvent checkpoint;
-    checkpoint.time = at;
-    checkpoint.kind = SimEventKind::Checkpoint;
-    queue_.push(std::move(checkpoint));
+    return ends;
   }
 
   void pushMasterDone(double at) {
@@ -297,54 +356,51 @@ class Simulation {
   // idle time first (startService).
   void heartbeatLoad(uint64_t beats) {
     const double seconds = 0.5 * options_.network.masterServiceSeconds * static_cast<double>(beats);
-    load_.busySeconds += seconds;
+    reactor_.load().busySeconds += seconds;
     heartbeatDebt_ += seconds;
   }
 
   void countHeartbeats(int from, const Envelope& e) {
+    MasterLoad& load = reactor_.load();
     if (from == kMaster) {
       if (e.to < 0) return;
       const uint64_t beats = beatsIn(worker(e.to).lastFromMaster);
-      load_.heartbeatsSent += beats;
-      load_.sent += beats + 1;
+      load.heartbeatsSent += beats;
+      load.sent += beats;  // the message itself was counted by the reactor
       heartbeatLoad(beats);
     } else if (e.to == kMaster) {
       const uint64_t beats = beatsIn(worker(from).lastToMaster);
-      load_.heartbeatsReceived += beats;
-      load_.received += beats;  // the message itself is counted when the master takes it
+      load.heartbeatsReceived += beats;
+      load.received += beats;  // the message itself is counted when the master takes it
       heartbeatLoad(beats);
     }
   }
 
   // At the end: the heartbeats of the silences still open, up to the last result.
   void closeSilences() {
-    for (int w = 0; w < workerCount(); ++w) {
+    MasterLoad& load = reactor_.load();
+    for (int w = 0; w < master_.workerCount(); ++w) {  // those that joined in time
       SimWorker& sw = worker(w);
-      if (w >= master_.workerCount()) continue;  // never joined in time
-      if (sw.dead) {  // its own silence closed when it failed; the master's, when it knew
-        if (!sw.lost) {
-          const uint64_t out = beatsIn(sw.lastFromMaster);
-          load_.heartbeatsSent += out;
-          load_.sent += out;
-          heartbeatLoad(out);
-        }
-        continue;
-      }
+      if (sw.lost) continue;  // both silences closed: when it failed, and when the master knew
       const uint64_t out = beatsIn(sw.lastFromMaster);
-      load_.heartbeatsSent += out;
-      load_.sent += out;
-      const uint64_t in = beatsIn(sw.lastToMaster);
-      load_.heartbeatsReceived += in;
-      load_.received += in;
+      load.heartbeatsSent += out;
+      load.sent += out;
+      uint64_t in = 0;
+      if (!sw.dead) {  // a failed worker's silence closed when it failed
+        in = beatsIn(sw.lastToMaster);
+        load.heartbeatsReceived += in;
+        load.received += in;
+      }
       heartbeatLoad(out + in);
     }
   }
 
   void send(int from, Outbox out) {
+    EventLog& log = from == kMaster ? reactor_.log() : worker(from).reactor.log();
     for (Envelope& e : out) {
       countHeartbeats(from, e);
       const uint64_t bytes = messageBytes(e.message);
-      log_.add({EventKind::MessageSent, from, now_, now_, 0, bytes, e.to, messageName(e.message)});
+      log.add({EventKind::MessageSent, from, now_, now_, 0, bytes, e.to, messageName(e.message)});
       SimEvent reach;
       reach.time = net_.depart(from, bytes, now_);
       reach.kind = SimEventKind::Reach;
@@ -356,11 +412,6 @@ class Simulation {
     }
   }
 
-  void logReceived(int at, const Mail& mail) {
-    log_.add({EventKind::MessageReceived, at, now_, now_, 0, mail.bytes, mail.from,
-              messageName(mail.message)});
-  }
-
   void deliver(int to, Mail mail) {
     if (to == kMaster) {
       masterInbox_.push_back(std::move(mail));
@@ -368,9 +419,10 @@ class Simulation {
       return;
     }
     SimWorker& w = worker(to);
-    if (w.machine.stopped() || w.dead) return;  // a stopped or failed worker reads nothing more
-    w.mailbox.push_back(std::move(mail));
-    if (!w.busy) advance(to);
+    if (w.dead || w.reactor.worker().stopped()) return;  // it reads nothing more
+    w.reactor.onMessage(mail.from, std::move(mail.message), mail.bytes, now_);
+    send(to, w.reactor.takeOutbox());
+    if (!w.reactor.computing()) advance(to);
   }
 
   // The master takes the next message: it handles it at once, then stays busy for the
@@ -379,18 +431,17 @@ class Simulation {
     PRT_CHECK(!masterBusy_ && !masterInbox_.empty());
     const Mail mail = std::move(masterInbox_.front());
     masterInbox_.pop_front();
-    logReceived(kMaster, mail);
-    masterOut_ = master_.onMessage(mail.from, mail.message, now_);
+    reactor_.onMessage(mail.from, mail.message, mail.bytes, now_);
+    masterOut_ = reactor_.takeOutbox();
     masterBusy_ = true;
-    ++load_.received;
-    load_.busySeconds += options_.network.masterServiceSeconds;
+    reactor_.load().busySeconds += options_.network.masterServiceSeconds;
     // Heartbeats that came in while it was idle were handled then; the rest delay this one.
     heartbeatDebt_ = std::max(0.0, heartbeatDebt_ - (now_ - idleSince_));
     pushMasterDone(now_ + options_.network.masterServiceSeconds + heartbeatDebt_);
     heartbeatDebt_ = 0;
   }
 
-  // The run ends when the master has handled the last results, as in the local driver.
+  // The run ends when the master has handled the last results, as in the drivers.
   void finishService() {
     masterBusy_ = false;
     idleSince_ = now_;
@@ -407,36 +458,33 @@ class Simulation {
     }
   }
 
-  // The local driver's worker loop: read every waiting message, then set up or render the
-  // next batch; with nothing to do, wait for mail.
+  // What the reactor does next: set up (the speed index's time), a batch (its cost at the
+  // worker's speed), or fail as injected.
   void advance(int id) {
     SimWorker& w = worker(id);
-    while (!w.mailbox.empty() && !w.machine.stopped()) {
-      const Mail mail = std::move(w.mailbox.front());
-      w.mailbox.pop_front();
-      logReceived(id, mail);
-      send(id, w.machine.onMessage(mail.from, mail.message));
-    }
-    if (w.machine.stopped() || w.dead) return;
+    if (w.dead) return;
     double seconds = 0;
-    if (w.fault && !w.machine.needsSetup() && w.machine.hasWork() &&
-        w.rendered >= w.fault->afterPixels) {
-      die(id, w.fault->kind == FaultInjection::Kind::Crash);  // as the worker loop fails
-      return;
+    switch (w.reactor.next(now_)) {
+      case WorkerStep::Setup:
+        w.inSetup = true;
+        seconds = options_.speedIndexRun && !options_.oracleSpeedIndex ? w.speedIndex : 0.0;
+        break;
+      case WorkerStep::Batch:
+        w.inSetup = false;
+        seconds = workDoneAt(now_, costs_.seconds(w.reactor.batch()) + options_.batchOverheadSeconds,
+                             w.speed, w.speedChanges) -
+                  now_;
+        break;
+      case WorkerStep::Crash:  // as the worker loop fails
+        die(id, true);
+        return;
+      case WorkerStep::Hang:
+        die(id, false);
+        return;
+      case WorkerStep::Wait:
+      case WorkerStep::Stop:
+        return;
     }
-    if (w.machine.needsSetup()) {
-      w.inSetup = true;
-      seconds = options_.speedIndexRun && !options_.oracleSpeedIndex ? w.speedIndex : 0.0;
-    } else if (w.machine.hasWork()) {
-      w.inSetup = false;
-      w.batch = w.machine.nextBatch();
-      seconds = workDoneAt(now_, costs_.seconds(w.batch) + options_.batchOverheadSeconds, w.speed,
-                           w.speedChanges) -
-                now_;
-    } else {
-      return;
-    }
-    w.busy = true;
     w.workStart = now_;
     SimEvent done;
     done.time = now_ + seconds;
@@ -448,50 +496,41 @@ class Simulation {
   void finishWork(int id) {
     SimWorker& w = worker(id);
     if (w.dead) return;  // it failed mid-batch: the batch is lost with it
-    w.busy = false;
     if (w.inSetup) {
-      log_.add({EventKind::Setup, id, w.workStart, now_, 0, 0, 0, ""});
-      send(id, w.machine.setupDone(options_.speedIndexRun ? w.speedIndex
-                                                          : options_.baseSpeedIndexSeconds));
+      w.reactor.onSetupDone(now_,
+                            options_.speedIndexRun ? w.speedIndex : options_.baseSpeedIndexSeconds,
+                            std::nullopt, {});
     } else {
-      log_.add({EventKind::Compute, id, w.workStart, now_, w.batch.size(), 0, 0, ""});
-      w.batch.forEach([&](uint64_t pixel) { owner_[pixel] = id; });
-      w.rendered += w.batch.size();
-      send(id, w.machine.batchDone(w.batch, now_ - w.workStart));
+      w.reactor.batch().forEach([&](uint64_t pixel) { owner_[pixel] = id; });
+      w.reactor.onBatchDone(now_, {}, now_ - w.workStart, 0);
     }
+    send(id, w.reactor.takeOutbox());
     advance(id);
   }
 
   SimulatedRun report() {
-    SimulatedRun run;
+    closeSilences();
     RunInfo info;
     info.driver = "simulated";
     info.strategy = options_.strategy;
     info.width = costs_.width();
     info.height = costs_.height();
     info.masterSpeedIndexSeconds = options_.baseSpeedIndexSeconds;
-    info.workerSpeedIndexSeconds = master_.speedIndices();
     info.serialSeconds = costs_.totalSeconds();
     info.speedIndexRun = options_.speedIndexRun;
-    info.faults.endgameCopies = master_.endgameCopies();
-    info.faults.heartbeatSeconds = options_.heartbeatSeconds();
-    info.faults.workerTimeoutSeconds = options_.workerTimeoutSeconds;
-    for (const LostWorker& l : master_.ledger().losses()) {
-      info.faults.lostWorkers.push_back({l.worker, l.atSeconds, l.reason, l.unfinished,
-                                         worker(l.worker).lastHeard});
+    std::vector<Event> events = std::move(reactor_.log().events);
+    auto& summaries = reactor_.summaries();
+    for (int w = 0; w < master_.workerCount(); ++w) {
+      summaries[static_cast<size_t>(w)] = worker(w).reactor.summary(1, 1.0 / worker(w).speed);
     }
-    info.faults.reissuedTasks = master_.ledger().reissuedTasks();
-    closeSilences();
-    load_.basis = "modelled_service";
-    info.master = load_;
-    info.faults.duplicatePixels = master_.ledger().duplicates();
-    for (int w = 0; w < master_.workerCount(); ++w) {  // those that joined in time included
-      info.slowdowns.push_back(1.0 / worker(w).speed);
-      info.tasksReceived.push_back(worker(w).machine.tasksReceived());
-      info.joinedAt.push_back(master_.ledger().joinedAt(w));
-    }
-    run.report = makeReport(info, log_.events, now_);
-    run.events = std::move(log_.events);
+    recordMaster(info, {master_, summaries, events, true, options_.workerTimeoutSeconds,
+                        options_.heartbeatSeconds(), nullptr});
+    MasterLoad load = reactor_.load();
+    load.basis = "modelled_service";
+    info.master = load;
+    SimulatedRun run;
+    run.report = makeReport(info, events, now_);
+    run.events = std::move(events);
     run.simulationEvents = queue_.scheduled();
     run.owner = std::move(owner_);
     return run;
@@ -501,17 +540,19 @@ class Simulation {
   const SimulationOptions& options_;
   EventQueue queue_;
   NetworkModel net_;
-  EventLog log_;
   Master master_;
-  std::vector<SimWorker> workers_;
+  MasterReactorOptions reactorOptions_;
+  MasterReactor reactor_;
+  std::deque<SimWorker> workers_;
   std::vector<int32_t> owner_ = std::vector<int32_t>(costs_.pixelCount(), -1);
   std::deque<Mail> masterInbox_;
   bool masterBusy_ = false;
   Outbox masterOut_;
-  MasterLoad load_;
-  double heartbeatDebt_ = 0;  // heartbeat service not yet worked off
+  double heartbeatDebt_ = 0;   // heartbeat service not yet worked off
   double checkpointDebt_ = 0;  // a checkpoint due while the master was busy
-  double idleSince_ = 0;      // when the master last finished a service
+  double idleSince_ = 0;       // when the master last finished a service
+  double deadlineAt_ = kNever;  // the master's next deadline event
+  size_t lossesSeen_ = 0;
   double now_ = 0;
   bool finished_ = false;
   std::mt19937_64 repairRandom_{options_.seed ^ 0x9e3779b97f4a7c15ull};  // repaired lifetimes
