@@ -7,13 +7,13 @@
 #include <memory>
 
 #include "cli/live_view.h"
-#include "drive/run_progress.h"
+#include "farm/run_progress.h"
 #include "cli/video_output.h"
 #include "core/input_error.h"
 #include "core/stop_signals.h"
 #include "image/image_io.h"
-#include "drive/frame_renderer.h"
-#include "drive/parallel_run.h"
+#include "farm/frame_renderer.h"
+#include "farm/parallel_run.h"
 #include "trace/renderer.h"
 
 namespace prt::cli {

@@ -5,7 +5,7 @@
 #include <optional>
 
 #include "cli/render_options.h"
-#include "drive/checkpoint.h"
+#include "farm/checkpoint.h"
 #include "trace/render_settings.h"
 #include "trace/scene.h"
 

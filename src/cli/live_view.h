@@ -7,7 +7,7 @@
 #include <optional>
 
 #include "cli/render_options.h"
-#include "drive/progress_board.h"
+#include "farm/progress_board.h"
 #include "live/live_server.h"
 #include "live/terminal_progress.h"
 

@@ -13,7 +13,7 @@
 #include "core/memory_budget.h"
 #include "core/thread_failures.h"
 #include "image/atomic_file.h"
-#include "drive/build_info.h"
+#include "farm/build_info.h"
 
 namespace {
 

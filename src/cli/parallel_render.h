@@ -8,7 +8,7 @@
 #include <utility>
 
 #include "cli/render_options.h"
-#include "drive/parallel_run.h"
+#include "farm/parallel_run.h"
 #include "trace/render_settings.h"
 #include "trace/scene.h"
 

@@ -9,7 +9,7 @@
 
 #include "balance/strategy.h"
 #include "cli/render_options.h"
-#include "drive/parallel_run.h"
+#include "farm/parallel_run.h"
 #include "image/image.h"
 #include "report/report_document.h"
 #include "report/run_page.h"

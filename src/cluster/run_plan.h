@@ -2,7 +2,7 @@
 // RunPlan: what a parallel run and its simulation share — how the work is balanced, how a
 // worker batches its results, which workers join and which fail, and the lease — with each
 // default written once and each value validated in one place. ParallelOptions (the thread and
-// MPI drivers, drive/parallel_options.h) and SimulationOptions (sim/simulator.h) are a
+// MPI drivers, farm/parallel_options.h) and SimulationOptions (sim/simulator.h) are a
 // RunPlan plus what only they have; the command line fills the same fields under the same
 // flags for `prt render` and `prt simulate`.
 

@@ -5,8 +5,6 @@
 #include <stdexcept>
 #include <string>
 
-#include "core/machine.h"
-#include "drive/build_info.h"
 #include "drive/effect_thread.h"
 
 namespace prt {
@@ -21,7 +19,7 @@ WorkerLoopOptions withThreads(WorkerLoopOptions options, int threads) {
 
 class WorkerPump {
  public:
-  WorkerPump(Transport& net, int id, WorkerEngine& engine, const WorkerLoopOptions& options,
+  WorkerPump(Transport& net, int id, Engine& engine, const WorkerLoopOptions& options,
              const WorkerFaultActions& faults)
       : net_(net),
         id_(id),
@@ -165,7 +163,7 @@ class WorkerPump {
     effects_.take();  // rethrows what the effect threw: the loop ends, the driver reports it
     if (doing_ == Doing::Setup) {
       reactor_.onSetupDone(net_.now(), speedIndex_, engine_.taskCount(),
-                           {buildDescription(), hostName()});
+                           engine_.identity());
       doing_ = Doing::Nothing;
       sendOut();
     } else {
@@ -184,7 +182,7 @@ class WorkerPump {
 
   Transport& net_;
   int id_;
-  WorkerEngine& engine_;
+  Engine& engine_;
   const WorkerLoopOptions options_;
   const WorkerFaultActions& faults_;
   WorkerReactor reactor_;
@@ -201,7 +199,7 @@ class WorkerPump {
 
 }  // namespace
 
-WorkerExit runWorkerLoop(Transport& net, int id, WorkerEngine& engine,
+WorkerExit runWorkerLoop(Transport& net, int id, Engine& engine,
                          const WorkerLoopOptions& options, const WorkerFaultActions& faults) {
   return WorkerPump(net, id, engine, options, faults).run();
 }

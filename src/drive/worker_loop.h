@@ -5,7 +5,7 @@
 //   - The rules (mail waits while the worker computes, heartbeats, the master's silence,
 //     injected faults, the events of its summary) are the WorkerReactor's
 //     (loops/worker_reactor.h), which the simulator pumps too; this is its pump over a
-//     Transport, with a WorkerEngine that renders.
+//     Transport, with an Engine (drive/engine.h) that renders.
 //   - The heavy work runs on an EffectThread so that this loop's thread stays free to send
 //     heartbeats while the worker renders; a batch expected to be short renders here, with
 //     heartbeats and mail taken between its pieces.
@@ -16,9 +16,8 @@
 #include <functional>
 #include <optional>
 
-#include "drive/parallel_options.h"
 #include "drive/transport.h"
-#include "drive/worker_engine.h"
+#include "drive/engine.h"
 #include "loops/worker_reactor.h"
 
 namespace prt {
@@ -40,7 +39,7 @@ enum class WorkerExit {
   Faulted,     // an injected fault ended it
 };
 
-WorkerExit runWorkerLoop(Transport& net, int id, WorkerEngine& engine,
+WorkerExit runWorkerLoop(Transport& net, int id, Engine& engine,
                          const WorkerLoopOptions& options, const WorkerFaultActions& faults);
 
 }  // namespace prt

@@ -5,7 +5,7 @@
 
 #include "core/input_error.h"
 #include "core/parallel.h"
-#include "drive/speed_probe.h"
+#include "farm/speed_probe.h"
 #include "lab/csv_table.h"
 #include "metrics/run_report.h"
 #include "scene/scene_file.h"

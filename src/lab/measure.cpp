@@ -4,7 +4,7 @@
 #include <chrono>
 
 #include "balance/registry.h"
-#include "drive/local_driver.h"
+#include "farm/local_driver.h"
 #include "lab/csv_table.h"
 #include "sim/simulator.h"
 #include "trace/renderer.h"

@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-#include "drive/parallel_options.h"
+#include "farm/parallel_options.h"
 #include "metrics/run_report.h"
 #include "sim/cost_map.h"
 #include "trace/render_settings.h"

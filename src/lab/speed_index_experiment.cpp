@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "drive/speed_probe.h"
+#include "farm/speed_probe.h"
 #include "lab/context.h"
 #include "lab/experiments.h"
 #include "lab/measure.h"

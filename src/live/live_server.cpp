@@ -12,7 +12,7 @@
 
 #include "core/thread_start.h"
 #include "core/input_error.h"
-#include "drive/parallel_run.h"
+#include "farm/parallel_run.h"
 #include "image/image_io.h"
 #include "live/live_page.h"
 #include "live/progress_text.h"

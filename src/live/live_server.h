@@ -18,7 +18,7 @@
 #include <string>
 #include <thread>
 
-#include "drive/progress_board.h"
+#include "farm/progress_board.h"
 
 namespace prt {
 

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "drive/progress_board.h"
+#include "farm/progress_board.h"
 
 namespace prt {
 

@@ -10,7 +10,7 @@
 #include <mutex>
 #include <thread>
 
-#include "drive/progress_board.h"
+#include "farm/progress_board.h"
 
 namespace prt {
 

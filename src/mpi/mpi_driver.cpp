@@ -25,7 +25,7 @@
 #include "core/input_file.h"
 #include "core/byte_codec.h"
 #include "core/machine.h"
-#include "drive/build_info.h"
+#include "farm/build_info.h"
 #include "net/invitation.h"
 #include "net/join_welcome.h"
 #include "net/tcp_door.h"

@@ -1,7 +1,7 @@
 #pragma once
 // The MPI driver: start-up and shutdown of a parallel render as the ranks of an mpirun job.
 // All policy — the master and worker loops, leases, heartbeats, reissue, checkpoints, the
-// report — is the driver kit's (drive/parallel_run.h), the same as the local driver's; this
+// report — is the driver kit's (farm/parallel_run.h), the same as the local driver's; this
 // driver only provides the transport (mpi_transport.h) and decides how the job ends.
 //
 //   rank 0        the master: sends the scene, runs the strategy, assembles the image
@@ -20,7 +20,7 @@
 #include <vector>
 
 #include "core/speed_schedule.h"
-#include "drive/parallel_run.h"
+#include "farm/parallel_run.h"
 #include "mpi/mpi_session.h"
 
 namespace prt {

@@ -13,7 +13,7 @@
 #include <stdexcept>
 
 #include "core/input_error.h"
-#include "drive/build_info.h"
+#include "farm/build_info.h"
 #include "image/atomic_file.h"
 
 namespace prt {

@@ -5,7 +5,7 @@
 // with HMAC-SHA256(secret, challenge || its version) and its version. A wrong proof, no proof
 // or another PRT version is refused before the joiner gets the scene.
 //
-// The version rule is drive/build_info.h's.
+// The version rule is farm/build_info.h's.
 // No MPI here: the bytes only. OpenSSL's HMAC and random generator, constant-time compare.
 
 #include <array>
@@ -40,7 +40,7 @@ void writePortFile(const std::string& path, const std::string& port, const Secre
                    const std::vector<std::string>& tcp);
 
 // A joiner's answer: 32 bytes of HMAC of (challenge, build, host), then its build
-// description (drive/build_info.h), a zero byte and its machine's name.
+// description (farm/build_info.h), a zero byte and its machine's name.
 std::vector<uint8_t> proofFor(const Secret& secret, const Challenge& challenge,
                               const std::string& build, const std::string& host);
 // Empty when `proof` answers `challenge` for `secret` from a compatible build; otherwise why

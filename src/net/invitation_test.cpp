@@ -1,6 +1,6 @@
 #include "net/invitation.h"
 
-#include "drive/build_info.h"
+#include "farm/build_info.h"
 
 #include <gtest/gtest.h>
 

@@ -4,7 +4,7 @@
 // MPI (MpiLink::adopt) or TCP (net/tcp_door.h) alike.
 
 #include "cluster/messages.h"
-#include "drive/parallel_options.h"
+#include "farm/parallel_options.h"
 
 namespace prt {
 

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "drive/local_transport.h"
-#include "drive/parallel_options.h"
+#include "farm/parallel_options.h"
 #include "drive/transport.h"
 #include "net/tcp_door.h"
 #include "net/tcp_joiners.h"

@@ -11,7 +11,7 @@
 
 #include "core/input_error.h"
 #include "core/machine.h"
-#include "drive/build_info.h"
+#include "farm/build_info.h"
 #include "net/link_tags.h"
 #include "net/tcp_frames.h"
 

@@ -1,4 +1,4 @@
-// libFuzzer target: the checkpoint reader (drive/checkpoint.h) on checkpoints made by hand.
+// libFuzzer target: the checkpoint reader (farm/checkpoint.h) on checkpoints made by hand.
 // The input's first two bytes choose the image (1..64 by 1..64 pixels); the rest is the
 // file's body after its header (the runs, the colours, the owners), closed with a valid
 // checksum, so the fuzzer reaches what a checksum cannot protect against: a file someone
@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "core/input_error.h"
-#include "drive/checkpoint.h"
+#include "farm/checkpoint.h"
 
 namespace {
 

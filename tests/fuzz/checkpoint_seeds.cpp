@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "drive/checkpoint.h"
+#include "farm/checkpoint.h"
 
 int main(int argc, char** argv) {
   if (argc != 2) {

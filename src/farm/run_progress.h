@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "core/task_set.h"
-#include "drive/progress_board.h"
+#include "farm/progress_board.h"
 #include "metrics/remaining_cost.h"
 
 namespace prt {

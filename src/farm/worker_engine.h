@@ -10,14 +10,15 @@
 #include <vector>
 
 #include "cluster/messages.h"
-#include "drive/speed_index_kind.h"
-#include "drive/frame_renderer.h"
-#include "drive/throttle.h"
+#include "drive/engine.h"
+#include "farm/speed_index_kind.h"
+#include "farm/frame_renderer.h"
+#include "farm/throttle.h"
 #include "trace/renderer.h"
 
 namespace prt {
 
-class WorkerEngine {
+class WorkerEngine final : public Engine {
  public:
   // slowdownChanges: this worker's --slowdown-at changes, sorted (changesOf()); threads: its
   // rendering threads.
@@ -28,26 +29,27 @@ class WorkerEngine {
         speedIndexDiscs_(speedIndexDiscs),
         threads_(threads < 1 ? 1 : threads) {}
 
-  int threads() const { return threads_; }
-  double slowdown() const { return throttle_.slowdown(); }  // the factor at the start
+  int threads() const override { return threads_; }
+  double slowdown() const override { return throttle_.slowdown(); }  // the factor at the start
+  WorkerIdentity identity() const override;
 
   // Parses the scene text (the master already validated it) and prepares the renderer of its
   // first frame.
-  void load(const SceneMsg& scene);
-  uint64_t taskCount() const { return frames_ ? frames_->taskCount() : 0; }  // once loaded
+  void load(const SceneMsg& scene) override;
+  uint64_t taskCount() const override { return frames_ ? frames_->taskCount() : 0; }  // once loaded
   // The speed index (Towers of Hanoi time, or the ray-tracing probe's on the loaded scene),
   // slowed down like everything else this worker computes, for the worker as it renders: the
   // probe renders with all its threads; the Hanoi run solves one puzzle on each thread at
   // once and reports the time per puzzle (the wall time over the thread count), so a worker
   // of N cores has 1/N of one core's index.
-  double measureSpeedIndex();
+  double measureSpeedIndex() override;
   // Renders `batch` (tasks of the frame sequence: FrameRenderer) on the worker's threads;
   // returns 3 floats per task. `seconds` receives the wall
   // time including the slowdown wait, `rays` the rays traced.
   // With one thread, `between` (if set) is called between pieces of the batch on this thread,
   // so the caller can keep sending heartbeats while it renders without a second thread.
   std::vector<float> render(const TaskSet& batch, double& seconds, uint64_t& rays,
-                            const std::function<void()>& between = {});
+                            const std::function<void()>& between = {}) override;
 
 
  private:

@@ -1,4 +1,4 @@
-#include "drive/progress_board.h"
+#include "farm/progress_board.h"
 
 namespace prt {
 

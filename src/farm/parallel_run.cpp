@@ -1,4 +1,4 @@
-#include "drive/parallel_run.h"
+#include "farm/parallel_run.h"
 
 #include <algorithm>
 #include <cmath>

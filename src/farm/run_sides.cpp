@@ -13,12 +13,12 @@
 #include "cluster/master.h"
 #include "core/cpu_time.h"
 #include "core/thread_start.h"
-#include "drive/build_info.h"
-#include "drive/frame_renderer.h"
+#include "farm/build_info.h"
+#include "farm/frame_renderer.h"
 #include "drive/master_loop.h"
-#include "drive/parallel_run.h"
-#include "drive/run_progress.h"
-#include "drive/worker_engine.h"
+#include "farm/parallel_run.h"
+#include "farm/run_progress.h"
+#include "farm/worker_engine.h"
 #include "loops/run_info.h"
 
 namespace prt {
@@ -89,7 +89,7 @@ ParallelRun runMasterSide(Transport& net, const RunRequest& request, const std::
     whileHeartbeating(net, beat, workerCount, [&] { renderer.render(checked, 1, colors); });
     return asFloats(colors);
   };
-  // The version rule (drive/build_info.h): the same PRT version, any trace kernels.
+  // The version rule (farm/build_info.h): the same PRT version, any trace kernels.
   masterOptions.admit = [](const WorkerIdentity& id) -> std::string {
     if (versionOf(id.build) == prtVersion()) return "";
     std::string shown;

@@ -1,4 +1,4 @@
-#include "drive/throttle.h"
+#include "farm/throttle.h"
 
 #include <gtest/gtest.h>
 

@@ -14,7 +14,7 @@
 #include "core/speed_index.h"
 #include "core/speed_schedule.h"
 #include "cluster/fault_injection.h"
-#include "drive/speed_index_kind.h"
+#include "farm/speed_index_kind.h"
 
 namespace prt {
 

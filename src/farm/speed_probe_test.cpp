@@ -1,4 +1,4 @@
-#include "drive/speed_probe.h"
+#include "farm/speed_probe.h"
 
 #include <gtest/gtest.h>
 

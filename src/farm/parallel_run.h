@@ -12,9 +12,9 @@
 #include <vector>
 
 #include "cluster/messages.h"
-#include "drive/checkpoint.h"
-#include "drive/parallel_options.h"
-#include "drive/progress_board.h"
+#include "farm/checkpoint.h"
+#include "farm/parallel_options.h"
+#include "farm/progress_board.h"
 #include "drive/transport.h"
 #include "drive/worker_loop.h"
 #include "image/image.h"
@@ -49,7 +49,7 @@ struct RunRequest {
   // Called on the master's thread with each frame of a sequence as soon as all its pixels are
   // in, in the order they complete (and at the start, for frames a checkpoint completes).
   std::function<void(uint64_t ordinal, const Image& frame)> frameDone;
-  // Where the master publishes its progress while it runs (see drive/progress_board.h);
+  // Where the master publishes its progress while it runs (see farm/progress_board.h);
   // null: nowhere.
   ProgressBoard* progress = nullptr;
   // Called on the master's thread with the machine of each worker rejected (its results were

@@ -1,4 +1,4 @@
-#include "drive/checkpoint.h"
+#include "farm/checkpoint.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "drive/run_progress.h"
+#include "farm/run_progress.h"
 
 #include <gtest/gtest.h>
 

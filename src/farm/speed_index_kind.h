@@ -1,6 +1,6 @@
 #pragma once
 // Which speed index the workers measure and report: the paper's Towers of Hanoi run
-// (core/speed_index.h) or a ray-tracing probe of the scene itself (drive/speed_probe.h).
+// (core/speed_index.h) or a ray-tracing probe of the scene itself (farm/speed_probe.h).
 
 #include <string>
 #include <vector>

@@ -13,7 +13,7 @@
 // rendering, the measurement is faithful while the workers' combined demand (sum of 1/k_i)
 // fits the free cores.
 
-#include "drive/parallel_run.h"
+#include "farm/parallel_run.h"
 
 namespace prt {
 

@@ -1,12 +1,14 @@
-#include "drive/worker_engine.h"
+#include "farm/worker_engine.h"
 
 #include <algorithm>
 
 #include "core/check.h"
 #include "core/cpu_time.h"
 #include "core/parallel.h"
+#include "core/machine.h"
 #include "core/speed_index.h"
-#include "drive/speed_probe.h"
+#include "farm/build_info.h"
+#include "farm/speed_probe.h"
 #include "scene/scene_file.h"
 
 namespace prt {
@@ -80,6 +82,8 @@ double WorkerEngine::measureSpeedIndex() {
   }
   return seconds;
 }
+
+WorkerIdentity WorkerEngine::identity() const { return {buildDescription(), hostName()}; }
 
 std::vector<float> WorkerEngine::render(const TaskSet& batch, double& seconds, uint64_t& rays,
                                        const std::function<void()>& between) {

@@ -1,4 +1,4 @@
-#include "drive/frame_renderer.h"
+#include "farm/frame_renderer.h"
 
 #include <chrono>
 

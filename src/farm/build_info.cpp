@@ -1,4 +1,4 @@
-#include "drive/build_info.h"
+#include "farm/build_info.h"
 
 #include "trace/isa_level.h"
 

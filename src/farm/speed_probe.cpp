@@ -1,9 +1,9 @@
-#include "drive/speed_probe.h"
+#include "farm/speed_probe.h"
 
 #include <algorithm>
 
 #include "core/speed_index.h"
-#include "drive/throttle.h"
+#include "farm/throttle.h"
 
 namespace prt {
 

@@ -1,4 +1,4 @@
-#include "drive/local_driver.h"
+#include "farm/local_driver.h"
 
 #include <chrono>
 #include <memory>

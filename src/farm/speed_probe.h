@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "core/task_set.h"
-#include "drive/speed_index_kind.h"
+#include "farm/speed_index_kind.h"
 #include "trace/renderer.h"
 
 namespace prt {
