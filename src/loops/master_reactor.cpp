@@ -7,8 +7,8 @@
 
 namespace prt {
 
-MasterReactor::MasterReactor(Master& master, const MasterReactorOptions& options)
-    : master_(master), options_(options) {
+MasterReactor::MasterReactor(Master& master, const MasterReactorOptions& options, EventLog* log)
+    : master_(master), options_(options), log_(log != nullptr ? log : &own_) {
   summaries_.resize(static_cast<size_t>(master.workerCount()));
 }
 
@@ -49,7 +49,7 @@ void MasterReactor::onMessage(int from, const Message& m, uint64_t bytes, double
   if (std::holds_alternative<HeartbeatMsg>(m)) {
     ++load_.heartbeatsReceived;
   } else {
-    log_.add({EventKind::MessageReceived, kMaster, now, now, 0, bytes, from, messageName(m)});
+    log_->add({EventKind::MessageReceived, kMaster, now, now, 0, bytes, from, messageName(m)});
   }
   if (options_.results) {
     if (const auto* results = std::get_if<ResultsMsg>(&m)) options_.results(from, *results, now);
@@ -70,7 +70,7 @@ void MasterReactor::onPeerLost(int from, double now) {
 void MasterReactor::onPeerJoined(int from, double now) {
   if (from != master_.workerCount()) return;  // out of turn: not a worker we can number
   summaries_.emplace_back();
-  log_.add({EventKind::WorkerJoined, from, now, now, 0, 0, kMaster, ""});
+  log_->add({EventKind::WorkerJoined, from, now, now, 0, 0, kMaster, ""});
   take(master_.onWorkerJoined(from, now), now);
 }
 
@@ -127,7 +127,7 @@ void MasterReactor::logLosses() {
   const auto& losses = master_.ledger().losses();
   for (; lossesLogged_ < losses.size(); ++lossesLogged_) {
     const LostWorker& l = losses[lossesLogged_];
-    log_.add({EventKind::WorkerLost, l.worker, l.atSeconds, l.atSeconds, 0, 0, 0, l.reason});
+    log_->add({EventKind::WorkerLost, l.worker, l.atSeconds, l.atSeconds, 0, 0, 0, l.reason});
   }
 }
 
@@ -141,7 +141,7 @@ void MasterReactor::logRejections() {
       return l.worker == r.worker && l.reason.rfind("rejected: ", 0) == 0;
     });
     if (logged) continue;
-    log_.add({EventKind::WorkerLost, r.worker, r.atSeconds, r.atSeconds, 0, 0, 0,
+    log_->add({EventKind::WorkerLost, r.worker, r.atSeconds, r.atSeconds, 0, 0, 0,
               "rejected: " + r.reason});
   }
 }

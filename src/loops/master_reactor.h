@@ -51,7 +51,11 @@ struct MasterReactorOptions {
 
 class MasterReactor {
  public:
-  MasterReactor(Master& master, const MasterReactorOptions& options);
+  // `log`: where its events go; null: its own (a pump with the workers' events in the same
+  // process, the simulator, may keep one log for all).
+  MasterReactor(Master& master, const MasterReactorOptions& options, EventLog* log = nullptr);
+  MasterReactor(const MasterReactor&) = delete;  // its log may be its own
+  MasterReactor& operator=(const MasterReactor&) = delete;
 
   // Inputs. Each may leave messages in the outbox.
   void start(double now);
@@ -77,7 +81,7 @@ class MasterReactor {
   std::vector<int> takeHeartbeats();  // workers to send a HeartbeatMsg (not logged)
 
   Master& master() { return master_; }
-  EventLog& log() { return log_; }
+  EventLog& log() { return *log_; }
   MasterLoad& load() { return load_; }
   std::vector<std::optional<WorkerSummary>>& summaries() { return summaries_; }
   bool isWorker(int from) const { return from >= 0 && from < master_.workerCount(); }
@@ -92,7 +96,8 @@ class MasterReactor {
 
   Master& master_;
   const MasterReactorOptions& options_;
-  EventLog log_;
+  EventLog own_;
+  EventLog* log_;
   MasterLoad load_;
   Outbox outbox_;
   std::vector<int> heartbeats_;

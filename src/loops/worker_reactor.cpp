@@ -7,12 +7,13 @@
 
 namespace prt {
 
-WorkerReactor::WorkerReactor(int id, const WorkerReactorOptions& options)
+WorkerReactor::WorkerReactor(int id, const WorkerReactorOptions& options, EventLog* log)
     : id_(id),
       options_(options),
       // A batch keeps every thread busy: batchPixels for each of them.
       worker_(id, WorkerOptions{options.batchPixels * static_cast<uint64_t>(options.threads),
-                                options.batchSeconds}) {}
+                                options.batchSeconds}),
+      log_(log != nullptr ? log : &own_) {}
 
 void WorkerReactor::begin(double now) {
   lastFromMaster_ = now;
@@ -42,7 +43,7 @@ void WorkerReactor::onMalformed(int from, const std::string& what) {
 }
 
 void WorkerReactor::handle(const Mail& mail, double now) {
-  log_.add({EventKind::MessageReceived, id_, now, now, 0, mail.bytes, mail.from,
+  log_->add({EventKind::MessageReceived, id_, now, now, 0, mail.bytes, mail.from,
             messageName(mail.message)});
   take(worker_.onMessage(mail.from, mail.message), now);
 }
@@ -99,7 +100,7 @@ WorkerStep WorkerReactor::next(double now) {
 void WorkerReactor::onSetupDone(double now, double speedIndexSeconds,
                                 std::optional<uint64_t> taskLimit, WorkerIdentity identity) {
   computing_ = false;
-  log_.add({EventKind::Setup, id_, workStart_, now, 0, 0, 0, ""});
+  log_->add({EventKind::Setup, id_, workStart_, now, 0, 0, 0, ""});
   if (taskLimit) worker_.limitTasks(*taskLimit);
   take(worker_.setupDone(speedIndexSeconds, std::move(identity)), now);
   readMail(now);
@@ -117,7 +118,7 @@ void WorkerReactor::onBatchDone(double now, std::vector<float> rgb, double compu
   lastBatchSeconds_ = computeSeconds;
   rays_ += rays;
   // A spot check is work of this worker's, but not its pixels: labelled apart.
-  log_.add({EventKind::Compute, id_, workStart_, workStart_ + computeSeconds, batch_.size(), 0, 0,
+  log_->add({EventKind::Compute, id_, workStart_, workStart_ + computeSeconds, batch_.size(), 0, 0,
             worker_.batchIsCheck() ? kCheckLabel : ""});
   rendered_ += batch_.size();
   take(options_.colours ? worker_.batchDone(batch_, std::move(rgb), computeSeconds)
@@ -127,7 +128,7 @@ void WorkerReactor::onBatchDone(double now, std::vector<float> rgb, double compu
 }
 
 WorkerSummary WorkerReactor::summary(int threads, double slowdown) {
-  return WorkerSummary{rays_, worker_.tasksReceived(), threads, slowdown, std::move(log_.events)};
+  return WorkerSummary{rays_, worker_.tasksReceived(), threads, slowdown, std::move(own_.events)};
 }
 
 }  // namespace prt

@@ -57,7 +57,11 @@ enum class WorkerStep {
 
 class WorkerReactor {
  public:
-  WorkerReactor(int id, const WorkerReactorOptions& options);
+  // `log`: where its events go; null: its own log, sent with its summary (a pump that keeps
+  // many reactors in one process, the simulator, may keep one log for all).
+  WorkerReactor(int id, const WorkerReactorOptions& options, EventLog* log = nullptr);
+  WorkerReactor(const WorkerReactor&) = delete;  // its log may be its own
+  WorkerReactor& operator=(const WorkerReactor&) = delete;
 
   // Inputs.
   void begin(double now);  // the worker starts listening
@@ -85,7 +89,7 @@ class WorkerReactor {
   WorkerSummary summary(int threads, double slowdown);
 
   const Worker& worker() const { return worker_; }
-  EventLog& log() { return log_; }
+  EventLog& log() { return *log_; }
   uint64_t rendered() const { return rendered_; }
   double lastBatchSeconds() const { return lastBatchSeconds_; }
 
@@ -102,7 +106,8 @@ class WorkerReactor {
   int id_;
   const WorkerReactorOptions options_;  // its own copy: a pump may keep many reactors
   Worker worker_;
-  EventLog log_;
+  EventLog own_;
+  EventLog* log_;
   Outbox outbox_;
   std::vector<Mail> inbox_;
   bool computing_ = false;

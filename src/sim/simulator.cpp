@@ -51,8 +51,9 @@ WorkerReactorOptions workerOptions(const SimulationOptions& o, int w) {
 // A simulated machine: the worker reactor every driver pumps, its speed, and what the virtual
 // network knows of it.
 struct SimWorker {
-  SimWorker(int id, const SimulationOptions& options, double speed_, double speedIndex_)
-      : reactor(id, workerOptions(options, id)), speed(speed_), speedIndex(speedIndex_) {}
+  SimWorker(int id, const SimulationOptions& options, EventLog& log, double speed_,
+            double speedIndex_)
+      : reactor(id, workerOptions(options, id), &log), speed(speed_), speedIndex(speedIndex_) {}
   WorkerReactor reactor;
   double speed;       // relative to the cost map's machine
   double speedIndex;  // seconds; what it measures during setup
@@ -92,14 +93,14 @@ class Simulation {
         master_(makeStrategy(options.strategy, options.strategyOptions), startingWorkers(),
                 costs.pixelCount(), sceneMessage(options), nullptr, masterOptions(options)),
         reactorOptions_(reactorOptions()),
-        reactor_(master_, reactorOptions_) {
+        reactor_(master_, reactorOptions_, &log_) {
     for (int w = 0; w < workerCount(); ++w) {
       const auto i = static_cast<size_t>(w);
       const double speed = options.speeds[i];
       const double speedIndex = options.speedIndexSeconds.empty()
                                     ? options.baseSpeedIndexSeconds / speed
                                     : options.speedIndexSeconds[i];
-      workers_.emplace_back(w, options, speed, speedIndex);
+      workers_.emplace_back(w, options, log_, speed, speedIndex);
       workers_.back().speedChanges = changesOf(options.speedChanges, w);
     }
   }
@@ -275,7 +276,7 @@ class Simulation {
     const SimWorker& old = worker(was);
     const int id = static_cast<int>(workers_.size());
     const double speed = old.speed, speedIndex = old.speedIndex;
-    workers_.emplace_back(id, options_, speed, speedIndex);
+    workers_.emplace_back(id, options_, log_, speed, speedIndex);
     net_.addWorker();
     if (options_.mtbfSeconds > 0) {
       std::exponential_distribution<double> lifetime(1.0 / options_.mtbfSeconds);
@@ -396,11 +397,10 @@ class Simulation {
   }
 
   void send(int from, Outbox out) {
-    EventLog& log = from == kMaster ? reactor_.log() : worker(from).reactor.log();
     for (Envelope& e : out) {
       countHeartbeats(from, e);
       const uint64_t bytes = messageBytes(e.message);
-      log.add({EventKind::MessageSent, from, now_, now_, 0, bytes, e.to, messageName(e.message)});
+      log_.add({EventKind::MessageSent, from, now_, now_, 0, bytes, e.to, messageName(e.message)});
       SimEvent reach;
       reach.time = net_.depart(from, bytes, now_);
       reach.kind = SimEventKind::Reach;
@@ -518,7 +518,7 @@ class Simulation {
     info.masterSpeedIndexSeconds = options_.baseSpeedIndexSeconds;
     info.serialSeconds = costs_.totalSeconds();
     info.speedIndexRun = options_.speedIndexRun;
-    std::vector<Event> events = std::move(reactor_.log().events);
+    std::vector<Event> events = std::move(log_.events);  // everyone's, as they happened
     auto& summaries = reactor_.summaries();
     for (int w = 0; w < master_.workerCount(); ++w) {
       summaries[static_cast<size_t>(w)] = worker(w).reactor.summary(1, 1.0 / worker(w).speed);
@@ -541,6 +541,7 @@ class Simulation {
   EventQueue queue_;
   NetworkModel net_;
   Master master_;
+  EventLog log_;  // every event of the run, the master's and the workers', in order
   MasterReactorOptions reactorOptions_;
   MasterReactor reactor_;
   std::deque<SimWorker> workers_;
