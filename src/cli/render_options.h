@@ -12,6 +12,7 @@
 #include "cluster/worker.h"
 #include "core/frame_sequence.h"
 #include "image/image_io.h"
+#include "loops/master_reactor.h"
 
 namespace prt::cli {
 
@@ -53,7 +54,7 @@ struct RenderOptions : RunPlanFlags {
   bool noCheckpoint = false;               // --no-checkpoint: no automatic checkpoint
   bool checkpointAutomatic = false;        // resolved: the path is the automatic one, kept
                                            // only once the render proves long (or is stopped)
-  double checkpointEverySeconds = 10;      // --checkpoint-every SECONDS
+  double checkpointEverySeconds = kDefaultCheckpointEverySeconds;  // --checkpoint-every SECONDS
   bool resume = false;                     // --resume: start from the checkpoint
   std::optional<double> serialSeconds;     // serial time for speed-up
   bool measureSerial = false;              // render serially first to measure it

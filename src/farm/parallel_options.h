@@ -9,6 +9,7 @@
 #include "balance/registry.h"
 #include "cluster/leases.h"
 #include "cluster/run_plan.h"
+#include "loops/master_reactor.h"
 #include "cluster/worker.h"
 #include "core/task_set.h"
 #include "core/speed_index.h"
@@ -47,7 +48,7 @@ struct ParallelOptions : RunPlan {
   // more than kAutomaticCheckpointSeconds, or is stopped with pixels done.
   bool checkpointAutomatic = false;
   bool announceCheckpoint = true;      // say on stderr when the automatic one starts
-  double checkpointEverySeconds = 10;  // between periodic checkpoints
+  double checkpointEverySeconds = kDefaultCheckpointEverySeconds;  // between periodic checkpoints
   std::string acceptWorkersPath;       // open doors for `prt join`: addresses and secret in this file
   std::string acceptAddress;           // the TCP door's [ADDRESS][:PORT] ("": every interface, any port)
   // joins (RunPlan): threads only.

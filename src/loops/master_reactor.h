@@ -38,10 +38,14 @@
 
 namespace prt {
 
+// --checkpoint-every's default: seconds between periodic checkpoints.
+inline constexpr double kDefaultCheckpointEverySeconds = 10;
+
 struct MasterReactorOptions {
   double leaseSeconds = kDefaultLeaseSeconds;  // --worker-timeout
-  double heartbeatSeconds = 1;          // master -> worker keep-alive; infinite: the transport's
-  double checkpointEverySeconds = 10;   // --checkpoint-every
+  // Master -> worker keep-alive; infinite: the transport's.
+  double heartbeatSeconds = heartbeatSecondsFor(kDefaultLeaseSeconds);
+  double checkpointEverySeconds = kDefaultCheckpointEverySeconds;  // --checkpoint-every
   // Writes a checkpoint for the reason given; returns the time it ended. Null: none.
   std::function<double(const std::string& why, double now)> checkpoint;
   // Hears every results message before the master takes it (duplicates too: their cost was

@@ -38,7 +38,8 @@ struct WorkerReactorOptions {
                                                               // results, per thread
   double batchSeconds = 0;            // batches grow to this much work (WorkerOptions)
   int threads = 1;                    // a batch keeps every thread busy
-  double heartbeatSeconds = 1.0;      // a message to the master at least this often
+  // A message to the master at least this often.
+  double heartbeatSeconds = heartbeatSecondsFor(kDefaultLeaseSeconds);
   double masterTimeoutSeconds = kDefaultLeaseSeconds;  // silence from the master after which
                                                        // the worker stops
   std::optional<FaultInjection> fault;

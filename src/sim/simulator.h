@@ -1,42 +1,35 @@
 #pragma once
 // The simulator: a discrete-event simulation, in virtual time, of a master and workers of
 // given speeds on a network (network_model.h), replaying a per-pixel cost map instead of
-// rendering. It drives the very Master, Worker and Strategy objects the thread and MPI
-// drivers drive, with the same loop as the local driver (drive/local_driver.cpp):
-//   - a worker reads all the mail waiting for it before it computes, and none while it
-//     computes (setup or a batch); the master handles one message at a time;
-//   - setup lasts the worker's speed index, baseSpeedIndex / speed (the local driver's setup
-//     is loading the scene and timing the Towers of Hanoi);
+// rendering. It pumps the very MasterReactor and WorkerReactors (loops/) that the thread and
+// MPI drivers pump over a transport, around the same Master, Worker and Strategy objects, so
+// every rule of a run (mail that waits while a worker computes, leases, losses, joins,
+// injected faults, checkpoints, the events) is the drivers' own. What the simulator supplies
+// is what a machine and a network would:
+//   - setup lasts the worker's speed index, baseSpeedIndex / speed (a real worker's setup is
+//     loading the scene and timing the Towers of Hanoi);
 //   - a batch lasts (cost(batch) + batchOverhead) / speed, where cost is the map's full-speed
-//     seconds;
-//   - results carry no colours, but are counted at the size they would have.
-// It emits the same event stream (metrics/events.h), hence the same report and Chrome trace,
-// with times in virtual seconds; the run ends when the master holds every pixel, as a real
-// run does.
-// The master's load is modelled: each message it receives keeps it busy for the service time
-// (network_model.h); heartbeats, sent as the driver kit's loops send them — by a worker after
-// `heartbeatSeconds` without a word to the master, by the master to a worker it has sent
-// nothing for as long — are counted from the silences without an event each, and each costs
-// the master half a service time (the measured cost of one message in or out, where a
-// service is a message in and its reply). The heartbeats that fall in a silence are worked
-// off in the master's idle time first, and delay its next service only when it had none.
-// The report's master_busy_share is that busy time over the elapsed time. Workers joining
-// mid-run are simulated (--join-at: the master admits each at its time, as the master loop
-// does on a PeerJoined notice), and so are workers that fail:
-//   - --inject-fault W:PIXELS:crash|hang, as in a real run: the worker fails before its next
-//     batch once it has rendered PIXELS; a crash drops its connection (the master hears of it
-//     one latency later, as the thread driver's does), a hang goes silent;
-//   - --mtbf S: each starting worker's machine fails at a time drawn from an exponential
-//     distribution of mean S (--seed), once; --fail-share F --fail-at T: a fraction F of the
-//     workers, picked at random, fail together at T (a switch, a rack). Such machines go
-//     silent, mid-batch too.
-// A silent worker is lost a lease (leaseSeconds, --worker-timeout) after the master last heard
-// from it: its last message, or the last heartbeat it sent before it failed. The master then
-// hands its unfinished tasks back to the strategy, as in a real run; the report lists the
-// losses and the reissued tasks. With repairSeconds (--repair), a machine that failed comes
-// back that long after, as a new worker that joins the run (numbered after the others) and
-// may fail again (--mtbf); not with --join-at. A run whose every worker is lost at once
-// throws, as a real master gives up then, even if machines would come back.
+//     seconds; results carry no colours, but are counted at the size they would have;
+//   - messages take the network model's time; the master handles one at a time, busy for the
+//     service time (network_model.h) before its replies leave;
+//   - heartbeats are not sent as events: those a silence holds (one per interval, by a worker
+//     without a word to the master, by the master to a worker it has sent nothing) are
+//     counted when the silence ends, each costing the master half a service time (worked off
+//     in its idle time first), and the live machines' leases are renewed as their heartbeats
+//     would renew them (MasterReactor::onKeepAlive). So a machine that fails silently is lost
+//     by the reactor's own rule, a lease after it was last heard from, and work stays
+//     proportional to messages, not to time;
+//   - a checkpoint keeps the master from taking messages for checkpointSecondsPerPixel per
+//     pixel done (a real master writes on its own thread, between messages).
+// Failures: --inject-fault W:PIXELS:crash|hang as in a real run (a crash drops the connection,
+// heard one latency later; a hang goes silent); --mtbf S: each starting machine fails at an
+// exponentially distributed time of mean S (--seed); --fail-share F --fail-at T: a fraction F
+// fails together at T (a switch, a rack). With repairSeconds (--repair) a failed machine comes
+// back that long after as a new worker that joins the run (numbered after the others) and may
+// fail again; not with --join-at. --join-at adds workers as PeerJoined notices do. A run whose
+// every worker is lost throws, as a real master gives up then, even if machines would come back.
+// It emits the same event stream (metrics/events.h) and report (loops/run_info.h), with times
+// in virtual seconds; the run ends when the master holds every pixel.
 //
 // Work is proportional to messages and batches, never to pixels beyond one pass over the
 // map (tasks travel as compact runs), so 1,024 workers on a 3840x2160 image take seconds.
