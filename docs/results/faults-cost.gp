@@ -28,10 +28,10 @@ EOD
 $d2 << EOD
 1 17.2115628
 2 16.6940235
-5 16.6787758
+5 16.6787762
 15 16.8858643
-60 17.4602546
-180 22.468213
+60 17.6578957
+180 22.4682134
 EOD
 plot $d0 using 1:2 with linespoints linewidth 2 pointtype 5 linecolor rgb "#1f77b4" title "MTBF 100 h", \
     $d1 using 1:2 with linespoints linewidth 2 pointtype 7 linecolor rgb "#d62728" title "MTBF 10 h", \
