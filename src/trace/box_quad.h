@@ -21,7 +21,9 @@
 #include <cstdint>
 #include <limits>
 
-#if defined(__SSE2__)
+#if defined(__AVX__)
+#include <immintrin.h>
+#elif defined(__SSE2__)
 #include <emmintrin.h>
 #endif
 
@@ -33,6 +35,10 @@ namespace prt {
 
 using Float4 = float __attribute__((vector_size(16)));
 using Int4 = int32_t __attribute__((vector_size(16)));
+// Eight lanes: one AVX register in the x86-64-v3 build, two SSE registers in the baseline
+// build (GCC splits each operation in two), the same IEEE operations lane by lane in both.
+using Float8 = float __attribute__((vector_size(32)));
+using Int8 = int32_t __attribute__((vector_size(32)));
 
 namespace detail {
 // kQuadPlanes[bits][a]: the byte offset in BoxQuad::planes of axis a's max plane where bit a
@@ -49,6 +55,17 @@ inline constexpr uint32_t kQuadPlanes[8][3] = {
     {quadPlane(5, 0), quadPlane(5, 1), quadPlane(5, 2)},
     {quadPlane(6, 0), quadPlane(6, 1), quadPlane(6, 2)},
     {quadPlane(7, 0), quadPlane(7, 1), quadPlane(7, 2)}};
+// The same for BoxOct::planes, whose lanes are twice as wide.
+constexpr uint32_t octPlane(int bits, int a) { return 2 * quadPlane(bits, a); }
+inline constexpr uint32_t kOctPlanes[8][3] = {
+    {octPlane(0, 0), octPlane(0, 1), octPlane(0, 2)},
+    {octPlane(1, 0), octPlane(1, 1), octPlane(1, 2)},
+    {octPlane(2, 0), octPlane(2, 1), octPlane(2, 2)},
+    {octPlane(3, 0), octPlane(3, 1), octPlane(3, 2)},
+    {octPlane(4, 0), octPlane(4, 1), octPlane(4, 2)},
+    {octPlane(5, 0), octPlane(5, 1), octPlane(5, 2)},
+    {octPlane(6, 0), octPlane(6, 1), octPlane(6, 2)},
+    {octPlane(7, 0), octPlane(7, 1), octPlane(7, 2)}};
 }  // namespace detail
 
 // A ray prepared for BoxQuad tests, given M, the largest coordinate magnitude of any box. All
@@ -61,6 +78,12 @@ struct QuadRay {
   // the slab and leaves it: the min plane when travelling +, the max plane when travelling -.
   const uint32_t* entryPlane;
   const uint32_t* exitPlane;
+  // The same broadcast to eight lanes, and the offsets in BoxOct::planes, for BoxOct.
+  Float8 invDirection8[3];
+  Float8 entryOffset8[3];
+  Float8 exitOffset8[3];
+  const uint32_t* entryPlane8;
+  const uint32_t* exitPlane8;
 
   QuadRay(const Ray& ray, float maxCoordinate) {
     constexpr float inf = std::numeric_limits<float>::infinity();
@@ -96,6 +119,16 @@ struct QuadRay {
     const int octant = signBits(inv) & 7;
     entryPlane = detail::kQuadPlanes[octant];
     exitPlane = detail::kQuadPlanes[7 - octant];
+    for (int a = 0; a < 3; ++a) {
+      invDirection8[a] = __builtin_shufflevector(invDirection[a], invDirection[a], 0, 1, 2, 3,
+                                                 0, 1, 2, 3);
+      entryOffset8[a] = __builtin_shufflevector(entryOffset[a], entryOffset[a], 0, 1, 2, 3, 0,
+                                                1, 2, 3);
+      exitOffset8[a] = __builtin_shufflevector(exitOffset[a], exitOffset[a], 0, 1, 2, 3, 0, 1,
+                                               2, 3);
+    }
+    entryPlane8 = detail::kOctPlanes[octant];
+    exitPlane8 = detail::kOctPlanes[7 - octant];
   }
 
  private:
@@ -182,6 +215,62 @@ struct BoxQuad {
     return _mm_movemask_ps(reinterpret_cast<__m128>(inside));
 #else
     return static_cast<int>((inside[0] & 1) | (inside[1] & 2) | (inside[2] & 4) | (inside[3] & 8));
+#endif
+  }
+};
+
+// Eight boxes tested at once: BoxQuad's test, lane for lane the same operations in the same
+// order (so the same masks and entries as two BoxQuads holding the same boxes), in half the
+// instructions where the build has AVX.
+struct BoxOct {
+  Float8 planes[3][2];  // [axis][0: min plane, 1: max plane], one box per lane
+
+  BoxOct() {
+    constexpr float big = std::numeric_limits<float>::max();
+    for (auto& axis : planes) {
+      axis[0] = Float8{big, big, big, big, big, big, big, big};
+      axis[1] = -axis[0];
+    }
+  }
+
+  void set(int lane, const Bounds& b) {
+    for (int a = 0; a < 3; ++a) {
+      planes[a][0][lane] = static_cast<float>(b.lo[a]);
+      planes[a][1][lane] = static_cast<float>(b.hi[a]);
+    }
+  }
+
+  // As BoxQuad::hits, for eight boxes: bit i for box i.
+  int hits(const QuadRay& r, float tMin, float tMax, Float8& entry) const {
+    const Float8 lowest = {tMin, tMin, tMin, tMin, tMin, tMin, tMin, tMin};
+    const Float8 highest = {tMax, tMax, tMax, tMax, tMax, tMax, tMax, tMax};
+    const char* base = reinterpret_cast<const char*>(planes);
+    Float8 tIn[3], tOut[3];
+    for (int a = 0; a < 3; ++a) {
+      tIn[a] = *reinterpret_cast<const Float8*>(base + r.entryPlane8[a]) * r.invDirection8[a] -
+               r.entryOffset8[a];
+      tOut[a] = *reinterpret_cast<const Float8*>(base + r.exitPlane8[a]) * r.invDirection8[a] -
+                r.exitOffset8[a];
+    }
+    const Float8 in01 = tIn[0] > tIn[1] ? tIn[0] : tIn[1];
+    const Float8 in2 = tIn[2] > lowest ? tIn[2] : lowest;
+    const Float8 out01 = tOut[0] < tOut[1] ? tOut[0] : tOut[1];
+    const Float8 out2 = tOut[2] < highest ? tOut[2] : highest;
+    const Float8 lo = in01 > in2 ? in01 : in2;
+    const Float8 hi = out01 < out2 ? out01 : out2;
+    entry = lo;
+    const Int8 inside = lo <= hi;  // per lane: all bits set or clear
+#if defined(__AVX__)
+    return _mm256_movemask_ps(reinterpret_cast<__m256>(inside));
+#elif defined(__SSE2__)
+    const Int4 low = __builtin_shufflevector(inside, inside, 0, 1, 2, 3);
+    const Int4 high = __builtin_shufflevector(inside, inside, 4, 5, 6, 7);
+    return _mm_movemask_ps(reinterpret_cast<__m128>(low)) |
+           _mm_movemask_ps(reinterpret_cast<__m128>(high)) << 4;
+#else
+    int bits = 0;
+    for (int i = 0; i < 8; ++i) bits |= (inside[i] & 1) << i;
+    return bits;
 #endif
   }
 };

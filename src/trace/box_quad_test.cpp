@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <bit>
+#include <cstdint>
+
 #include "core/rng.h"
 
 namespace prt {
@@ -163,6 +166,50 @@ TEST(BoxQuadTest, FloatRoundingIsOutwards) {
   EXPECT_EQ(floatAbove(kInf), std::numeric_limits<float>::infinity());
   EXPECT_EQ(floatBelow(0.0), 0.0f);
   EXPECT_GE(static_cast<double>(floatAbove(1e300)), 1e300);
+}
+
+}  // namespace
+}  // namespace prt
+
+namespace prt {
+namespace {
+
+// BoxOct is BoxQuad eight lanes wide: the same masks and entries, bit for bit, as two quads
+// holding the same boxes, on the rays above (so it is just as conservative).
+TEST(BoxOctTest, GivesWhatTwoQuadsGiveBitForBit) {
+  Rng rng(11);
+  for (const double scale : {1e-3, 1.0, 1e6}) {
+    for (int i = 0; i < 20000; ++i) {
+      Bounds box[8];
+      BoxQuad quads[2];
+      BoxOct oct;
+      double maxCoordinate = 0;
+      for (int lane = 0; lane < 8; ++lane) {
+        box[lane] = randomBox(rng, scale);
+        if (lane == 5 && i % 3 == 0) continue;  // an unused lane, as in a node not full
+        quads[lane / 4].set(lane % 4, box[lane]);
+        oct.set(lane, box[lane]);
+        for (int a = 0; a < 3; ++a) {
+          maxCoordinate = std::max({maxCoordinate, std::abs(box[lane].lo[a]),
+                                    std::abs(box[lane].hi[a])});
+        }
+      }
+      const Ray ray{randomOrigin(rng, box[i % 4]), randomDirection(rng)};
+      const QuadRay q(ray, floatAbove(maxCoordinate));
+      const float tMin = floatBelow(rng.uniform() < 0.5 ? 0.0 : rng.uniform() * scale);
+      const float tMax = floatAbove(rng.uniform() < 0.5 ? kInf : rng.uniform() * 20 * scale);
+      Float4 low, high;
+      const int expected =
+          quads[0].hits(q, tMin, tMax, low) | quads[1].hits(q, tMin, tMax, high) << 4;
+      Float8 entry;
+      ASSERT_EQ(oct.hits(q, tMin, tMax, entry), expected) << "scale " << scale << " ray " << i;
+      for (int lane = 0; lane < 8; ++lane) {
+        const float want = lane < 4 ? low[lane] : high[lane - 4];
+        EXPECT_EQ(std::bit_cast<uint32_t>(entry[lane]), std::bit_cast<uint32_t>(want))
+            << "ray " << i << " lane " << lane;
+      }
+    }
+  }
 }
 
 }  // namespace

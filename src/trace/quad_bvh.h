@@ -1,6 +1,6 @@
 #pragma once
 // QuadBvh: a bounding volume hierarchy of eight-way nodes, each holding its children's boxes in
-// two BoxQuads tested side by side in single precision (conservatively: see box_quad.h); a
+// one BoxOct tested at once in single precision (conservatively: see box_quad.h); a
 // child is another node or a leaf: a single item, or (for a mesh's triangles) a block of up to
 // four items the caller tests at once. The tree is built binary — top-down by a full-sweep
 // surface area heuristic over the three axes, bottom-up by greedy merging for small sets, so
@@ -71,19 +71,18 @@ class QuadBvh {
   static constexpr uint32_t kEmpty = ~0u;
   static constexpr int kMaxDepth = 128;  // of the binary tree; the build guarantees it
 
-  // A node's children: lanes of BoxQuads, tested side by side (independent operations).
-  static constexpr int kQuads = 2;
-  static constexpr int kWidth = 4 * kQuads;
+  // A node's children: the eight lanes of a BoxOct, tested at once.
+  static constexpr int kWidth = 8;
 
   struct alignas(64) Node {  // 256 bytes, a power of two: cheap indexing, four cache lines
-    BoxQuad boxes[kQuads];
+    BoxOct boxes;
     uint32_t child[kWidth];
     int leafLanes = 0, nodeLanes = 0;  // bit i set when child i is a leaf, or a node
     Node() {
       for (uint32_t& c : child) c = kEmpty;
     }
     void set(int lane, const Bounds& box, uint32_t ref) {
-      boxes[lane / 4].set(lane % 4, box);
+      boxes.set(lane, box);
       child[lane] = ref;
       ((ref & kItem) ? leafLanes : nodeLanes) |= 1 << lane;
     }
@@ -123,12 +122,9 @@ void QuadBvh::traverseLeaves(const Ray& r, double tMin, double tMax, Visit&& vis
   for (;;) {
     const Node& n = nodes_[child];
     float entry[kWidth];
-    int mask = 0;
-    for (int q = 0; q < kQuads; ++q) {
-      Float4 e;
-      mask |= n.boxes[q].hits(ray, tMinF, tMaxF, e) << (4 * q);
-      std::memcpy(entry + 4 * q, &e, sizeof e);
-    }
+    Float8 e;
+    const int mask = n.boxes.hits(ray, tMinF, tMaxF, e);
+    std::memcpy(entry, &e, sizeof e);
     for (int leaves = mask & n.leafLanes; leaves != 0; leaves &= leaves - 1) {
       const int lane = std::countr_zero(static_cast<unsigned>(leaves));
       if (entry[lane] > tMax) continue;  // a nearer hit has been found since the test
