@@ -65,9 +65,17 @@ class ProgressBoard {
   void publish(ProgressSnapshot snapshot);
   // True when a reader asked for the image since the last publishImage.
   bool imageWanted() const { return imageWanted_.load(std::memory_order_relaxed); }
+  // True once a reader of the image is attached (watch()): the render's last image is then
+  // copied for it. With none (a render with no live page), no image is ever copied.
+  bool watched() const { return watched_.load(std::memory_order_relaxed); }
   void publishImage(PartialImage image);
 
   // The readers' side.
+  // A reader of the image is attached (the live page): an image is wanted from now on.
+  void watch() {
+    watched_.store(true, std::memory_order_relaxed);
+    imageWanted_.store(true, std::memory_order_relaxed);
+  }
   ProgressSnapshot snapshot() const;
   // The last image copied, and a request for a fresh one.
   std::shared_ptr<const PartialImage> image();
@@ -88,7 +96,8 @@ class ProgressBoard {
   ProgressSnapshot snapshot_;
   RunFacts facts_;
   std::shared_ptr<const PartialImage> image_;
-  std::atomic<bool> imageWanted_{true};
+  std::atomic<bool> imageWanted_{false};
+  std::atomic<bool> watched_{false};
 };
 
 }  // namespace prt

@@ -192,7 +192,7 @@ void RunProgress::end(double now, const Image& image, const Master* master, bool
   }
   s.message = message;
   board_.publish(std::move(s));
-  copyImage(image, imageFirstTask, owner);
+  if (board_.watched()) copyImage(image, imageFirstTask, owner);
 }
 
 }  // namespace prt

@@ -7,6 +7,7 @@ namespace {
 
 TEST(RunProgress, PublishesTheSnapshotAndOnlyFinishedPixelsOfTheFrameInProgress) {
   ProgressBoard board;
+  board.watch();                         // a live page reads the image
   RunProgress progress(board, 4, 2, 2);  // two frames of 4x2
   Image image(4, 4);                     // both frames stacked
   for (size_t p = 0; p < image.pixelCount(); ++p) image.set(p, Color(1, 0.5, 0.25));
@@ -35,6 +36,20 @@ TEST(RunProgress, PublishesTheSnapshotAndOnlyFinishedPixelsOfTheFrameInProgress)
   EXPECT_EQ(board.snapshot().phase, ProgressSnapshot::Phase::Finished);
   EXPECT_EQ(board.snapshot().message, "written to x.png");
   EXPECT_EQ(*board.snapshot().etaSeconds, 0.0);
+}
+
+// With no reader of the image attached (no live page), the render never copies it.
+TEST(RunProgress, NoImageIsCopiedWithoutAReader) {
+  ProgressBoard board;
+  RunProgress progress(board, 4, 2, 1);
+  Image image(4, 2);
+  progress.finished(TaskSet::range(0, 8));
+  progress.tick(1.0, image, nullptr, true);
+  progress.end(2.0, image, nullptr, true, "written");
+  EXPECT_FALSE(board.imageWanted());
+  EXPECT_EQ(board.snapshot().phase, ProgressSnapshot::Phase::Finished);
+  board.watch();
+  EXPECT_EQ(board.image(), nullptr) << "nothing was copied";
 }
 
 }  // namespace

@@ -165,6 +165,7 @@ struct LiveServer::Impl {
 
 LiveServer::LiveServer(ProgressBoard& board, const ServeAddress& address)
     : impl_(std::make_unique<Impl>(board)), host_(address.host) {
+  board.watch();  // the page shows the image: the render copies it for the page
   if (!isLoopbackHost(address.host)) token_ = randomToken();
   httplib::Server& s = impl_->server;
   s.new_task_queue = [] { return new httplib::ThreadPool(2); };
