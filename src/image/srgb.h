@@ -18,6 +18,9 @@ double srgbDecode(double encoded);
 // Linear -> 8-bit sRGB code: encode, clamp to [0, 1], round to nearest. NaN maps to 0 so a
 // bad sample shows as black instead of being undefined behaviour in the conversion.
 uint8_t linearToSrgb8(double linear);
+// The same code computed from the curve (a pow per call): linearToSrgb8's definition, which it
+// reaches through a table.
+uint8_t linearToSrgb8ByCurve(double linear);
 
 // 8-bit sRGB code -> linear (table lookup). For every code c,
 // linearToSrgb8(srgb8ToLinear(c)) == c, also after rounding the result to float.
