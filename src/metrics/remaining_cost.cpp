@@ -59,18 +59,44 @@ void RemainingCost::setPrior(std::vector<double> perCell) {
   prior_ = std::move(perCell);
 }
 
+// Calls f(cell, n) for the tasks of `tasks` below taskCount_, n at a time in one cell: a run
+// of neighbouring pixels is cut only at the ends of rows and cells, so the work is in
+// proportion to the cells a batch touches, not to its pixels.
+template <typename F>
+void RemainingCost::forEachCellSpan(const TaskSet& tasks, F&& f) const {
+  const auto w = static_cast<uint64_t>(width_);
+  const auto cw = static_cast<uint64_t>(cellW_);
+  for (const TaskRun& run : tasks.runs()) {
+    if (run.stride != 1) {
+      for (uint64_t i = 0; i < run.count; ++i) {
+        const uint64_t t = run.at(i);
+        if (t < taskCount_) f(cellOf(t), uint64_t{1});
+      }
+      continue;
+    }
+    const uint64_t end = std::min(run.first + run.count, taskCount_);
+    for (uint64_t t = run.first; t < end;) {
+      const uint64_t x = (t % perFrame_) % w;
+      const uint64_t rowLeft = w - x;                      // to the end of the row
+      const uint64_t cellLeft = std::min(cw - x % cw, rowLeft);  // to the end of the cell
+      const uint64_t n = std::min(cellLeft, end - t);
+      f(cellOf(t), n);
+      t += n;
+    }
+  }
+}
+
 void RemainingCost::measured(const TaskSet& tasks, double seconds, double now) {
   if (tasks.empty() || !std::isfinite(seconds) || seconds < 0) return;
   const double each = seconds / static_cast<double>(tasks.size());
   const size_t perFrameCells = acrossFrames_.size();
-  tasks.forEach([&](uint64_t t) {
-    if (t >= taskCount_) return;
-    const size_t c = cellOf(t);
-    cells_[c].seconds += each;
-    ++cells_[c].samples;
-    acrossFrames_[c % perFrameCells].seconds += each;
-    ++acrossFrames_[c % perFrameCells].samples;
-    if (!prior_.empty()) measuredPrior_ += prior_[c % perFrameCells];
+  forEachCellSpan(tasks, [&](size_t c, uint64_t n) {
+    const double share = each * static_cast<double>(n);
+    cells_[c].seconds += share;
+    cells_[c].samples += n;
+    acrossFrames_[c % perFrameCells].seconds += share;
+    acrossFrames_[c % perFrameCells].samples += n;
+    if (!prior_.empty()) measuredPrior_ += prior_[c % perFrameCells] * static_cast<double>(n);
   });
   measuredSeconds_ += seconds;
   measuredSamples_ += tasks.size();
@@ -80,21 +106,18 @@ void RemainingCost::measured(const TaskSet& tasks, double seconds, double now) {
 }
 
 void RemainingCost::finished(const TaskSet& tasks) {
-  tasks.forEach([&](uint64_t t) {
-    if (t >= taskCount_) return;
-    const size_t c = cellOf(t);
-    ++cells_[c].finished;
-    ++finished_;
+  forEachCellSpan(tasks, [&](size_t c, uint64_t n) {
+    cells_[c].finished += n;
+    finished_ += n;
   });
 }
 
 void RemainingCost::unfinished(const TaskSet& tasks) {
-  tasks.forEach([&](uint64_t t) {
-    if (t >= taskCount_) return;
-    Cell& cell = cells_[cellOf(t)];
-    if (cell.finished == 0) return;
-    --cell.finished;
-    --finished_;
+  forEachCellSpan(tasks, [&](size_t c, uint64_t n) {
+    Cell& cell = cells_[c];
+    const uint64_t back = std::min(n, cell.finished);
+    cell.finished -= back;
+    finished_ -= back;
   });
 }
 

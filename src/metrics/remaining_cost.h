@@ -72,6 +72,8 @@ class RemainingCost {
     uint64_t finished = 0;
   };
   size_t cellOf(uint64_t task) const;
+  template <typename F>
+  void forEachCellSpan(const TaskSet& tasks, F&& f) const;
   double rate(double now) const;
   double unmeasured(size_t frameCell, double overall) const;
   static double cellMean(const Cell& cell, const Cell& across, double fallback);

@@ -96,5 +96,37 @@ TEST(RemainingCost, APriorScalesCellsNobodyMeasuredYet) {
   }
 }
 
+// Batches are taken a cell at a time: long runs across rows and cells, strided runs and
+// single pixels leave the same counts and estimates (to rounding) as pixel by pixel.
+TEST(RemainingCost, RunsCountAsTheirPixelsDo) {
+  const int w = 37, h = 23;  // cells that do not divide the image evenly
+  const uint64_t frames = 2, tasks = uint64_t{w} * h * frames;
+  RemainingCost byRuns(w, h, frames), byPixels(w, h, frames);
+  auto pixelByPixel = [](const TaskSet& t) {
+    TaskSet single;
+    t.forEach([&](uint64_t p) { single.append(TaskRun{p, 1, 1}); });
+    return single;
+  };
+  TaskSet strided;
+  strided.append(TaskRun{1200, 40, 3});
+  const TaskSet batches[] = {TaskSet::range(0, 500), TaskSet::range(500, 700), strided,
+                             TaskSet::range(1320, tasks - 1320 + 7)};  // 7 beyond the end
+  double now = 0;
+  for (const TaskSet& b : batches) {
+    now += 1;
+    byRuns.measured(b, 0.01 * static_cast<double>(b.size()), now);
+    byPixels.measured(pixelByPixel(b), 0.01 * static_cast<double>(b.size()), now);
+    byRuns.finished(b);
+    byPixels.finished(pixelByPixel(b));
+    EXPECT_EQ(byRuns.finishedCount(), byPixels.finishedCount());
+    ASSERT_EQ(byRuns.remainingWork().has_value(), byPixels.remainingWork().has_value());
+    EXPECT_NEAR(*byRuns.remainingWork(), *byPixels.remainingWork(), 1e-9);
+  }
+  byRuns.unfinished(TaskSet::range(100, 900));
+  byPixels.unfinished(pixelByPixel(TaskSet::range(100, 900)));
+  EXPECT_EQ(byRuns.finishedCount(), byPixels.finishedCount());
+  EXPECT_NEAR(*byRuns.remainingWork(), *byPixels.remainingWork(), 1e-9);
+}
+
 }  // namespace
 }  // namespace prt
