@@ -46,7 +46,9 @@ TEST_F(HostileObj, TexturesThatAreNotPlainImagesWarn) {
   Batch batch;
   int k = 0;
   for (const std::string texture : {"pipe.png", "folder.png", "zero.png", "huge.png", "text.png",
-                                    "/dev/zero", "C:\\no\\such\\drive.png", "%2e%2e%2fx.png"}) {
+                                    "/dev/zero", "C:\\no\\such\\drive.png",
+                                    // a parent folder's file, escaped: no such file there
+                                    "%2e%2e%2fprt-hostile-no-such-texture.png"}) {
     const std::string name = "cube" + std::to_string(k++);
     const std::string obj = write(name + ".obj", std::string(kObj).replace(7, 4, name));
     write(name + ".mtl", "newmtl Painted\nKd 0.8 0.2 0.2\nmap_Kd " + texture + "\n");
