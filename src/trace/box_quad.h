@@ -16,6 +16,7 @@
 // out of the test, which only accepts more. A NaN (0 * inf) widens the interval, as in
 // hitsBounds: also accepting.
 
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -40,50 +41,76 @@ using Int4 = int32_t __attribute__((vector_size(16)));
 using Float8 = float __attribute__((vector_size(32)));
 using Int8 = int32_t __attribute__((vector_size(32)));
 
-namespace detail {
-// kQuadPlanes[bits][a]: the byte offset in BoxQuad::planes of axis a's max plane where bit a
-// is set, of its min plane otherwise.
-constexpr uint32_t quadPlane(int bits, int a) {
-  return static_cast<uint32_t>((2 * a + ((bits >> a) & 1)) * sizeof(Float4));
+template <int kLanes>
+struct LaneVectors;
+template <>
+struct LaneVectors<4> {
+  using Floats = Float4;
+  using Ints = Int4;
+};
+template <>
+struct LaneVectors<8> {
+  using Floats = Float8;
+  using Ints = Int8;
+};
+
+// Bit i set when lane i of a comparison's result is true (all bits set).
+inline int laneBits(const Int4& m) {
+#if defined(__SSE2__)
+  return _mm_movemask_ps(reinterpret_cast<__m128>(m));
+#else
+  return static_cast<int>((m[0] & 1) | (m[1] & 2) | (m[2] & 4) | (m[3] & 8));
+#endif
 }
-inline constexpr uint32_t kQuadPlanes[8][3] = {
-    {quadPlane(0, 0), quadPlane(0, 1), quadPlane(0, 2)},
-    {quadPlane(1, 0), quadPlane(1, 1), quadPlane(1, 2)},
-    {quadPlane(2, 0), quadPlane(2, 1), quadPlane(2, 2)},
-    {quadPlane(3, 0), quadPlane(3, 1), quadPlane(3, 2)},
-    {quadPlane(4, 0), quadPlane(4, 1), quadPlane(4, 2)},
-    {quadPlane(5, 0), quadPlane(5, 1), quadPlane(5, 2)},
-    {quadPlane(6, 0), quadPlane(6, 1), quadPlane(6, 2)},
-    {quadPlane(7, 0), quadPlane(7, 1), quadPlane(7, 2)}};
-// The same for BoxOct::planes, whose lanes are twice as wide.
-constexpr uint32_t octPlane(int bits, int a) { return 2 * quadPlane(bits, a); }
-inline constexpr uint32_t kOctPlanes[8][3] = {
-    {octPlane(0, 0), octPlane(0, 1), octPlane(0, 2)},
-    {octPlane(1, 0), octPlane(1, 1), octPlane(1, 2)},
-    {octPlane(2, 0), octPlane(2, 1), octPlane(2, 2)},
-    {octPlane(3, 0), octPlane(3, 1), octPlane(3, 2)},
-    {octPlane(4, 0), octPlane(4, 1), octPlane(4, 2)},
-    {octPlane(5, 0), octPlane(5, 1), octPlane(5, 2)},
-    {octPlane(6, 0), octPlane(6, 1), octPlane(6, 2)},
-    {octPlane(7, 0), octPlane(7, 1), octPlane(7, 2)}};
+inline int laneBits(const Int8& m) {
+#if defined(__AVX__)
+  return _mm256_movemask_ps(reinterpret_cast<__m256>(m));
+#else
+  return laneBits(Int4{m[0], m[1], m[2], m[3]}) | laneBits(Int4{m[4], m[5], m[6], m[7]}) << 4;
+#endif
+}
+
+namespace detail {
+// kPlanes<kLanes>[bits][a]: the byte offset in BoxLanes<kLanes>::planes of axis a's max plane
+// where bit a is set, of its min plane otherwise.
+template <int kLanes>
+constexpr std::array<std::array<uint32_t, 3>, 8> planeOffsets() {
+  std::array<std::array<uint32_t, 3>, 8> t{};
+  for (int bits = 0; bits < 8; ++bits) {
+    for (int a = 0; a < 3; ++a) {
+      t[bits][a] = static_cast<uint32_t>((2 * a + ((bits >> a) & 1)) * kLanes * sizeof(float));
+    }
+  }
+  return t;
+}
+template <int kLanes>
+inline constexpr std::array<std::array<uint32_t, 3>, 8> kPlanes = planeOffsets<kLanes>();
 }  // namespace detail
 
-// A ray prepared for BoxQuad tests, given M, the largest coordinate magnitude of any box. All
+// A ray prepared for BoxLanes tests, given M, the largest coordinate magnitude of any box. All
 // of it in float SIMD: a handful of instructions per ray.
 struct QuadRay {
-  Float4 invDirection[3];  // each component broadcast to the four lanes
-  Float4 entryOffset[3];   // o*inv + S: subtracted from p*inv gives a lower bound of t
-  Float4 exitOffset[3];    // o*inv - S: an upper bound
-  // Per axis, the byte offsets in BoxQuad::planes of the planes through which the ray enters
-  // the slab and leaves it: the min plane when travelling +, the max plane when travelling -.
-  const uint32_t* entryPlane;
-  const uint32_t* exitPlane;
-  // The same broadcast to eight lanes, and the offsets in BoxOct::planes, for BoxOct.
-  Float8 invDirection8[3];
-  Float8 entryOffset8[3];
-  Float8 exitOffset8[3];
-  const uint32_t* entryPlane8;
-  const uint32_t* exitPlane8;
+  // Per lane count: each component broadcast to the lanes, and per axis the byte offsets in
+  // BoxLanes::planes of the planes through which the ray enters the slab and leaves it (the
+  // min plane when travelling +, the max plane when travelling -).
+  template <int kLanes>
+  struct Lanes {
+    typename LaneVectors<kLanes>::Floats invDirection[3];
+    typename LaneVectors<kLanes>::Floats entryOffset[3];  // o*inv + S: p*inv minus it bounds t below
+    typename LaneVectors<kLanes>::Floats exitOffset[3];   // o*inv - S: an upper bound
+    const uint32_t* entryPlane;
+    const uint32_t* exitPlane;
+  };
+  Lanes<4> four;
+  Lanes<8> eight;
+  template <int kLanes>
+  const Lanes<kLanes>& lanes() const {
+    if constexpr (kLanes == 4) {
+      return four;
+    } else {
+      return eight;
+    }
+  }
 
   QuadRay(const Ray& ray, float maxCoordinate) {
     constexpr float inf = std::numeric_limits<float>::infinity();
@@ -106,29 +133,22 @@ struct QuadRay {
     const Float4 invF = usable ? inv : kZero;
     const Float4 in = usable ? oi + slack : kInf;
     const Float4 out = usable ? oi - slack : kMinusInf;
-    invDirection[0] = __builtin_shufflevector(invF, invF, 0, 0, 0, 0);
-    invDirection[1] = __builtin_shufflevector(invF, invF, 1, 1, 1, 1);
-    invDirection[2] = __builtin_shufflevector(invF, invF, 2, 2, 2, 2);
-    entryOffset[0] = __builtin_shufflevector(in, in, 0, 0, 0, 0);
-    entryOffset[1] = __builtin_shufflevector(in, in, 1, 1, 1, 1);
-    entryOffset[2] = __builtin_shufflevector(in, in, 2, 2, 2, 2);
-    exitOffset[0] = __builtin_shufflevector(out, out, 0, 0, 0, 0);
-    exitOffset[1] = __builtin_shufflevector(out, out, 1, 1, 1, 1);
-    exitOffset[2] = __builtin_shufflevector(out, out, 2, 2, 2, 2);
     // Bit a set when travelling - along axis a (a -0 component has inv = -inf: max side).
     const int octant = signBits(inv) & 7;
-    entryPlane = detail::kQuadPlanes[octant];
-    exitPlane = detail::kQuadPlanes[7 - octant];
     for (int a = 0; a < 3; ++a) {
-      invDirection8[a] = __builtin_shufflevector(invDirection[a], invDirection[a], 0, 1, 2, 3,
-                                                 0, 1, 2, 3);
-      entryOffset8[a] = __builtin_shufflevector(entryOffset[a], entryOffset[a], 0, 1, 2, 3, 0,
-                                                1, 2, 3);
-      exitOffset8[a] = __builtin_shufflevector(exitOffset[a], exitOffset[a], 0, 1, 2, 3, 0, 1,
-                                               2, 3);
+      // x - 0 is x for every x, -0 included (0 + x would turn -0 into +0).
+      const Float4 i4 = invF[a] - Float4{}, in4 = in[a] - Float4{}, out4 = out[a] - Float4{};
+      four.invDirection[a] = i4;
+      four.entryOffset[a] = in4;
+      four.exitOffset[a] = out4;
+      eight.invDirection[a] = __builtin_shufflevector(i4, i4, 0, 1, 2, 3, 0, 1, 2, 3);
+      eight.entryOffset[a] = __builtin_shufflevector(in4, in4, 0, 1, 2, 3, 0, 1, 2, 3);
+      eight.exitOffset[a] = __builtin_shufflevector(out4, out4, 0, 1, 2, 3, 0, 1, 2, 3);
     }
-    entryPlane8 = detail::kOctPlanes[octant];
-    exitPlane8 = detail::kOctPlanes[7 - octant];
+    four.entryPlane = detail::kPlanes<4>[octant].data();
+    four.exitPlane = detail::kPlanes<4>[7 - octant].data();
+    eight.entryPlane = detail::kPlanes<8>[octant].data();
+    eight.exitPlane = detail::kPlanes<8>[7 - octant].data();
   }
 
  private:
@@ -164,17 +184,21 @@ inline float floatBelow(double x) {
 }
 inline float floatAbove(double x) { return -floatBelow(-x); }
 
-struct BoxQuad {
-  Float4 planes[3][2];  // [axis][0: min plane, 1: max plane], one box per lane
+// kLanes boxes tested against one ray at once (4 or 8: the lanes of LaneVectors).
+template <int kLanes>
+struct BoxLanes {
+  using Floats = typename LaneVectors<kLanes>::Floats;
+  using Ints = typename LaneVectors<kLanes>::Ints;
+  Floats planes[3][2];  // [axis][0: min plane, 1: max plane], one box per lane
 
   // Empty boxes in every lane: no ray meets them (unless no axis can be tested at all). The
   // planes are the largest floats, not infinities, so that an axis left out of the test (inv
   // 0) gives no NaN that could drop another axis.
-  BoxQuad() {
-    constexpr float big = std::numeric_limits<float>::max();
+  BoxLanes() {
+    const Floats big = std::numeric_limits<float>::max() - Floats{};
     for (auto& axis : planes) {
-      axis[0] = Float4{big, big, big, big};
-      axis[1] = Float4{-big, -big, -big, -big};
+      axis[0] = big;
+      axis[1] = -big;
     }
   }
 
@@ -188,91 +212,38 @@ struct BoxQuad {
 
   // Bit i set when box i may meet the ray within the interval [tMin, tMax] (floats rounded
   // outwards from the doubles), with a lower bound of the entry distance in `entry[i]`.
-  int hits(const QuadRay& r, float tMin, float tMax, Float4& entry) const {
-    const Float4 lowest = {tMin, tMin, tMin, tMin};
-    const Float4 highest = {tMax, tMax, tMax, tMax};
+  int hits(const QuadRay& r, float tMin, float tMax, Floats& entry) const {
+    const QuadRay::Lanes<kLanes>& l = r.lanes<kLanes>();
+    const Floats lowest = tMin - Floats{};  // x - 0 is x, -0 included
+    const Floats highest = tMax - Floats{};
     const char* base = reinterpret_cast<const char*>(planes);
-    Float4 tIn[3], tOut[3];
+    Floats tIn[3], tOut[3];
     for (int a = 0; a < 3; ++a) {
-      tIn[a] = *reinterpret_cast<const Float4*>(base + r.entryPlane[a]) * r.invDirection[a] -
-               r.entryOffset[a];
-      tOut[a] = *reinterpret_cast<const Float4*>(base + r.exitPlane[a]) * r.invDirection[a] -
-                r.exitOffset[a];
+      tIn[a] = *reinterpret_cast<const Floats*>(base + l.entryPlane[a]) * l.invDirection[a] -
+               l.entryOffset[a];
+      tOut[a] = *reinterpret_cast<const Floats*>(base + l.exitPlane[a]) * l.invDirection[a] -
+                l.exitOffset[a];
     }
     // The interval's ends in two steps instead of three (a shorter chain of dependent
     // operations). A NaN (0 * inf: a box beyond float's range on an axis that is not tested)
     // makes a pair take its second operand, so it may drop the other axis of its pair: that
     // only accepts more.
-    const Float4 in01 = tIn[0] > tIn[1] ? tIn[0] : tIn[1];
-    const Float4 in2 = tIn[2] > lowest ? tIn[2] : lowest;
-    const Float4 out01 = tOut[0] < tOut[1] ? tOut[0] : tOut[1];
-    const Float4 out2 = tOut[2] < highest ? tOut[2] : highest;
-    const Float4 lo = in01 > in2 ? in01 : in2;
-    const Float4 hi = out01 < out2 ? out01 : out2;
+    const Floats in01 = tIn[0] > tIn[1] ? tIn[0] : tIn[1];
+    const Floats in2 = tIn[2] > lowest ? tIn[2] : lowest;
+    const Floats out01 = tOut[0] < tOut[1] ? tOut[0] : tOut[1];
+    const Floats out2 = tOut[2] < highest ? tOut[2] : highest;
+    const Floats lo = in01 > in2 ? in01 : in2;
+    const Floats hi = out01 < out2 ? out01 : out2;
     entry = lo;
-    const auto inside = lo <= hi;  // per lane: all bits set or clear
-#if defined(__SSE2__)
-    return _mm_movemask_ps(reinterpret_cast<__m128>(inside));
-#else
-    return static_cast<int>((inside[0] & 1) | (inside[1] & 2) | (inside[2] & 4) | (inside[3] & 8));
-#endif
+    const Ints inside = lo <= hi;  // per lane: all bits set or clear
+    return laneBits(inside);
   }
 };
 
-// Eight boxes tested at once: BoxQuad's test, lane for lane the same operations in the same
-// order (so the same masks and entries as two BoxQuads holding the same boxes), in half the
-// instructions where the build has AVX.
-struct BoxOct {
-  Float8 planes[3][2];  // [axis][0: min plane, 1: max plane], one box per lane
-
-  BoxOct() {
-    constexpr float big = std::numeric_limits<float>::max();
-    for (auto& axis : planes) {
-      axis[0] = Float8{big, big, big, big, big, big, big, big};
-      axis[1] = -axis[0];
-    }
-  }
-
-  void set(int lane, const Bounds& b) {
-    for (int a = 0; a < 3; ++a) {
-      planes[a][0][lane] = static_cast<float>(b.lo[a]);
-      planes[a][1][lane] = static_cast<float>(b.hi[a]);
-    }
-  }
-
-  // As BoxQuad::hits, for eight boxes: bit i for box i.
-  int hits(const QuadRay& r, float tMin, float tMax, Float8& entry) const {
-    const Float8 lowest = {tMin, tMin, tMin, tMin, tMin, tMin, tMin, tMin};
-    const Float8 highest = {tMax, tMax, tMax, tMax, tMax, tMax, tMax, tMax};
-    const char* base = reinterpret_cast<const char*>(planes);
-    Float8 tIn[3], tOut[3];
-    for (int a = 0; a < 3; ++a) {
-      tIn[a] = *reinterpret_cast<const Float8*>(base + r.entryPlane8[a]) * r.invDirection8[a] -
-               r.entryOffset8[a];
-      tOut[a] = *reinterpret_cast<const Float8*>(base + r.exitPlane8[a]) * r.invDirection8[a] -
-                r.exitOffset8[a];
-    }
-    const Float8 in01 = tIn[0] > tIn[1] ? tIn[0] : tIn[1];
-    const Float8 in2 = tIn[2] > lowest ? tIn[2] : lowest;
-    const Float8 out01 = tOut[0] < tOut[1] ? tOut[0] : tOut[1];
-    const Float8 out2 = tOut[2] < highest ? tOut[2] : highest;
-    const Float8 lo = in01 > in2 ? in01 : in2;
-    const Float8 hi = out01 < out2 ? out01 : out2;
-    entry = lo;
-    const Int8 inside = lo <= hi;  // per lane: all bits set or clear
-#if defined(__AVX__)
-    return _mm256_movemask_ps(reinterpret_cast<__m256>(inside));
-#elif defined(__SSE2__)
-    const Int4 low = __builtin_shufflevector(inside, inside, 0, 1, 2, 3);
-    const Int4 high = __builtin_shufflevector(inside, inside, 4, 5, 6, 7);
-    return _mm_movemask_ps(reinterpret_cast<__m128>(low)) |
-           _mm_movemask_ps(reinterpret_cast<__m128>(high)) << 4;
-#else
-    int bits = 0;
-    for (int i = 0; i < 8; ++i) bits |= (inside[i] & 1) << i;
-    return bits;
-#endif
-  }
-};
+// Four boxes, and eight: a tree node's children, one AVX instruction per operation where the
+// x86-64-v3 build has them (two SSE ones in the baseline build), the same IEEE operations lane
+// for lane, so a BoxOct gives the masks and entries of two BoxQuads holding its boxes.
+using BoxQuad = BoxLanes<4>;
+using BoxOct = BoxLanes<8>;
 
 }  // namespace prt
