@@ -16,6 +16,7 @@
 #include <assimp/DefaultIOSystem.h>
 #include <assimp/ObjMaterial.h>
 #include <assimp/Importer.hpp>
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstring>
@@ -127,7 +128,7 @@ class AssimpReader {
     notes_.animations = scene_->mNumAnimations;
     notes_.warn(out_.warnings);
     if (out_.objects.empty()) {
-      throw ModelFileError("model file \"" + path_ + "\" has no triangles to render");
+      throw ModelFileError(noTrianglesMessage(path_, "", out_.warnings));
     }
     return std::move(out_);
   }
@@ -255,10 +256,16 @@ class AssimpReader {
       if (m.Get(AI_MATKEY_COLOR_EMISSIVE, c) == AI_SUCCESS) in.emissive = color(c);
       in.emissiveTexture = textureRef(m, aiTextureType_EMISSIVE, name);
       if (m.Get(AI_MATKEY_OPACITY, value) == AI_SUCCESS) in.opacity = value;
+      // FBX's transparency is TransparentColor x TransparencyFactor: Maya and 3ds Max write a
+      // factor of 1 with a black colour (and Opacity 1) for an opaque surface.
       float transparency = 0;
       if (m.Get(AI_MATKEY_TRANSPARENCYFACTOR, transparency) == AI_SUCCESS && transparency > 0 &&
           in.opacity == 1) {
-        in.opacity = 1 - transparency;
+        aiColor3D filter(1, 1, 1);
+        if (m.Get(AI_MATKEY_COLOR_TRANSPARENT, filter) == AI_SUCCESS) {
+          transparency *= static_cast<float>(maxComponent(color(filter)));
+        }
+        if (transparency > 0) in.opacity = 1 - std::min(transparency, 1.0f);
       }
       if (m.Get(AI_MATKEY_REFRACTI, value) == AI_SUCCESS) in.ior = value;
       int illum = -1;

@@ -10,6 +10,7 @@
 // readBoundedFile (a regular file of bounded size), so a hostile file cannot make this read
 // out of bounds, read a FIFO or a device, or allocate without limit.
 
+#include <nlohmann/json.hpp>
 #include <tiny_gltf.h>
 
 #include <algorithm>
@@ -156,6 +157,20 @@ std::string glbProblem(const std::vector<unsigned char>& b) {
 }
 
 // Whether JSON text nests arrays and objects deeper than `limit` (strings skipped).
+// The names in a glTF's "extensionsRequired", read from its JSON text (empty when the text is
+// not JSON or has none).
+std::vector<std::string> requiredExtensions(const unsigned char* text, size_t size) {
+  const nlohmann::json json = nlohmann::json::parse(text, text + size, nullptr, false);
+  std::vector<std::string> names;
+  if (!json.is_object()) return names;
+  const auto required = json.find("extensionsRequired");
+  if (required == json.end() || !required->is_array()) return names;
+  for (const nlohmann::json& name : *required) {
+    if (name.is_string()) names.push_back(name.get<std::string>());
+  }
+  return names;
+}
+
 bool nestsDeeperThan(const unsigned char* text, size_t size, int limit) {
   int depth = 0;
   bool inString = false;
@@ -228,8 +243,8 @@ class GltfReader {
     animations.warn(out_.warnings);
     notes_.warn(out_.warnings);
     if (out_.objects.empty()) {
-      throw ModelFileError("model file \"" + path_ + "\" has no triangles to render" +
-                           (model_.meshes.empty() ? " (it holds no meshes)" : ""));
+      throw ModelFileError(noTrianglesMessage(
+          path_, model_.meshes.empty() ? " (it holds no meshes)" : "", out_.warnings));
     }
     return std::move(out_);
   }
@@ -275,16 +290,24 @@ class GltfReader {
                : loader.LoadASCIIFromString(&model_, &error, &warning,
                                             reinterpret_cast<const char*>(head.data()),
                                             static_cast<unsigned int>(head.size()), base);
+    static const std::set<std::string> kUnderstood = {
+        "KHR_lights_punctual",       "KHR_materials_emissive_strength", "KHR_materials_ior",
+        "KHR_materials_transmission", "KHR_materials_unlit",            "KHR_materials_volume",
+        "KHR_texture_transform",     "KHR_mesh_quantization",           "KHR_materials_pbrSpecularGlossiness"};
     if (!ok) {
+      // A file that needs an extension PRT does not read (Draco's compressed meshes, whose
+      // accessors have no buffer views) fails in tinygltf first: name the extension.
+      for (const std::string& name : requiredExtensions(head.data() + jsonAt, jsonSize)) {
+        if (!kUnderstood.count(name)) {
+          throw ModelFileError("model file \"" + path_ + "\" requires the glTF extension " +
+                               name + ", which PRT does not read");
+        }
+      }
       while (!error.empty() && (error.back() == '\n' || error.back() == ' ')) error.pop_back();
       std::replace(error.begin(), error.end(), '\n', ';');
       throw ModelFileError("model file \"" + path_ + "\" could not be read as glTF: " +
                            (error.empty() ? "malformed" : error));
     }
-    static const std::set<std::string> kUnderstood = {
-        "KHR_lights_punctual",       "KHR_materials_emissive_strength", "KHR_materials_ior",
-        "KHR_materials_transmission", "KHR_materials_unlit",            "KHR_materials_volume",
-        "KHR_texture_transform",     "KHR_mesh_quantization",           "KHR_materials_pbrSpecularGlossiness"};
     for (const std::string& name : model_.extensionsRequired) {
       if (!kUnderstood.count(name)) {
         throw ModelFileError("model file \"" + path_ + "\" requires the glTF extension " + name +

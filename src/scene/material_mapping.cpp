@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "scene/value_reader.h"
+
 namespace prt {
 namespace {
 
@@ -14,6 +16,14 @@ Color clamp01(const Color& c) { return {clamp01(c.x), clamp01(c.y), clamp01(c.z)
 Color nonNegative(const Color& c) {
   auto f = [](double v) { return std::isfinite(v) && v > 0 ? v : 0.0; };
   return {f(c.x), f(c.y), f(c.z)};
+}
+// Emission as the scene format bounds colours, [0, 1e6] per component: larger values are
+// surely mistakes, and with them no image can hold an infinity (a component beyond a float's
+// range would, and a worker sending one would be taken for a liar).
+Color emissionOf(const Color& c) {
+  const Color n = nonNegative(c);
+  auto f = [](double v) { return std::min(v, kMaxColorComponent); };
+  return {f(n.x), f(n.y), f(n.z)};
 }
 
 // The Phong exponent whose lobe is about as wide as a GGX lobe of this roughness: Blinn-Phong's
@@ -34,9 +44,9 @@ Material mapPbrMaterial(const PbrMaterialInputs& in) {
   const double metallic = clamp01(in.metallic), roughness = clamp01(in.roughness);
   m.color = clamp01(in.baseColor);
   m.colorTexture = in.baseColorTexture;
-  m.emission = nonNegative(in.emissive * (std::isfinite(in.emissiveStrength)
-                                              ? std::max(0.0, in.emissiveStrength)
-                                              : 1.0));
+  m.emission = emissionOf(in.emissive * (std::isfinite(in.emissiveStrength)
+                                             ? std::max(0.0, in.emissiveStrength)
+                                             : 1.0));
   m.emissionTexture = in.emissiveTexture;
   if (in.unlit) {  // shown as its colour, whatever the lights
     m.diffuse = m.ambient = m.specular = 0;
@@ -86,7 +96,7 @@ Material mapCommonMaterial(const CommonMaterialInputs& in) {
   m.colorTexture = in.diffuseTexture;
   m.diffuse = 1;
   m.ambient = 1;
-  m.emission = nonNegative(in.emissive);
+  m.emission = emissionOf(in.emissive);
   m.emissionTexture = in.emissiveTexture;
   const int illum = in.illum;
   if (illum == 0) {  // "colour on, ambient off": the colour, unlit

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <limits>
 
+#include "scene/value_reader.h"
+
 namespace prt {
 namespace {
 
@@ -153,6 +155,17 @@ TEST(MaterialMapping, MtlIlluminationModels) {
   m = mapCommonMaterial(in);
   EXPECT_EQ(m.emission, in.diffuse);
   EXPECT_EQ(m.diffuse, 0);
+}
+
+TEST(MaterialMapping, EmissionIsBoundedAsSceneColoursAre) {
+  PbrMaterialInputs in;
+  in.emissive = Color(1, 0.5, 0);
+  in.emissiveStrength = 1e39;  // beyond a float: an infinity in the image
+  const Material m = mapPbrMaterial(in);
+  EXPECT_EQ(m.emission, Color(kMaxColorComponent, kMaxColorComponent, 0));
+  CommonMaterialInputs common;
+  common.emissive = Color(1e300, 2, 0);
+  EXPECT_EQ(mapCommonMaterial(common).emission, Color(kMaxColorComponent, 2, 0));
 }
 
 }  // namespace

@@ -593,6 +593,33 @@ TEST_F(HostileGltf, NonFinitePositionsSkipTheirTriangles) {
   batch.run();
 }
 
+// A file whose only mesh is skipped is refused, and the refusal says why: the warnings that
+// would have explained it are not shown once the file is refused.
+TEST_F(HostileGltf, AFileLeftWithNoTrianglesSaysWhatWasSkippedAndWhy) {
+  const std::string triangle = dataUri(triangleBytes(0));
+  const std::string head = R"({"asset":{"version":"2.0"},"scenes":[{"nodes":[0]}],"nodes":[{"mesh":0}],)"
+                           R"("meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],)"
+                           R"("buffers":[{"byteLength":44,"uri":")" + triangle + R"("}],)"
+                           R"("bufferViews":[{"buffer":0,"byteLength":36}],)";
+  const std::string past = head + R"("accessors":[{"bufferView":0,"componentType":5126,"count":1000,"type":"VEC3"}]})";
+  const std::string sparse = head + R"("accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3",)"
+                                    R"("sparse":{"count":1,"indices":{"bufferView":0,"componentType":5125},)"
+                                    R"("values":{"bufferView":0}}}]})";
+  for (const auto& [name, json, why] :
+       {std::tuple<std::string, std::string, std::string>{"past.gltf", past, "reaches past its buffer view"},
+        {"sparse.gltf", sparse, "sparse accessor, which PRT does not read"}}) {
+    const std::string path = write(name, json);
+    try {
+      readModelFile(path);
+      ADD_FAILURE() << name << " was read";
+    } catch (const ModelFileError& e) {
+      const std::string message = e.what();
+      EXPECT_NE(message.find("has no triangles to render: "), std::string::npos) << message;
+      EXPECT_NE(message.find(why), std::string::npos) << message;
+    }
+  }
+}
+
 TEST_F(HostileGltf, TransformsThatAreNotFiniteOrFlatHideTheirNodes) {
   const std::vector<std::pair<std::string, std::string>> cases = {
       {"zero-scale", R"({"mesh":1,"scale":[0,0,0]})"},

@@ -155,6 +155,31 @@ TEST(ModelFile, FbxAndColladaOfOneSceneAgree) {
   EXPECT_EQ(dae.textures.size(), 1u);
 }
 
+// FBX transparency is TransparentColor x TransparencyFactor: a Maya file (assimp-testmodels)
+// writes a factor of 1 with a black colour and Opacity 1 for its opaque box.
+TEST(ModelFile, FbxOpaqueWithFactorOneAndBlackTransparentColourStaysOpaque) {
+  const fs::path file = "/usr/share/assimp/models/FBX/box_orphant_embedded_texture.fbx";
+  if (!fs::exists(file)) GTEST_SKIP() << "assimp-testmodels is not installed";
+  const ImportedModel box = readModelFile(file.string());
+  ASSERT_FALSE(box.objects.empty());
+  for (const Object& o : box.objects) EXPECT_EQ(o.material.transmissivity, 0.0);
+}
+
+// A Draco-compressed glTF (assimp-testmodels) fails in tinygltf before its extensions are
+// seen: the refusal still names the extension it needs.
+TEST(ModelFile, DracoCompressedGltfIsRefusedByItsExtensionsName) {
+  const fs::path file = "/usr/share/assimp/models/glTF2/draco/2CylinderEngine.gltf";
+  if (!fs::exists(file)) GTEST_SKIP() << "assimp-testmodels is not installed";
+  try {
+    readModelFile(file.string());
+    ADD_FAILURE() << "read";
+  } catch (const ModelFileError& e) {
+    EXPECT_NE(std::string(e.what()).find("requires the glTF extension KHR_draco_mesh_compression"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 class ImportScene : public ::testing::Test {
  protected:
   void SetUp() override {

@@ -44,4 +44,20 @@ void ModelNotes::warn(std::vector<std::string>& warnings) const {
   }
 }
 
+std::string noTrianglesMessage(const std::string& file, const std::string& detail,
+                               const std::vector<std::string>& warnings) {
+  std::string message = "model file \"" + file + "\" has no triangles to render" + detail;
+  const std::string head = "model file \"" + file + "\": ";
+  constexpr size_t kShown = 4;
+  for (size_t i = 0; i < warnings.size() && i < kShown; ++i) {
+    std::string why = warnings[i];
+    if (why.compare(0, head.size(), head) == 0) why.erase(0, head.size());
+    message += (i == 0 ? ": " : "; ") + why;
+  }
+  if (warnings.size() > kShown) {
+    message += "; and " + std::to_string(warnings.size() - kShown) + " more";
+  }
+  return message;
+}
+
 }  // namespace prt

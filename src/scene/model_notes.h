@@ -32,4 +32,10 @@ struct ModelNotes {
   void warn(std::vector<std::string>& warnings) const;
 };
 
+// The error for a model file that leaves nothing to render: "has no triangles to render",
+// `detail`, then why, from the warnings gathered while reading (what was skipped and for what
+// reason; the first few, and how many more), since they are not shown once the file is refused.
+std::string noTrianglesMessage(const std::string& file, const std::string& detail,
+                               const std::vector<std::string>& warnings);
+
 }  // namespace prt
