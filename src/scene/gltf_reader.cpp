@@ -775,7 +775,22 @@ class GltfReader {
       }
       const auto bytes = encoded_.byImage.find(index);
       if (bytes == encoded_.byImage.end()) {
-        notes_.problem(out_.warnings, "texture image " + name + " was not found");
+        // Not where the URI says: found as the other readers find textures (an absolute or
+        // file:// path, backslashes, a drive letter, another letter case, beside the model or
+        // in its textures/ folder).
+        const fs::path file = image.uri.empty() || image.uri.rfind("data:", 0) == 0
+                                  ? fs::path()
+                                  : findTextureFile(fs::path(path_).parent_path(), image.uri);
+        if (file.empty()) {
+          notes_.problem(out_.warnings, "texture image " + name + " was not found");
+        } else {
+          try {
+            const std::vector<uint8_t> read = readTextureFile(file);
+            result = decodeTextureImage(read.data(), read.size(), name, budget_);
+          } catch (const TextureError& e) {
+            notes_.problem(out_.warnings, e.what());
+          }
+        }
       } else if (bytes->second == nullptr) {
         notes_.problem(out_.warnings, "texture image " + name + " is beyond the 1 GiB its file's images may take encoded");
       } else {

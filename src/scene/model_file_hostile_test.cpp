@@ -454,6 +454,24 @@ TEST_F(HostileGltf, TextureImagesThatAreNotImagesWarn) {
   batch.run();
 }
 
+// Image URIs as other tools write them, for a file that sits beside the model: found as the
+// OBJ and FBX readers find their textures (texture_file.h, findTextureFile).
+TEST_F(HostileGltf, TextureImagesAreFoundAsOtherToolsWriteTheirPaths) {
+  write("tiny.png", png(2, 2, 2));
+  Batch batch;
+  int k = 0;
+  for (const std::string& uri : std::vector<std::string>{"/no/such/folder/tiny.png", "file:///no/such/tiny.png",
+                                R"(sub\\tiny.png)", "TINY.PNG", "C:/Users/someone/tiny.png"}) {
+    const std::string path = write("found" + std::to_string(k++) + ".gltf",
+                                   texturedGltf(R"({"source":0})", R"({"uri":")" + uri + R"("})"));
+    batch.read(path, [uri](const Outcome& o) {
+      EXPECT_EQ(o.message, "objects 1, lights 0, cameras 0, textures 1") << uri << ": " << o;
+      EXPECT_FALSE(anyContains(o.warnings, "not found")) << uri << ": " << o;
+    });
+  }
+  batch.run();
+}
+
 // An image in a buffer view that reaches past its buffer: tinygltf hands the image loader a
 // pointer and the view's length without checking them against the buffer.
 TEST_F(HostileGltf, ImageBufferViewsReachingPastTheirBufferAreRefused) {
