@@ -280,6 +280,30 @@ TEST_F(ImportScene, BadImportsAreLocated) {
   EXPECT_THROW(loadSceneFile((dir_ / "cube.scene").string()), InputError);
 }
 
+// A model rendered directly is placed by a scene text made for it: an error about the
+// placement names the model file, with no line and column of that text (the user never wrote
+// it, and the model file has no such line).
+TEST_F(ImportScene, ErrorsAboutAModelRenderedDirectlyNameItWithoutALocation) {
+  // One triangle 1e38 wide: beyond the coordinates a scene allows once placed.
+  const float corners[9] = {-1e38f, -1e38f, 0, 1e38f, -1e38f, 0, 0, 1e38f, 0};
+  std::ofstream(dir_ / "huge.bin", std::ios::binary)
+      .write(reinterpret_cast<const char*>(corners), sizeof corners);
+  std::ofstream(dir_ / "huge.gltf")
+      << R"({"asset":{"version":"2.0"},"scenes":[{"nodes":[0]}],"nodes":[{"mesh":0}],)"
+         R"("meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],)"
+         R"("buffers":[{"byteLength":36,"uri":"huge.bin"}],"bufferViews":[{"buffer":0,"byteLength":36}],)"
+         R"("accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3"}]})";
+  const std::string error = errorOf(std::string(kImage) + "import { file \"huge.gltf\" }\n");
+  EXPECT_NE(error.find("s.scene:2:"), std::string::npos) << error;  // a scene the user wrote
+  try {
+    loadSceneFile((dir_ / "huge.gltf").string());
+    ADD_FAILURE() << "a triangle 1e38 wide was read";
+  } catch (const InputError& e) {
+    EXPECT_FALSE(e.hasLocation()) << e.format();
+    EXPECT_NE(std::string(e.what()).find("huge.gltf"), std::string::npos) << e.format();
+  }
+}
+
 TEST_F(ImportScene, ModelFilesRenderDirectly) {
   const Scene scene = loadSceneFile((dir_ / "blender-cube.glb").string());
   EXPECT_EQ(scene.image.width, 640);

@@ -181,12 +181,25 @@ Scene loadSceneFile(const std::string& path, const SceneReadOptions& options) {
     try {
       model = std::make_shared<const ImportedModel>(readModelFile(absolute, {options.strict}));
     } catch (const ModelFileError& e) {
-      throw InputError(e.what());
+      const std::string message = e.what();
+      throw InputError(message.find(path) != std::string::npos
+                           ? message
+                           : "model file " + quote(path, '\'') + ": " + message);
     }
     models[absolute] = model;
     SceneReadOptions read = options;
     read.models = &models;
-    Scene scene = parseScene(modelSceneText(absolute, *model, options), path, read);
+    Scene scene;
+    try {
+      scene = parseScene(modelSceneText(absolute, *model, options), path, read);
+    } catch (const InputError& e) {
+      // A line and column would point into the scene text made for the model, which the user
+      // never wrote: the message names the file, and is about it.
+      const std::string message = e.what();
+      throw InputError(message.find(path) != std::string::npos
+                           ? message
+                           : "model file " + quote(path, '\'') + ": " + message);
+    }
     // The warnings name the generated text's line; the file itself is what they are about.
     for (std::string& w : scene.warnings) {
       const size_t at = w.find(": model file");
