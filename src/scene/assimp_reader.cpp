@@ -60,17 +60,29 @@ Color color(const aiColor3D& c) { return {c.r, c.g, c.b}; }
 // remembered for the warnings.
 class BoundedFiles : public Assimp::DefaultIOSystem {
  public:
-  bool Exists(const char* file) const override { return usable(file); }
+  bool Exists(const char* file) const override { return !resolved(file).empty(); }
   Assimp::IOStream* Open(const char* file, const char* mode = "rb") override {
-    if (!usable(file)) {
+    const std::string path = resolved(file);
+    if (path.empty()) {
       turnedAway.insert(file);
       return nullptr;
     }
-    return DefaultIOSystem::Open(file, mode);
+    return DefaultIOSystem::Open(path.c_str(), mode);
   }
   std::set<std::string> turnedAway;
 
  private:
+  // The file, or an absolute path that assimp joined onto the model's folder (an OBJ's
+  // "mtllib /abs/path.mtl" asked for as "folder//abs/path.mtl"); empty when neither is usable.
+  static std::string resolved(const char* file) {
+    if (usable(file)) return file;
+    const std::string text = file;
+    const size_t joined = text.find("//");
+    if (joined != std::string::npos && usable(text.c_str() + joined + 1)) {
+      return text.substr(joined + 1);
+    }
+    return {};
+  }
   static bool usable(const char* file) {
     std::error_code error;
     if (fs::status(file, error).type() != fs::file_type::regular) return false;

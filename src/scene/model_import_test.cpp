@@ -283,6 +283,19 @@ TEST_F(ImportScene, BadImportsAreLocated) {
 // A model rendered directly is placed by a scene text made for it: an error about the
 // placement names the model file, with no line and column of that text (the user never wrote
 // it, and the model file has no such line).
+// An OBJ naming its MTL by an absolute path (assimp asks for it joined onto the OBJ's folder).
+TEST_F(ImportScene, ObjMaterialLibrariesByAbsolutePathAreFound) {
+  fs::create_directories(dir_ / "a");
+  fs::create_directories(dir_ / "b");
+  std::ofstream(dir_ / "b" / "red.mtl") << "newmtl red\nKd 1 0 0\n";
+  std::ofstream(dir_ / "a" / "tri.obj") << "mtllib " << (dir_ / "b" / "red.mtl").string()
+                                        << "\nv -1 -1 0\nv 1 -1 0\nv 0 1 0\nusemtl red\nf 1 2 3\n";
+  const ImportedModel model = readModelFile((dir_ / "a" / "tri.obj").string());
+  ASSERT_EQ(model.objects.size(), 1u);
+  EXPECT_EQ(model.objects[0].material.color, Color(1, 0, 0));
+  EXPECT_FALSE(anyWarning(model.warnings, ".mtl")) << model.warnings.front();
+}
+
 TEST_F(ImportScene, ErrorsAboutAModelRenderedDirectlyNameItWithoutALocation) {
   // One triangle 1e38 wide: beyond the coordinates a scene allows once placed.
   const float corners[9] = {-1e38f, -1e38f, 0, 1e38f, -1e38f, 0, 0, 1e38f, 0};
