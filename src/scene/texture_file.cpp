@@ -28,6 +28,22 @@ uint32_t bigEndian32(const uint8_t* p) {
   return (uint32_t{p[0]} << 24) | (uint32_t{p[1]} << 16) | (uint32_t{p[2]} << 8) | uint32_t{p[3]};
 }
 
+// A PNG header's width, height and channels (false when the bytes do not start one): stb's
+// own reading refuses an image too large for its memory limit, and then says only that no
+// format matched.
+bool pngHeader(const uint8_t* bytes, size_t size, int& width, int& height, int& channels) {
+  static constexpr uint8_t kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+  if (size < 33 || !std::equal(kSignature, kSignature + 8, bytes)) return false;
+  if (!std::equal(bytes + 12, bytes + 16, reinterpret_cast<const uint8_t*>("IHDR"))) return false;
+  const uint32_t w = bigEndian32(bytes + 16), h = bigEndian32(bytes + 20);
+  if (w == 0 || h == 0 || w > (1u << 30) || h > (1u << 30)) return false;
+  width = static_cast<int>(w);
+  height = static_cast<int>(h);
+  const uint8_t colorType = bytes[25];
+  channels = colorType == 2 ? 3 : colorType == 4 ? 2 : colorType == 6 ? 4 : colorType == 3 ? 3 : 1;
+  return true;
+}
+
 // A PNG whose compressed image data cannot inflate to the rows its header declares (deflate
 // expands at most about 1,032 times): a decoder would size its buffer by the header and grow it
 // while inflating, gigabytes for a file of kilobytes, before finding the data short. Returns
@@ -66,8 +82,15 @@ std::shared_ptr<const TextureImage> decodeTextureImage(const uint8_t* bytes, siz
   int width = 0, height = 0, channels = 0;
   const int length = static_cast<int>(size);
   if (stbi_info_from_memory(bytes, length, &width, &height, &channels) == 0) {
-    throw TextureError("texture " + name + " is not an image PRT can read (" +
-                       stbi_failure_reason() + "; PNG, JPEG, BMP, TGA and GIF are read)");
+    const std::string reason = stbi_failure_reason();
+    // A PNG whose header stb refused for its size: refused below by that size, with it named.
+    if (!pngHeader(bytes, size, width, height, channels) ||
+        (width <= kMaxTextureSide && height <= kMaxTextureSide &&
+         static_cast<size_t>(width) * static_cast<size_t>(height) *
+                 static_cast<size_t>(channels) <= budgetBytes)) {
+      throw TextureError("texture " + name + " is not an image PRT can read (" + reason +
+                         "; PNG, JPEG, BMP, TGA and GIF are read)");
+    }
   }
   if (width <= 0 || height <= 0 || width > kMaxTextureSide || height > kMaxTextureSide ||
       channels < 1 || channels > 4) {

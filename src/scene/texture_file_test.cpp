@@ -52,5 +52,25 @@ TEST(TextureFile, APngThatCannotHoldTheRowsItDeclaresIsRefusedBeforeDecoding) {
   EXPECT_EQ(budget, size_t{1} << 30) << "nothing taken off the budget";
 }
 
+TEST(TextureFile, APngTooLargeForTheDecoderIsRefusedByItsSize) {
+  std::vector<uint8_t> bytes = fileBytes(kSource / "scenes/models/board-checker.png");
+  // 30,000 x 30,000: within the side limit, beyond the budget (2.5 GiB of RGB), and beyond
+  // what stb reads, which then says only that no format matched.
+  for (size_t at : {16u, 20u}) {
+    bytes[at] = 0;
+    bytes[at + 1] = 0;
+    bytes[at + 2] = 0x75;
+    bytes[at + 3] = 0x30;
+  }
+  size_t budget = size_t{1} << 30;
+  try {
+    decodeTextureImage(bytes.data(), bytes.size(), "huge.png", budget);
+    FAIL() << "decoded";
+  } catch (const TextureError& e) {
+    EXPECT_NE(std::string(e.what()).find("30000 x 30000"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("budget"), std::string::npos) << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace prt
