@@ -181,7 +181,8 @@ if mode == "join":
 else:
     lost = [l["worker"] for l in r["lost_workers"]]
     assert lost == [1], lost  # its own times were lost with it, its unfinished pixels reissued
-    assert r["reissued_tasks"] > 0, r["reissued_tasks"]
+    # Its unfinished pixels were reissued, unless it was killed between two batches, holding
+    # none (on a loaded machine, or near the end); the image above says nothing was lost.
     assert w[2]["pixels"] > 0, w[2]
 PY
     ;;
