@@ -87,7 +87,7 @@ TEST_F(CliTest, BrokenMeshFileIsALocatedErrorAndWritesNothing) {
     const Result r = run("render " + scene + extra + " -o " + path("out.png"));
     EXPECT_EQ(r.exitCode, 2) << r.output;
     EXPECT_NE(r.output.find("mesh.scene:6:13: error:"), std::string::npos) << r.output;
-    EXPECT_NE(r.output.find("broken.obj:4: a vertex index '4' is out of range"), std::string::npos)
+    EXPECT_NE(r.output.find("broken.obj:4:7: a vertex index '4' is out of range"), std::string::npos)
         << r.output;
     EXPECT_FALSE(fs::exists(path("out.png")));
   }

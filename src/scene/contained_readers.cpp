@@ -1,6 +1,7 @@
 #include "scene/contained_readers.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cstring>
 #include <filesystem>
 #include <limits>
@@ -9,12 +10,17 @@
 
 #include "core/byte_codec.h"
 #include "core/contained_call.h"
+#include "core/input_error.h"
+#include "core/input_file.h"
 #include "core/memory_budget.h"
 #include "core/text.h"
 #include "scene/asset_pack.h"
+#include "scene/mesh_text_check.h"
 
 namespace prt {
 namespace {
+
+namespace fs = std::filesystem;
 
 static_assert(std::is_trivially_copyable_v<Light> && std::is_trivially_copyable_v<Camera>,
               "lights and cameras cross the pipe as bytes: the child is this same program");
@@ -80,6 +86,29 @@ std::string failureText(const ContainedFailure& f) {
 
 // The child's limits for reading `path` (its size as it is now: a file that is not there, or
 // not regular, is the reader's own error).
+// After assimp failed on an OBJ or PLY model file: the problem found by the line-by-line check
+// of a mesh block's file (mesh_text_check.h), with its line and column, where assimp said
+// "vertex index out of range" or crashed. Infinite and NaN coordinates are let through, as the
+// model reader skips their triangles. Returns quietly when the check finds nothing, or cannot
+// read the file: assimp's own message stands then. Run only after a failure: assimp reads
+// files the check refuses (a PLY header with a line of its own, a short final record).
+void throwLocatedTextError(const std::string& path) {
+  std::string extension = fs::path(path).extension().string();
+  for (char& ch : extension) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+  if (extension != ".obj" && extension != ".ply") return;
+  std::string text;
+  try {
+    text = readInputFile(path, "model file");
+  } catch (const InputError&) {
+    return;
+  }
+  try {
+    checkMeshText(text, path, NonFinite::allowed);
+  } catch (const MeshFileError& e) {
+    throw ModelFileError(e.what());
+  }
+}
+
 ContainedLimits readerLimits(const std::string& path, uint64_t textureBudgetBytes) {
   std::error_code error;
   const uintmax_t size = std::filesystem::file_size(path, error);
@@ -174,6 +203,7 @@ ImportedModel readAssimpFileContained(const std::string& path, const ModelReadOp
         },
         readerLimits(path, options.textureBudgetBytes));
   } catch (const ContainedFailure& f) {
+    throwLocatedTextError(path);
     if (f.cause() == ContainedFailure::Cause::Threw) throw ModelFileError(f.what());
     throw ModelFileError("model file " + quote(path) + " " + failureText(f));
   }

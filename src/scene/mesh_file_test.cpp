@@ -167,35 +167,35 @@ TEST_F(MeshFile, MissingFileNamesTheMeshAndTheSceneLine) {
   EXPECT_NE(message.find("does not exist"), std::string::npos) << message;
 }
 
-TEST_F(MeshFile, MalformedObjLineIsReportedWithItsNumber) {
+TEST_F(MeshFile, MalformedObjLineIsReportedWithItsLineAndColumn) {
   write("models/bad.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 x 2\nf 1 2 3\n");
   const std::string message = errorOf("mesh { file \"models/bad.obj\" }\n");
   EXPECT_NE(message.find("test.scene:3:"), std::string::npos) << message;
-  EXPECT_NE(message.find("bad.obj:4: expected a number"), std::string::npos) << message;
+  EXPECT_NE(message.find("bad.obj:4:5: expected a number"), std::string::npos) << message;
 }
 
-TEST_F(MeshFile, OutOfRangeIndexInTextFilesIsReportedWithItsLine) {
+TEST_F(MeshFile, OutOfRangeIndexInTextFilesIsReportedWithItsLineAndColumn) {
   write("models/far.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 2 9\n");
   std::string message = errorOf("mesh { file \"models/far.obj\" }\n");
-  EXPECT_NE(message.find("far.obj:5: a vertex index '9' is out of range"), std::string::npos)
+  EXPECT_NE(message.find("far.obj:5:7: a vertex index '9' is out of range"), std::string::npos)
       << message;
   write("models/line.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nl 1 2\nl 1 -4\n");
   message = errorOf("mesh { file \"models/line.obj\" }\n");
-  EXPECT_NE(message.find("line.obj:6: a vertex index '-4' is out of range"), std::string::npos)
+  EXPECT_NE(message.find("line.obj:6:5: a vertex index '-4' is out of range"), std::string::npos)
       << message;
   write("models/far.ply",
         "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
         "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
         "0 0 0\n1 0 0\n0 1 0\n3 0 1 5\n");
   message = errorOf("mesh { file \"models/far.ply\" }\n");
-  EXPECT_NE(message.find("far.ply:13: vertex index '5' is out of range"), std::string::npos)
+  EXPECT_NE(message.find("far.ply:13:7: vertex index '5' is out of range"), std::string::npos)
       << message;
 }
 
 TEST_F(MeshFile, NonFiniteNumbersInTextFilesAreRefused) {
   write("models/nan.obj", "v 0 0 0\nv 1 0 0\nv nan 1 0\nf 1 2 3\n");
   const std::string message = errorOf("mesh { file \"models/nan.obj\" }\n");
-  EXPECT_NE(message.find("nan.obj:3:"), std::string::npos) << message;
+  EXPECT_NE(message.find("nan.obj:3:3:"), std::string::npos) << message;
   EXPECT_NE(message.find("not a finite number"), std::string::npos) << message;
 }
 

@@ -26,6 +26,7 @@ class Lines {
     pos_ = end + 1;
     ++number_;
     if (comments_) line = line.substr(0, line.find('#'));
+    line_ = line;
     words.clear();
     size_t i = 0;
     while (i < line.size()) {
@@ -38,46 +39,71 @@ class Lines {
   }
   int number() const { return number_; }
   size_t offset() const { return pos_; }  // of the next line's first byte
+  // The column, from 1, of a word of the current line; of the line's end without a word.
+  int column(std::string_view word) const {
+    if (word.data() < line_.data() || word.data() > line_.data() + line_.size()) return end();
+    return static_cast<int>(word.data() - line_.data()) + 1;
+  }
+  int end() const {
+    std::string_view line = line_;
+    while (!line.empty() && std::isspace(static_cast<unsigned char>(line.back()))) {
+      line.remove_suffix(1);
+    }
+    return static_cast<int>(line.size()) + 1;
+  }
 
  private:
   std::string_view text_;
   bool comments_;
   size_t pos_ = 0;
   int number_ = 0;
+  std::string_view line_;  // the current line, without its comment
 };
 
 [[noreturn]] void fail(const std::string& file, int line, const std::string& message) {
   throw MeshFileError(file + ":" + std::to_string(line) + ": " + message, line);
 }
+// At `word` of the current line (its end for a null view): file:line:column.
+[[noreturn]] void fail(const std::string& file, const Lines& lines, std::string_view word,
+                       const std::string& message) {
+  const int column = word.data() == nullptr ? lines.end() : lines.column(word);
+  throw MeshFileError(
+      file + ":" + std::to_string(lines.number()) + ":" + std::to_string(column) + ": " + message,
+      lines.number());
+}
 
 // A finite number, the whole word.
-double number(std::string_view word, const std::string& file, int line, const char* what) {
+double number(std::string_view word, const std::string& file, const Lines& lines, const char* what,
+              NonFinite nonFinite) {
   const std::string text(word);
   char* end = nullptr;
   const double value = std::strtod(text.c_str(), &end);
   if (end == text.c_str() || *end != '\0') {
-    fail(file, line, std::string("expected a number for ") + what + ", found " + quote(word, '\''));
+    fail(file, lines, word,
+         std::string("expected a number for ") + what + ", found " + quote(word, '\''));
   }
-  if (!std::isfinite(value)) {
-    fail(file, line, std::string(what) + " is " + quote(word, '\'') + ", not a finite number");
+  if (!std::isfinite(value) && nonFinite == NonFinite::refused) {
+    fail(file, lines, word,
+         std::string(what) + " is " + quote(word, '\'') + ", not a finite number");
   }
   return value;
 }
 
 // An integer, the whole word (leading sign allowed).
-long long integer(std::string_view word, const std::string& file, int line, const char* what) {
+long long integer(std::string_view word, const std::string& file, const Lines& lines,
+                  const char* what) {
   const std::string text(word);
   char* end = nullptr;
   errno = 0;
   const long long value = std::strtoll(text.c_str(), &end, 10);
   if (end == text.c_str() || *end != '\0' || errno == ERANGE) {
-    fail(file, line,
+    fail(file, lines, word,
          std::string("expected an integer for ") + what + ", found " + quote(word, '\''));
   }
   return value;
 }
 
-void checkObj(std::string_view text, const std::string& file) {
+void checkObj(std::string_view text, const std::string& file, NonFinite nonFinite) {
   // Counts first: an index may refer to any vertex of the file.
   long long counts[3] = {0, 0, 0};  // v, vt, vn
   std::vector<std::string_view> words;
@@ -94,7 +120,6 @@ void checkObj(std::string_view text, const std::string& file) {
   Lines lines(text, true);
   while (lines.next(words)) {
     if (words.empty()) continue;
-    const int line = lines.number();
     const std::string_view key = words[0];
     if (key == "v" || key == "vn" || key == "vt") {
       const size_t least = key == "vt" ? 1 : 3;
@@ -102,17 +127,17 @@ void checkObj(std::string_view text, const std::string& file) {
                          : key == "vn" ? "a normal component"
                                        : "a texture coordinate";
       if (words.size() < least + 1) {
-        fail(file, line,
+        fail(file, lines, {},
              quote(key, '\'') + " needs " + std::to_string(least) + " numbers, found " +
                  std::to_string(words.size() - 1));
       }
-      for (size_t i = 1; i < words.size(); ++i) number(words[i], file, line, what);
+      for (size_t i = 1; i < words.size(); ++i) number(words[i], file, lines, what, nonFinite);
       ++seen[key == "v" ? 0 : key == "vt" ? 1 : 2];
     } else if (key == "f" || key == "l" || key == "p") {
       // Faces, and the lines and points a mesh skips, whose indices must still be in range.
       const size_t least = key == "f" ? 3 : key == "l" ? 2 : 1;
       if (words.size() < least + 1) {
-        fail(file, line,
+        fail(file, lines, {},
              std::string(key == "f"   ? "a face"
                          : key == "l" ? "a line"
                                       : "a point") +
@@ -130,10 +155,10 @@ void checkObj(std::string_view text, const std::string& file) {
           static constexpr const char* kWhat[] = {"a vertex index", "a texture index",
                                                   "a normal index"};
           static constexpr const char* kNoun[] = {"vertices", "texture coordinates", "normals"};
-          const long long k = integer(index, file, line, kWhat[part]);
+          const long long k = integer(index, file, lines, kWhat[part]);
           const long long resolved = k < 0 ? seen[part] + 1 + k : k;
           if (k == 0 || resolved < 1 || resolved > counts[part]) {
-            fail(file, line,
+            fail(file, lines, index,
                  std::string(kWhat[part]) + " " + quote(index, '\'') +
                      " is out of range: the file has " + std::to_string(counts[part]) + " " +
                      kNoun[part] +
@@ -171,7 +196,6 @@ PlyHeader readPlyHeader(Lines& lines, const std::string& file) {
   std::vector<std::string_view> words;
   bool ended = false;
   while (!ended && lines.next(words)) {
-    const int line = lines.number();
     if (words.empty() || words[0] == "comment" || words[0] == "obj_info" || words[0] == "ply") {
       continue;
     }
@@ -179,30 +203,33 @@ PlyHeader readPlyHeader(Lines& lines, const std::string& file) {
       h.format = words[1];
       if (h.format != "ascii" && h.format != "binary_little_endian" &&
           h.format != "binary_big_endian") {
-        fail(file, line, "unknown PLY format " + quote(h.format, '\''));
+        fail(file, lines, words[1], "unknown PLY format " + quote(h.format, '\''));
       }
     } else if (words[0] == "end_header") {
       ended = true;
     } else if (words[0] == "element" && words.size() == 3) {
-      const long long count = integer(words[2], file, line, "an element count");
-      if (count < 0) fail(file, line, "element " + quote(words[1], '\'') + " has a negative count");
+      const long long count = integer(words[2], file, lines, "an element count");
+      if (count < 0)
+        fail(file, lines, words[2], "element " + quote(words[1], '\'') + " has a negative count");
       h.elements.push_back({words[1], count, {}});
       if (words[1] == "vertex") h.vertices = count;
     } else if (words[0] == "property" && !h.elements.empty() && words.size() >= 3) {
       const bool list = words[1] == "list";
-      if (list && words.size() != 5) fail(file, line, "malformed list property");
-      if (!list && words.size() != 3) fail(file, line, "malformed property");
+      if (list && words.size() != 5) fail(file, lines, words[0], "malformed list property");
+      if (!list && words.size() != 3) fail(file, lines, words[0], "malformed property");
       PlyProperty p{words.back(), list, list ? words[3] : words[1], list ? words[2] : ""};
       h.elements.back().properties.push_back(p);
     } else {
-      fail(file, line, "malformed PLY header line starting " + quote(words[0], '\''));
+      fail(file, lines, words.empty() ? std::string_view() : words[0],
+           "malformed PLY header line starting " + quote(words[0], '\''));
     }
   }
   if (!ended) fail(file, lines.number(), "the PLY header has no 'end_header'");
   return h;
 }
 
-void checkAsciiPly(Lines& lines, const PlyHeader& header, const std::string& file) {
+void checkAsciiPly(Lines& lines, const PlyHeader& header, const std::string& file,
+                   NonFinite nonFinite) {
   const std::vector<PlyElement>& elements = header.elements;
   std::vector<std::string_view> words;
   const long long vertices = header.vertices;
@@ -213,34 +240,34 @@ void checkAsciiPly(Lines& lines, const PlyHeader& header, const std::string& fil
              "the file ends after " + std::to_string(i) + " of the " + std::to_string(e.count) +
                  " " + std::string(e.name) + " lines its header promises");
       }
-      const int line = lines.number();
       size_t w = 0;
       for (const PlyProperty& p : e.properties) {
         const bool corners = isFaceCorners(e, p);
         if (!p.list) {
           if (w >= words.size())
-            fail(file, line, "too few values on this " + std::string(e.name) + " line");
-          number(words[w++], file, line, "a property value");
+            fail(file, lines, {}, "too few values on this " + std::string(e.name) + " line");
+          number(words[w++], file, lines, "a property value", nonFinite);
           continue;
         }
         if (w >= words.size())
-          fail(file, line, "too few values on this " + std::string(e.name) + " line");
-        const long long n = integer(words[w++], file, line, "a list length");
+          fail(file, lines, {}, "too few values on this " + std::string(e.name) + " line");
+        const long long n = integer(words[w++], file, lines, "a list length");
         if (n < 0 || static_cast<size_t>(n) > words.size() - w) {
-          fail(file, line,
+          fail(file, lines, words[w - 1],
                "the list promises " + std::to_string(n) + " values, the line has " +
                    std::to_string(words.size() - w));
         }
         if (corners && n < 3)
-          fail(file, line, "a face needs at least 3 corners, found " + std::to_string(n));
+          fail(file, lines, words[w - 1],
+               "a face needs at least 3 corners, found " + std::to_string(n));
         for (long long k = 0; k < n; ++k) {
           if (!corners) {
-            number(words[w++], file, line, "a list value");
+            number(words[w++], file, lines, "a list value", nonFinite);
             continue;
           }
-          const long long index = integer(words[w], file, line, "a vertex index");
+          const long long index = integer(words[w], file, lines, "a vertex index");
           if (index < 0 || index >= vertices) {
-            fail(file, line,
+            fail(file, lines, words[w],
                  "vertex index " + quote(words[w], '\'') + " is out of range: the file has " +
                      std::to_string(vertices) + " vertices (indices 0 to " +
                      std::to_string(vertices - 1) + ")");
@@ -249,7 +276,7 @@ void checkAsciiPly(Lines& lines, const PlyHeader& header, const std::string& fil
         }
       }
       if (w != words.size()) {
-        fail(file, line,
+        fail(file, lines, w < words.size() ? words[w] : std::string_view(),
              "this " + std::string(e.name) + " line has " + std::to_string(words.size()) +
                  " values, its header declares " + std::to_string(w));
       }
@@ -351,14 +378,14 @@ void checkBinaryPly(std::string_view text, size_t at, const PlyHeader& header,
 
 }  // namespace
 
-void checkMeshText(std::string_view text, const std::string& file) {
+void checkMeshText(std::string_view text, const std::string& file, NonFinite nonFinite) {
   const std::string extension = lowerExtension(file);
-  if (extension == ".obj") return checkObj(text, file);
+  if (extension == ".obj") return checkObj(text, file, nonFinite);
   if (!text.starts_with("ply")) return;
   Lines lines(text, false);
   const PlyHeader header = readPlyHeader(lines, file);
   if (header.format == "ascii") {
-    checkAsciiPly(lines, header, file);
+    checkAsciiPly(lines, header, file, nonFinite);
   } else {
     checkBinaryPly(text, lines.offset(), header, file);
   }

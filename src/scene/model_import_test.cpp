@@ -280,9 +280,6 @@ TEST_F(ImportScene, BadImportsAreLocated) {
   EXPECT_THROW(loadSceneFile((dir_ / "cube.scene").string()), InputError);
 }
 
-// A model rendered directly is placed by a scene text made for it: an error about the
-// placement names the model file, with no line and column of that text (the user never wrote
-// it, and the model file has no such line).
 // An OBJ naming its MTL by an absolute path (assimp asks for it joined onto the OBJ's folder).
 TEST_F(ImportScene, ObjMaterialLibrariesByAbsolutePathAreFound) {
   fs::create_directories(dir_ / "a");
@@ -296,6 +293,47 @@ TEST_F(ImportScene, ObjMaterialLibrariesByAbsolutePathAreFound) {
   EXPECT_FALSE(anyWarning(model.warnings, ".mtl")) << model.warnings.front();
 }
 
+// An OBJ or PLY model that assimp cannot read is checked as a mesh block's file is: a bad
+// index is named by its line and column (assimp says only "vertex index out of range"), a
+// binary PLY's by its record; a file assimp reads is read as before.
+TEST_F(ImportScene, ObjAndPlyModelsAreCheckedLineByLine) {
+  std::ofstream(dir_ / "far.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 2 9\n";
+  try {
+    readModelFile((dir_ / "far.obj").string());
+    ADD_FAILURE() << "an index out of range was read";
+  } catch (const ModelFileError& e) {
+    EXPECT_NE(std::string(e.what()).find("far.obj:5:7: a vertex index '9' is out of range"),
+              std::string::npos)
+        << e.what();
+  }
+  std::string ply =
+      "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\n"
+      "property float y\nproperty float z\nelement face 1\n"
+      "property list uchar int vertex_indices\nend_header\n";
+  const float corners[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+  ply.append(reinterpret_cast<const char*>(corners), sizeof corners);
+  const unsigned char count = 3;
+  const int32_t face[3] = {0, 1, 7};
+  ply.append(reinterpret_cast<const char*>(&count), 1);
+  ply.append(reinterpret_cast<const char*>(face), sizeof face);
+  std::ofstream(dir_ / "far.ply", std::ios::binary) << ply;
+  try {
+    readModelFile((dir_ / "far.ply").string());
+    ADD_FAILURE() << "an index out of range was read";
+  } catch (const ModelFileError& e) {
+    EXPECT_NE(std::string(e.what()).find("face 1 of 1"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("vertex index 7 is out of range"), std::string::npos)
+        << e.what();
+  }
+  // A good OBJ is read as before.
+  std::ofstream(dir_ / "good.obj") << "v 0 0 0\nv 1 0 0 # a comment\nv 0 1 0\nvt 0 0\nvn 0 0 1\n"
+                                      "o tri\ns off\nf 1/1/1 2//1 -1/1\n";
+  EXPECT_EQ(readModelFile((dir_ / "good.obj").string()).objects.size(), 1u);
+}
+
+// A model rendered directly is placed by a scene text made for it: an error about the
+// placement names the model file, with no line and column of that text (the user never wrote
+// it, and the model file has no such line).
 TEST_F(ImportScene, ErrorsAboutAModelRenderedDirectlyNameItWithoutALocation) {
   // One triangle 1e38 wide: beyond the coordinates a scene allows once placed.
   const float corners[9] = {-1e38f, -1e38f, 0, 1e38f, -1e38f, 0, 0, 1e38f, 0};

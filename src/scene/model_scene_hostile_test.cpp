@@ -264,14 +264,20 @@ TEST_F(HostileScene, FilesDeclaringABillionVerticesAreRefusedWithoutGrowing) {
     const CommandResult asModel =
         runPrt("render \"" + model + "\" --width 8 --height 6 -q -o \"" + out + "\"");
     EXPECT_EQ(asModel.exitCode, 2) << name << "\n" << asModel.output;
-    EXPECT_TRUE(contains(asModel.output, "could not be read: it needs more than")) << asModel.output;
-    EXPECT_TRUE(contains(asModel.output, "64 times its size")) << asModel.output;
+    if (name.ends_with(".ply")) {
+      // Checked against the file once assimp has failed, as a mesh block's file is.
+      const char* where = name == "ascii.ply" ? "ascii.ply:13:7: " : "vertex 1 of 1000000000";
+      EXPECT_TRUE(contains(asModel.output, where)) << asModel.output;
+    } else {
+      EXPECT_TRUE(contains(asModel.output, "could not be read: it needs more than")) << asModel.output;
+      EXPECT_TRUE(contains(asModel.output, "64 times its size")) << asModel.output;
+    }
     const std::string scene = write(name + ".scene", "mesh { file \"" + name + "\" }\n");
     const CommandResult asMesh =
         runPrt("render \"" + scene + "\" --width 8 --height 6 -q -o \"" + out + "\"");
     EXPECT_EQ(asMesh.exitCode, 2) << name << "\n" << asMesh.output;
     EXPECT_TRUE(contains(asMesh.output, ".scene:1:13: error: ")) << asMesh.output;
-    // A mesh block's PLY is PRT's own reader's, which checks the counts against the file.
+    // A PLY's counts are checked against the file.
     if (!name.ends_with(".ply")) {
       EXPECT_TRUE(contains(asMesh.output, "it needs more than 512 MiB")) << asMesh.output;
     }

@@ -30,6 +30,7 @@
 set -eu
 
 prt=$1 mpiexec=$2 scene=$3 work=$4 mode=$5 strategy=${6:-adaptive} extra=${7:-}
+here=$(cd "$(dirname "$0")" && pwd)
 
 command -v ompi-server >/dev/null 2>&1 || { echo "skipped: no ompi-server"; exit 77; }
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
@@ -130,20 +131,7 @@ case $mode in
       # Once the checkpoint holds pixels it rendered (it is worker 1, the first joiner).
       rendered_by_1=
       for i in $(seq 1 300); do
-        if python3 - <<'PY'
-import struct, sys
-try:
-    d = open("ck", "rb").read()
-    n = struct.unpack_from("<H", d, 16)[0]
-    at = 18 + n + 8
-    runs = struct.unpack_from("<Q", d, at)[0]
-    done = sum(struct.unpack_from("<QQQ", d, at + 8 + 24 * i)[1] for i in range(runs))
-    owners = struct.unpack_from("<%dh" % done, d, len(d) - 8 - 2 * done)
-    sys.exit(0 if 1 in owners else 1)
-except Exception:
-    sys.exit(1)
-PY
-        then rendered_by_1=yes; break; fi
+        if python3 "$here/checkpoint_owner.py" ck 1; then rendered_by_1=yes; break; fi
         sleep 0.1
       done
       [ -n "$rendered_by_1" ] || fail "the first joiner rendered nothing within 30 s"

@@ -7,6 +7,7 @@
 set -eu
 
 prt=$1 mpiexec=$2 scene=$3 work=$4 cluster=$5
+here=$(cd "$(dirname "$0")" && pwd)
 skip() { echo "SKIP: $*"; exit 77; }
 fail() { echo "FAIL: $*" >&2; exit 1; }
 [ "$(id -u)" -eq 0 ] || skip "making network namespaces needs root"
@@ -32,16 +33,17 @@ bash "$cluster" up 3 "$hosts" >/dev/null || skip "could not make the network nam
 head -2 "$hosts/hostfile" >two-hosts
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 geometry="--width 64 --height 48 --spp 16 --drt 2"
+checkpoint=
 # shellcheck disable=SC2086
 "$prt" render "$scene" $geometry -q -o serial.pfm
 
 # The render on prt-h0 (master) and prt-h1 (one slow worker); returns once the port file is there.
 start_render() {
-  rm -f port out.pfm report.json
+  rm -f port out.pfm report.json ck
   # shellcheck disable=SC2086,SC2046
   "$mpiexec" $(cat "$hosts/mpirun-flags") --enable-recovery --hostfile two-hosts -np 2 \
     "$prt" render "$scene" $geometry -q --slowdown 600 --speed-index none --worker-timeout 2 \
-    --accept-workers "$work/port" -o out.pfm --report report.json >out.txt 2>err.txt &
+    --accept-workers "$work/port" -o out.pfm --report report.json $checkpoint >out.txt 2>err.txt &
   job=$!
   for _ in $(seq 300); do [ -s port ] && return 0; sleep 0.1; done
   fail "the render wrote no port file"
@@ -62,14 +64,23 @@ joined = [w for w in r["workers"] if w["joined_at_s"] is not None]
 assert len(joined) == 1 and joined[0]["host"] == "prt-h2" and joined[0]["pixels"] > 0, r["workers"]
 PY
 
-# The joiner SIGKILLed once it has rendered something: lost (its connection closes), its
-# pixels reissued, the image still the serial one.
+# The joiner SIGKILLed once it has rendered something (the render's checkpoint shows pixels
+# of worker 1): lost (its connection closes), its pixels reissued, the image still the serial
+# one. Slowed down enough that the render cannot end before the kill on a quiet machine (the
+# scene takes 0.03 s on one core) and the rest takes the slow worker seconds, not minutes.
+checkpoint="--checkpoint $work/ck --checkpoint-every 0.1"
 start_render
 # (ip, unshare and sh each exec the next: $! is prt's process.)
 ip netns exec prt-h2 unshare --uts sh -c 'hostname prt-h2; exec "$@"' sh \
-  "$prt" join "$work/port" --slowdown 300 >join.txt 2>&1 &
+  "$prt" join "$work/port" --slowdown 1000 >join.txt 2>&1 &
 joiner=$!
-sleep 2.5
+rendered=
+for _ in $(seq 300); do
+  if python3 "$here/checkpoint_owner.py" ck 1; then rendered=yes; break; fi
+  kill -0 "$joiner" 2>/dev/null || break
+  sleep 0.1
+done
+[ -n "$rendered" ] || fail "the joiner rendered nothing within 30 s: $(cat join.txt)"
 kill -9 "$joiner" 2>/dev/null || fail "the joiner ended before it could be killed: $(cat join.txt)"
 wait "$job" || fail "the render failed after its joiner was killed"
 job=
