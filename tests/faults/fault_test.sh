@@ -20,6 +20,7 @@
 set -eu
 
 prt=$1 scene=$2 work=$3 mode=$4
+here=$(cd "$(dirname "$0")" && pwd)
 rm -rf "$work"
 mkdir -p "$work"
 cd "$work"
@@ -131,7 +132,7 @@ PY
     # shellcheck disable=SC2086
     "$prt" render "$scene" -q $size -o serial.pfm
     start_render() {
-      rm -f port out.pfm r.json
+      rm -f port out.pfm r.json ck
       # shellcheck disable=SC2086
       timeout -k 2 60 "$prt" render "$scene" -q $size --workers 1 --speed-index none \
         --accept-workers "$work/port" --worker-timeout 2 -o out.pfm --report r.json "$@" \
@@ -153,11 +154,18 @@ assert [j["worker"] for j in r["joined_workers"]] == [1], r["joined_workers"]
 assert r["workers"][1]["pixels"] > 0, r["workers"]
 PY
     done
-    # A joiner killed once it is at work.
-    start_render --slowdown 300
-    "$prt" join "$work/port" --slowdown 200 2>join-err.txt &
+    # A joiner killed once it is at work: once the checkpoint holds pixels it rendered (the
+    # scene renders in 0.03 s on one core: a fixed wait could outlast the render).
+    start_render --slowdown 300 --checkpoint "$work/ck" --checkpoint-every 0.1
+    "$prt" join "$work/port" --slowdown 1000 2>join-err.txt &
     joiner=$!
-    sleep 1.5
+    rendered=
+    for _ in $(seq 300); do
+      if python3 "$here/../checkpoint_owner.py" ck 1; then rendered=yes; break; fi
+      kill -0 "$joiner" 2>/dev/null || break
+      sleep 0.1
+    done
+    [ -n "$rendered" ] || fail "the joiner rendered nothing within 30 s: $(cat join-err.txt)"
     kill -9 "$joiner" 2>/dev/null || fail "the joiner ended before it could be killed: $(cat join-err.txt)"
     wait "$render" || fail "the render failed after its joiner was killed: $(cat render-err.txt)"
     cmp serial.pfm out.pfm || fail "the image differs after the joiner was killed"

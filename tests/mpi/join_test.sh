@@ -131,7 +131,7 @@ case $mode in
       # Once the checkpoint holds pixels it rendered (it is worker 1, the first joiner).
       rendered_by_1=
       for i in $(seq 1 300); do
-        if python3 "$here/checkpoint_owner.py" ck 1; then rendered_by_1=yes; break; fi
+        if python3 "$here/../checkpoint_owner.py" ck 1; then rendered_by_1=yes; break; fi
         sleep 0.1
       done
       [ -n "$rendered_by_1" ] || fail "the first joiner rendered nothing within 30 s"

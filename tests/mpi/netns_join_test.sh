@@ -76,7 +76,7 @@ ip netns exec prt-h2 unshare --uts sh -c 'hostname prt-h2; exec "$@"' sh \
 joiner=$!
 rendered=
 for _ in $(seq 300); do
-  if python3 "$here/checkpoint_owner.py" ck 1; then rendered=yes; break; fi
+  if python3 "$here/../checkpoint_owner.py" ck 1; then rendered=yes; break; fi
   kill -0 "$joiner" 2>/dev/null || break
   sleep 0.1
 done
