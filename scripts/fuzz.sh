@@ -4,7 +4,8 @@
 # message decoder, seeded with one message of each kind, the master's and a worker's state
 # machines on hostile traffic (tests/fuzz/protocol_fuzz.cpp), the glTF reader, seeded with the .glb
 # and .gltf files of tests/models and scenes/models, and the asset pack's decoder, seeded with
-# the packs of scenes/chess.scene and scenes/street.scene, the checkpoint reader, and the TCP
+# the packs of scenes/chess.scene and scenes/street.scene, the line-by-line check of OBJ and
+# PLY files, seeded with the repository's, the checkpoint reader, and the TCP
 # door's framing and invitation check (tests/fuzz/tcp_frames_fuzz.cpp). Fails (non-zero exit) on any crash,
 # sanitizer report, leak or input slower than 10 s; the input that failed is left in
 # build-fuzz/fuzz/ as crash-*, leak-* or timeout-*, to replay with
@@ -21,13 +22,15 @@ cmake --build --preset fuzz -- -j"$(nproc)" >/dev/null
 
 corpus=build-fuzz/corpus
 mkdir -p "$corpus/scene" "$corpus/message" "$corpus/protocol" "$corpus/model" "$corpus/pack" \
-  "$corpus/checkpoint" "$corpus/tcp"
+  "$corpus/checkpoint" "$corpus/tcp" "$corpus/mesh"
 cp scenes/*.scene tests/malformed/*.scene "$corpus/scene/"
 build-fuzz/fuzz/prt_fuzz_message_seeds "$corpus/message" scenes/fig08-basic-features.scene
 cp tests/models/*.glb tests/models/*.gltf scenes/models/*.glb scenes/models/*.gltf \
    scenes/models/street/*.glb "$corpus/model/"
 build-fuzz/fuzz/prt_fuzz_pack_seeds "$corpus/pack" scenes/chess.scene scenes/street.scene
 build-fuzz/fuzz/prt_fuzz_checkpoint_seeds "$corpus/checkpoint"
+find tests/models scenes/models -maxdepth 1 \( -iname '*.obj' -o -iname '*.ply' \) \
+  -exec cp {} "$corpus/mesh/" \;
 
 # -rss_limit_mb and -malloc_limit_mb: an input must not make the code take gigabytes;
 # -max_len: inputs of up to 64 kB (the parser's cost is linear; longer inputs only slow it),
@@ -50,6 +53,7 @@ run prt_fuzz_message_decoder "$corpus/message" || status=1
 run prt_fuzz_protocol "$corpus/protocol" || status=1
 run prt_fuzz_model_reader "$corpus/model" 131072 || status=1
 run prt_fuzz_asset_pack "$corpus/pack" 1048576 || status=1
+run prt_fuzz_mesh_text "$corpus/mesh" 262144 || status=1
 run prt_fuzz_checkpoint "$corpus/checkpoint" || status=1
 run prt_fuzz_tcp_frames "$corpus/tcp" || status=1
 exit $status
