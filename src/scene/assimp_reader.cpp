@@ -477,8 +477,6 @@ class AssimpReader {
     }
   }
 
-
-
   const std::string path_;
   const fs::path directory_;
   size_t budget_;

@@ -856,9 +856,14 @@ class GltfReader {
   void addLight(int index, const Transform& world) {
     if (index < 0 || static_cast<size_t>(index) >= model_.lights.size()) return;
     const tinygltf::Light& l = model_.lights[static_cast<size_t>(index)];
+    if (l.intensity < 0) {  // a light that darkens: no scene light can
+      notes_.notUsed.insert("light " + (l.name.empty() ? std::to_string(index) : "'" + l.name + "'") +
+                            ", of negative intensity");
+      return;
+    }
     Light light;
     const Color color = l.color.size() == 3 ? Color(l.color[0], l.color[1], l.color[2]) : Color(1);
-    light.color = color * (std::isfinite(l.intensity) ? std::max(0.0, l.intensity) : 1.0) * kLightScale;
+    light.color = color * (std::isfinite(l.intensity) ? l.intensity : 1.0) * kLightScale;
     const Vec3 position = world.point({});
     const Vec3 axis = world.vector({0, 0, -1});
     if (!(length(axis) > 0)) return;
@@ -876,8 +881,6 @@ class GltfReader {
     if (!isFinite(light.color)) return;
     out_.lights.push_back(light);
   }
-
-
 
   const std::string path_;
   size_t budget_;

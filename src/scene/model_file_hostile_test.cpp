@@ -768,6 +768,23 @@ TEST_F(HostileGltf, LightsWithAbsurdNumbersAreFiniteOrLeftOut) {
   batch.run();
 }
 
+// A light of negative intensity darkens in some renderers; no scene light can. It is left out
+// with a warning, not made a light of no light (nor, with a negative colour, a bright one).
+TEST_F(HostileGltf, LightsOfNegativeIntensityAreLeftOutWithAWarning) {
+  for (const std::string color : {"[1,1,1]", "[-1,-1,-1]"}) {
+    Gltf g;
+    g.nodes = R"({"mesh":0},{"extensions":{"KHR_lights_punctual":{"light":0}}})";
+    g.scenes = R"("scene":0,"scenes":[{"nodes":[0,1]}])";
+    g.more = R"(,"extensionsUsed":["KHR_lights_punctual"],"extensions":{"KHR_lights_punctual":)"
+             R"({"lights":[{"type":"point","name":"dark","intensity":-5,"color":)" + color + "}]}}";
+    const ImportedModel m = readModelFile(write("dark.gltf", g.json()));
+    EXPECT_TRUE(m.lights.empty()) << color;
+    bool warned = false;
+    for (const std::string& w : m.warnings) warned |= contains(w, "light 'dark', of negative intensity");
+    EXPECT_TRUE(warned) << color;
+  }
+}
+
 // Numbers far beyond an int where the reader casts them to one (undefined behaviour that
 // clang's -fsanitize=undefined reports; GCC's does not check float-to-int conversions).
 TEST_F(HostileGltf, TextureTransformsWithAbsurdNumbersStayFinite) {
