@@ -15,9 +15,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <numbers>
 #include <optional>
@@ -156,7 +158,6 @@ std::string glbProblem(const std::vector<unsigned char>& b) {
   return {};
 }
 
-// Whether JSON text nests arrays and objects deeper than `limit` (strings skipped).
 // The names in a glTF's "extensionsRequired", read from its JSON text (empty when the text is
 // not JSON or has none).
 std::vector<std::string> requiredExtensions(const unsigned char* text, size_t size) {
@@ -171,6 +172,61 @@ std::vector<std::string> requiredExtensions(const unsigned char* text, size_t si
   return names;
 }
 
+// The image tinygltf names in `error` as one whose data: URI it could not decode (a media type
+// it does not know, such as image/webp or image/ktx2, or no data), or -1.
+int undecodedImage(const std::string& error) {
+  static const std::string kSays = "Failed to decode 'uri' for image[";
+  const size_t at = error.find(kSays);
+  if (at == std::string::npos) return -1;
+  const char* digits = error.c_str() + at + kSays.size();
+  char* end = nullptr;
+  const long index = std::strtol(digits, &end, 10);
+  return end != digits && *end == ']' && index >= 0 && index < (1L << 30) ? static_cast<int>(index) : -1;
+}
+
+// The glTF file `bytes` (the text of a .gltf, or a .glb) with image `index`'s URI replaced by
+// "data:", which names no file and no data: what tinygltf then keeps as an image without
+// bytes, so that one image it cannot decode does not refuse the whole file. `mediaType` is
+// set to the URI's (what it said between "data:" and ';' or ','). Nothing when the JSON does
+// not parse or has no such image with a data: URI.
+std::optional<std::vector<unsigned char>> withoutImageUri(const std::vector<unsigned char>& bytes,
+                                                          bool binary, int index,
+                                                          std::string& mediaType) {
+  const size_t jsonAt = binary ? 20 : 0;
+  uint32_t jsonSize = static_cast<uint32_t>(bytes.size());
+  if (binary) std::memcpy(&jsonSize, bytes.data() + 12, 4);
+  nlohmann::json json =
+      nlohmann::json::parse(bytes.data() + jsonAt, bytes.data() + jsonAt + jsonSize, nullptr, false);
+  if (!json.is_object() || !json.contains("images") || !json["images"].is_array() ||
+      static_cast<size_t>(index) >= json["images"].size()) {
+    return std::nullopt;
+  }
+  nlohmann::json& image = json["images"][static_cast<size_t>(index)];
+  if (!image.is_object() || !image.contains("uri") || !image["uri"].is_string()) return std::nullopt;
+  const std::string uri = image["uri"].get<std::string>();
+  if (uri.rfind("data:", 0) != 0) return std::nullopt;
+  mediaType = uri.substr(5, std::min(uri.find_first_of(";,"), size_t{69}) - 5);
+  image["uri"] = "data:";
+  std::string text = json.dump();
+  if (!binary) return std::vector<unsigned char>(text.begin(), text.end());
+  while (text.size() % 4 != 0) text += ' ';  // a chunk's length is a multiple of 4
+  const size_t rest = 20 + static_cast<size_t>(jsonSize);
+  std::vector<unsigned char> out(bytes.begin(), bytes.begin() + 12);
+  const auto u32 = [&out](size_t at, uint64_t value) {
+    const auto v = static_cast<uint32_t>(value);
+    std::memcpy(out.data() + at, &v, 4);
+  };
+  out.resize(20);
+  u32(8, 20 + text.size() + (bytes.size() - rest));
+  u32(12, text.size());
+  u32(16, 0x4E4F534Au);  // "JSON"
+  out.insert(out.end(), text.begin(), text.end());
+  out.insert(out.end(), bytes.begin() + static_cast<std::ptrdiff_t>(rest), bytes.end());
+  if (out.size() > std::numeric_limits<uint32_t>::max()) return std::nullopt;
+  return out;
+}
+
+// Whether JSON text nests arrays and objects deeper than `limit` (strings skipped).
 bool nestsDeeperThan(const unsigned char* text, size_t size, int limit) {
   int depth = 0;
   bool inString = false;
@@ -284,12 +340,33 @@ class GltfReader {
     if (head.size() > std::numeric_limits<unsigned int>::max()) {
       throw ModelFileError("model file \"" + path_ + "\" is too large");
     }
-    const bool ok =
-        binary ? loader.LoadBinaryFromMemory(&model_, &error, &warning, head.data(),
-                                             static_cast<unsigned int>(head.size()), base)
-               : loader.LoadASCIIFromString(&model_, &error, &warning,
-                                            reinterpret_cast<const char*>(head.data()),
-                                            static_cast<unsigned int>(head.size()), base);
+    const uintmax_t bytesLeft = bytesLeft_;
+    auto parse = [&] {
+      return binary ? loader.LoadBinaryFromMemory(&model_, &error, &warning, head.data(),
+                                                  static_cast<unsigned int>(head.size()), base)
+                    : loader.LoadASCIIFromString(&model_, &error, &warning,
+                                                 reinterpret_cast<const char*>(head.data()),
+                                                 static_cast<unsigned int>(head.size()), base);
+    };
+    bool ok = parse();
+    // An image whose data: URI tinygltf cannot decode fails the whole file there: read again
+    // without that URI, the image then missing (a warning, or with --strict an error), up to
+    // a few such images.
+    for (int image = undecodedImage(error); !ok && image >= 0 && undecodable_.size() < 64 &&
+                                            !undecodable_.count(image);
+         image = undecodedImage(error)) {
+      std::string mediaType;
+      auto rewritten = withoutImageUri(head, binary, image, mediaType);
+      if (!rewritten || rewritten->size() > std::numeric_limits<unsigned int>::max()) break;
+      undecodable_[image] = mediaType;
+      head = std::move(*rewritten);
+      model_ = tinygltf::Model();
+      encoded_ = EncodedImages();
+      bytesLeft_ = bytesLeft;
+      error.clear();
+      warning.clear();
+      ok = parse();
+    }
     static const std::set<std::string> kUnderstood = {
         "KHR_lights_punctual",       "KHR_materials_emissive_strength", "KHR_materials_ior",
         "KHR_materials_transmission", "KHR_materials_unlit",            "KHR_materials_volume",
@@ -759,6 +836,7 @@ class GltfReader {
                                    : fs::path(path_).filename().string() + " image " +
                                          std::to_string(index) +
                                          (image.name.empty() ? "" : " '" + image.name + "'");
+
       if (const auto view = encoded_.inView.find(index); view != encoded_.inView.end()) {
         const auto [data, size] = viewBytes(view->second);
         if (data == nullptr) {
@@ -781,7 +859,17 @@ class GltfReader {
         const fs::path file = image.uri.empty() || image.uri.rfind("data:", 0) == 0
                                   ? fs::path()
                                   : findTextureFile(fs::path(path_).parent_path(), image.uri);
-        if (file.empty()) {
+        if (image.uri.rfind("data:", 0) == 0) {
+          // One tinygltf could not decode (kept as a file name), or whose URI it was read
+          // without (undecodable_).
+          const auto dropped = undecodable_.find(index);
+          const std::string type = dropped != undecodable_.end()
+                                       ? dropped->second
+                                       : image.uri.substr(5, std::min(image.uri.find_first_of(";,"), size_t{69}) - 5);
+          notes_.problem(out_.warnings, "texture image " + name + " is a data: URI" +
+                                            (type.empty() ? "" : " of type " + type) +
+                                            " that holds no image PRT decodes");
+        } else if (file.empty()) {
           notes_.problem(out_.warnings, "texture image " + name + " was not found");
         } else {
           try {
@@ -887,6 +975,7 @@ class GltfReader {
   tinygltf::Model model_;
   ImportedModel out_;
   EncodedImages encoded_;
+  std::map<int, std::string> undecodable_;  // images whose data: URI was dropped: its media type
   std::vector<char> onPath_, visited_;
   bool rigging_ = false;           // whether the file has channels that may move its nodes
   std::vector<int> rigGltfNodes_;  // per node of out_.rig while walking the tree: its glTF node

@@ -472,6 +472,36 @@ TEST_F(HostileGltf, TextureImagesAreFoundAsOtherToolsWriteTheirPaths) {
   batch.run();
 }
 
+// An image whose data: URI tinygltf cannot decode (a type it does not know, no data) made it
+// refuse the whole file: the image is missing instead, with a warning (an error with
+// --strict), and the other image of the file is still read; as .gltf and as .glb.
+TEST_F(HostileGltf, ImagesWithUndecodableDataUrisAreMissingNotTheWholeFile) {
+  const std::string good = R"({"uri":"data:image/png;base64,)" + base64(png(2, 2, 2)) + R"("})";
+  const std::vector<std::string> bad = {R"({"uri":"data:image/webp;base64,UklGRg=="})",
+                                        R"({"uri":"data:image/png;base64,"})",
+                                        R"({"uri":"data:image/ktx2;base64,q0tUWCAyMLsNChoK"})"};
+  for (const std::string& image : bad) {
+    Gltf g;
+    g.meshes = R"({"primitives":[{"attributes":{"POSITION":0},"indices":1,"material":0}]})";
+    g.more = R"(,"materials":[{"pbrMetallicRoughness":{"baseColorTexture":{"index":1}},)"
+             R"("emissiveTexture":{"index":0}}],"textures":[{"source":0},{"source":1}],"images":[)" +
+             good + "," + image + "," + image + "]";
+    for (const bool binary : {false, true}) {
+      const std::string path =
+          write(binary ? "undecodable.glb" : "undecodable.gltf", binary ? glb(g.json(), "") : g.json());
+      const ImportedModel m = readModelFile(path);
+      EXPECT_EQ(m.objects.size(), 1u) << image;
+      EXPECT_EQ(m.textures.size(), 1u) << image;  // the good image, as the emission's texture
+      bool warned = false;
+      for (const std::string& w : m.warnings) warned |= contains(w, "image 1") && contains(w, "data: URI");
+      EXPECT_TRUE(warned) << image << (m.warnings.empty() ? "" : ": " + m.warnings.front());
+      ModelReadOptions strict;
+      strict.strict = true;
+      EXPECT_THROW(readModelFile(path, strict), ModelFileError) << image;
+    }
+  }
+}
+
 // An image in a buffer view that reaches past its buffer: tinygltf hands the image loader a
 // pointer and the view's length without checking them against the buffer.
 TEST_F(HostileGltf, ImageBufferViewsReachingPastTheirBufferAreRefused) {
