@@ -24,6 +24,22 @@ std::string errnoText(int err) {
   throw InputError("cannot write '" + path + "': " + errnoText(err));
 }
 
+// The file a write to `path` replaces: `path`, or where it leads when it is a symbolic link
+// (followed link by link, each relative to the folder of the link that names it), so that the
+// link stays and the file it names gets the contents, as `cp` and a shell's `>` do; a rename
+// onto the link would replace the link itself. Throws for a chain of links that loops.
+std::string followLinks(const std::string& path) {
+  std::filesystem::path at(path);
+  for (int hops = 0; hops < 40; ++hops) {
+    std::error_code error;
+    if (!std::filesystem::is_symlink(std::filesystem::symlink_status(at, error))) return at.string();
+    const std::filesystem::path next = std::filesystem::read_symlink(at, error);
+    if (error) throwCannotWrite(path, error.value());
+    at = next.is_absolute() ? next : (at.parent_path() / next).lexically_normal();
+  }
+  throwCannotWrite(path, ELOOP);
+}
+
 // The temporary files this process has open, for the signal handler to remove: a fixed table
 // of lock-free slots, as a handler may not allocate or lock. A slot is claimed (Writing), its
 // path copied in, then published (Ready); only Ready slots are read by the handler.
@@ -112,8 +128,8 @@ void removeStaleTemporaries(const std::string& path) {
 }
 
 TemporaryFile::TemporaryFile(const std::string& path, const std::string& extension)
-    : target_(path) {
-  std::FILE* file = openTemporary(path, tempPath_, slot_, extension);
+    : target_(followLinks(path)) {
+  std::FILE* file = openTemporary(target_, tempPath_, slot_, extension);
   std::fclose(file);
 }
 
@@ -127,8 +143,9 @@ void TemporaryFile::commit() {
   committed_ = true;
 }
 
-void writeFileAtomically(const std::string& path,
+void writeFileAtomically(const std::string& given,
                          const std::function<void(std::FILE*)>& writeContents) {
+  const std::string path = followLinks(given);
   std::string tempPath;
   int slot = -1;
   std::FILE* file = openTemporary(path, tempPath, slot);
@@ -177,8 +194,9 @@ void writeFileAtomically(const std::string& path,
   unregisterTemporary(slot);
 }
 
-void checkWritable(const std::string& path) {
-  if (path.empty()) throw InputError("cannot write '': no file name given");
+void checkWritable(const std::string& given) {
+  if (given.empty()) throw InputError("cannot write '': no file name given");
+  const std::string path = followLinks(given);
   std::error_code error;
   if (std::filesystem::is_directory(path, error)) throwCannotWrite(path, EISDIR);
   std::string tempPath;

@@ -8,6 +8,9 @@
 // closed with every step checked, then renamed onto `path`. On any failure the temporary
 // file is removed and an exception propagates.
 //
+// A `path` that is a symbolic link is followed: the file it names is replaced (in that file's
+// folder) and the link stays, as `cp` and a shell's `>` do.
+//
 // Thread-safe: concurrent calls use distinct temporary names. Two concurrent writers to the
 // same `path` both succeed and one of the complete files wins.
 //

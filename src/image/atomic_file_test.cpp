@@ -96,5 +96,47 @@ TEST_F(AtomicFile, CheckWritableLeavesNothingAndRefusesWhatCannotBeWritten) {
   EXPECT_EQ(text, "old");
 }
 
+// An output path that is a symbolic link: the file it names gets the contents (in its own
+// folder, where the temporary file goes too), the link stays a link; a dangling link gets its
+// file made; links that loop are an error that names the path.
+TEST_F(AtomicFile, ASymbolicLinkIsFollowedAndKept) {
+  fs::create_directories(dir_ / "shared");
+  std::ofstream(dir_ / "shared" / "frame.png") << "old";
+  fs::create_directories(dir_ / "here");
+  fs::create_symlink("../shared/frame.png", dir_ / "here" / "out.png");
+  writeFileAtomically((dir_ / "here" / "out.png").string(), "new");
+  EXPECT_TRUE(fs::is_symlink(fs::symlink_status(dir_ / "here" / "out.png")));
+  std::ifstream in(dir_ / "shared" / "frame.png");
+  std::string text;
+  in >> text;
+  EXPECT_EQ(text, "new");
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir_ / "shared"), {}), 1);
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir_ / "here"), {}), 1);
+  // A link to a link to a file that is not there yet.
+  fs::create_symlink(dir_ / "shared" / "later.png", dir_ / "shared" / "next.png");
+  fs::create_symlink("../shared/next.png", dir_ / "here" / "chain.png");
+  checkWritable((dir_ / "here" / "chain.png").string());
+  writeFileAtomically((dir_ / "here" / "chain.png").string(), "made");
+  EXPECT_TRUE(fs::is_regular_file(fs::symlink_status(dir_ / "shared" / "later.png")));
+  EXPECT_TRUE(fs::is_symlink(fs::symlink_status(dir_ / "here" / "chain.png")));
+  {
+    TemporaryFile video((dir_ / "here" / "out.png").string(), ".png");
+    EXPECT_EQ(fs::path(video.path()).parent_path(), dir_ / "shared");
+    std::ofstream(video.path()) << "video";
+    video.commit();
+  }
+  EXPECT_TRUE(fs::is_symlink(fs::symlink_status(dir_ / "here" / "out.png")));
+  // Links that loop.
+  fs::create_symlink("b.png", dir_ / "a.png");
+  fs::create_symlink("a.png", dir_ / "b.png");
+  try {
+    writeFileAtomically((dir_ / "a.png").string(), "x");
+    ADD_FAILURE() << "a loop of links was written";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("a.png"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(checkWritable((dir_ / "a.png").string()), InputError);
+}
+
 }  // namespace
 }  // namespace prt
