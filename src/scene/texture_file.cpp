@@ -70,6 +70,27 @@ uint64_t pngShortOfItsRows(const uint8_t* bytes, size_t size) {
   return rows > 1100 * compressed + 4096 ? rows : 0;
 }
 
+// A PNG chunk before IEND that claims more bytes than the file has left (empty when none):
+// stb_image grows its buffer for image data to a chunk's claimed length before reading it,
+// gigabytes for a file of kilobytes.
+std::string pngChunkPastTheEnd(const uint8_t* bytes, size_t size) {
+  static constexpr uint8_t kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+  if (size < 8 || !std::equal(kSignature, kSignature + 8, bytes)) return {};
+  for (size_t at = 8; at + 8 <= size;) {
+    const uint64_t length = bigEndian32(bytes + at);
+    const std::string type(reinterpret_cast<const char*>(bytes + at + 4), 4);
+    if (size - at < 12 || length > size - at - 12) {
+      std::string shown;
+      for (const char c : type) shown += std::isalnum(static_cast<unsigned char>(c)) ? c : '?';
+      return "its " + shown + " chunk at byte " + std::to_string(at) + " claims " +
+             std::to_string(length) + " bytes, beyond the file's end";
+    }
+    if (type == "IEND") break;
+    at += 12 + length;
+  }
+  return {};
+}
+
 }  // namespace
 
 std::shared_ptr<const TextureImage> decodeTextureImage(const uint8_t* bytes, size_t size,
@@ -106,6 +127,9 @@ std::shared_ptr<const TextureImage> decodeTextureImage(const uint8_t* bytes, siz
                        std::to_string(decoded >> 20) + " MiB decoded, beyond what is left of " +
                        "the textures' memory budget (" + std::to_string(budgetBytes >> 20) +
                        " MiB)");
+  }
+  if (const std::string why = pngChunkPastTheEnd(bytes, size); !why.empty()) {
+    throw TextureError("texture " + name + " is truncated or not a valid PNG: " + why);
   }
   if (const uint64_t rows = pngShortOfItsRows(bytes, size)) {
     throw TextureError("texture " + name + " declares " + std::to_string(width) + " x " +

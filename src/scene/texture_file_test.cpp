@@ -72,5 +72,33 @@ TEST(TextureFile, APngTooLargeForTheDecoderIsRefusedByItsSize) {
   }
 }
 
+// A PNG chunk claiming more bytes than the file has (found by the model reader's fuzzer: an
+// IDAT of 1.5 GB in an 85 KB glTF, for which stb grew its buffer to 2 GB before reading).
+TEST(TextureFile, APngChunkClaimingMoreThanTheFileIsRefusedBeforeDecoding) {
+  const std::vector<uint8_t> good = fileBytes(kSource / "scenes/models/board-checker.png");
+  // The first chunk after IHDR (at byte 33): its length made 1,560,968,458.
+  std::vector<uint8_t> bytes = good;
+  bytes[33] = 0x5d;
+  bytes[34] = 0x0a;
+  bytes[35] = 0x0a;
+  bytes[36] = 0x0a;
+  size_t budget = size_t{1} << 30;
+  try {
+    decodeTextureImage(bytes.data(), bytes.size(), "claims.png", budget);
+    FAIL() << "decoded";
+  } catch (const TextureError& e) {
+    EXPECT_NE(std::string(e.what()).find("its pHYs chunk at byte 33 claims 1560939018 bytes"), std::string::npos)
+        << e.what();
+  }
+  EXPECT_EQ(budget, size_t{1} << 30) << "nothing taken off the budget";
+  // Cut short inside its data: the same.
+  bytes.assign(good.begin(), good.begin() + static_cast<std::ptrdiff_t>(good.size() / 2));
+  EXPECT_THROW(decodeTextureImage(bytes.data(), bytes.size(), "half.png", budget), TextureError);
+  // Bytes after IEND are not looked at.
+  bytes = good;
+  bytes.insert(bytes.end(), {0xff, 0xff, 0xff, 0xff, 'I', 'D', 'A', 'T'});
+  EXPECT_NE(decodeTextureImage(bytes.data(), bytes.size(), "trailing.png", budget), nullptr);
+}
+
 }  // namespace
 }  // namespace prt
