@@ -1,7 +1,6 @@
 #include "scene/contained_readers.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cstring>
 #include <filesystem>
 #include <limits>
@@ -19,8 +18,6 @@
 
 namespace prt {
 namespace {
-
-namespace fs = std::filesystem;
 
 static_assert(std::is_trivially_copyable_v<Light> && std::is_trivially_copyable_v<Camera>,
               "lights and cameras cross the pipe as bytes: the child is this same program");
@@ -93,8 +90,7 @@ std::string failureText(const ContainedFailure& f) {
 // read the file: assimp's own message stands then. Run only after a failure: assimp reads
 // files the check refuses (a PLY header with a line of its own, a short final record).
 void throwLocatedTextError(const std::string& path) {
-  std::string extension = fs::path(path).extension().string();
-  for (char& ch : extension) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+  const std::string extension = lowerExtension(path);
   if (extension != ".obj" && extension != ".ply") return;
   std::string text;
   try {

@@ -28,12 +28,17 @@ uint32_t bigEndian32(const uint8_t* p) {
   return (uint32_t{p[0]} << 24) | (uint32_t{p[1]} << 16) | (uint32_t{p[2]} << 8) | uint32_t{p[3]};
 }
 
+// Whether the bytes start with PNG's signature.
+bool isPng(const uint8_t* bytes, size_t size) {
+  static constexpr uint8_t kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+  return size >= 8 && std::equal(kSignature, kSignature + 8, bytes);
+}
+
 // A PNG header's width, height and channels (false when the bytes do not start one): stb's
 // own reading refuses an image too large for its memory limit, and then says only that no
 // format matched.
 bool pngHeader(const uint8_t* bytes, size_t size, int& width, int& height, int& channels) {
-  static constexpr uint8_t kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
-  if (size < 33 || !std::equal(kSignature, kSignature + 8, bytes)) return false;
+  if (size < 33 || !isPng(bytes, size)) return false;
   if (!std::equal(bytes + 12, bytes + 16, reinterpret_cast<const uint8_t*>("IHDR"))) return false;
   const uint32_t w = bigEndian32(bytes + 16), h = bigEndian32(bytes + 20);
   if (w == 0 || h == 0 || w > (1u << 30) || h > (1u << 30)) return false;
@@ -49,8 +54,7 @@ bool pngHeader(const uint8_t* bytes, size_t size, int& width, int& height, int& 
 // while inflating, gigabytes for a file of kilobytes, before finding the data short. Returns
 // the declared size of the rows in bytes when that is so, else 0.
 uint64_t pngShortOfItsRows(const uint8_t* bytes, size_t size) {
-  static constexpr uint8_t kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
-  if (size < 33 || !std::equal(kSignature, kSignature + 8, bytes)) return 0;
+  if (size < 33 || !isPng(bytes, size)) return 0;
   if (!std::equal(bytes + 12, bytes + 16, reinterpret_cast<const uint8_t*>("IHDR"))) return 0;
   const uint64_t width = bigEndian32(bytes + 16), height = bigEndian32(bytes + 20);
   if (width > (1u << 24) || height > (1u << 24)) return 0;  // refused by size before this
@@ -74,8 +78,7 @@ uint64_t pngShortOfItsRows(const uint8_t* bytes, size_t size) {
 // stb_image grows its buffer for image data to a chunk's claimed length before reading it,
 // gigabytes for a file of kilobytes.
 std::string pngChunkPastTheEnd(const uint8_t* bytes, size_t size) {
-  static constexpr uint8_t kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
-  if (size < 8 || !std::equal(kSignature, kSignature + 8, bytes)) return {};
+  if (!isPng(bytes, size)) return {};
   for (size_t at = 8; at + 8 <= size;) {
     const uint64_t length = bigEndian32(bytes + at);
     const std::string type(reinterpret_cast<const char*>(bytes + at + 4), 4);
