@@ -81,8 +81,6 @@ std::string failureText(const ContainedFailure& f) {
   return f.what();
 }
 
-// The child's limits for reading `path` (its size as it is now: a file that is not there, or
-// not regular, is the reader's own error).
 // After assimp failed on an OBJ or PLY model file: the problem found by the line-by-line check
 // of a mesh block's file (mesh_text_check.h), with its line and column, where assimp said
 // "vertex index out of range" or crashed. Infinite and NaN coordinates are let through, as the
@@ -105,6 +103,8 @@ void throwLocatedTextError(const std::string& path) {
   }
 }
 
+// The child's limits for reading `path` (its size as it is now: a file that is not there, or
+// not regular, is the reader's own error).
 ContainedLimits readerLimits(const std::string& path, uint64_t textureBudgetBytes) {
   std::error_code error;
   const uintmax_t size = std::filesystem::file_size(path, error);

@@ -24,6 +24,7 @@
 #include <numbers>
 #include <optional>
 #include <set>
+#include <string_view>
 
 #include "scene/gltf_accessor.h"
 #include "scene/gltf_animation.h"
@@ -158,10 +159,23 @@ std::string glbProblem(const std::vector<unsigned char>& b) {
   return {};
 }
 
+// The JSON text of a glTF file: the whole of a .gltf, the first chunk of a .glb (whose header
+// glbProblem has checked).
+std::string_view jsonText(const std::vector<unsigned char>& bytes, bool binary) {
+  uint32_t size = static_cast<uint32_t>(bytes.size());
+  if (binary) std::memcpy(&size, bytes.data() + 12, 4);
+  return {reinterpret_cast<const char*>(bytes.data()) + (binary ? 20 : 0), size};
+}
+
+// What a data: URI says its bytes are: between "data:" and ';' or ',', at most 64 characters.
+std::string mediaTypeOf(const std::string& uri) {
+  return uri.substr(5, std::min(uri.find_first_of(";,"), size_t{69}) - 5);
+}
+
 // The names in a glTF's "extensionsRequired", read from its JSON text (empty when the text is
 // not JSON or has none).
-std::vector<std::string> requiredExtensions(const unsigned char* text, size_t size) {
-  const nlohmann::json json = nlohmann::json::parse(text, text + size, nullptr, false);
+std::vector<std::string> requiredExtensions(std::string_view text) {
+  const nlohmann::json json = nlohmann::json::parse(text, nullptr, false);
   std::vector<std::string> names;
   if (!json.is_object()) return names;
   const auto required = json.find("extensionsRequired");
@@ -192,11 +206,8 @@ int undecodedImage(const std::string& error) {
 std::optional<std::vector<unsigned char>> withoutImageUri(const std::vector<unsigned char>& bytes,
                                                           bool binary, int index,
                                                           std::string& mediaType) {
-  const size_t jsonAt = binary ? 20 : 0;
-  uint32_t jsonSize = static_cast<uint32_t>(bytes.size());
-  if (binary) std::memcpy(&jsonSize, bytes.data() + 12, 4);
-  nlohmann::json json =
-      nlohmann::json::parse(bytes.data() + jsonAt, bytes.data() + jsonAt + jsonSize, nullptr, false);
+  const std::string_view original = jsonText(bytes, binary);
+  nlohmann::json json = nlohmann::json::parse(original, nullptr, false);
   if (!json.is_object() || !json.contains("images") || !json["images"].is_array() ||
       static_cast<size_t>(index) >= json["images"].size()) {
     return std::nullopt;
@@ -205,12 +216,12 @@ std::optional<std::vector<unsigned char>> withoutImageUri(const std::vector<unsi
   if (!image.is_object() || !image.contains("uri") || !image["uri"].is_string()) return std::nullopt;
   const std::string uri = image["uri"].get<std::string>();
   if (uri.rfind("data:", 0) != 0) return std::nullopt;
-  mediaType = uri.substr(5, std::min(uri.find_first_of(";,"), size_t{69}) - 5);
+  mediaType = mediaTypeOf(uri);
   image["uri"] = "data:";
   std::string text = json.dump();
   if (!binary) return std::vector<unsigned char>(text.begin(), text.end());
   while (text.size() % 4 != 0) text += ' ';  // a chunk's length is a multiple of 4
-  const size_t rest = 20 + static_cast<size_t>(jsonSize);
+  const size_t rest = 20 + original.size();
   std::vector<unsigned char> out(bytes.begin(), bytes.begin() + 12);
   const auto u32 = [&out](size_t at, uint64_t value) {
     const auto v = static_cast<uint32_t>(value);
@@ -328,11 +339,8 @@ class GltfReader {
         throw ModelFileError("model file \"" + path_ + "\" is not a binary glTF file: " + why);
       }
     }
-    // The JSON: the whole text file, or the .glb's first chunk.
-    const size_t jsonAt = binary ? 20 : 0;
-    uint32_t jsonSize = static_cast<uint32_t>(head.size());
-    if (binary) std::memcpy(&jsonSize, head.data() + 12, 4);
-    if (nestsDeeperThan(head.data() + jsonAt, jsonSize, kMaxJsonDepth)) {
+    const std::string_view json = jsonText(head, binary);
+    if (nestsDeeperThan(reinterpret_cast<const unsigned char*>(json.data()), json.size(), kMaxJsonDepth)) {
       throw ModelFileError("model file \"" + path_ + "\" nests its JSON deeper than " +
                            std::to_string(kMaxJsonDepth) + " levels: no glTF does");
     }
@@ -374,7 +382,8 @@ class GltfReader {
     if (!ok) {
       // A file that needs an extension PRT does not read (Draco's compressed meshes, whose
       // accessors have no buffer views) fails in tinygltf first: name the extension.
-      for (const std::string& name : requiredExtensions(head.data() + jsonAt, jsonSize)) {
+      // (The JSON as last read: a read without an image's URI rewrote it.)
+      for (const std::string& name : requiredExtensions(jsonText(head, binary))) {
         if (!kUnderstood.count(name)) {
           throw ModelFileError("model file \"" + path_ + "\" requires the glTF extension " +
                                name + ", which PRT does not read");
@@ -836,7 +845,6 @@ class GltfReader {
                                    : fs::path(path_).filename().string() + " image " +
                                          std::to_string(index) +
                                          (image.name.empty() ? "" : " '" + image.name + "'");
-
       if (const auto view = encoded_.inView.find(index); view != encoded_.inView.end()) {
         const auto [data, size] = viewBytes(view->second);
         if (data == nullptr) {
@@ -856,20 +864,20 @@ class GltfReader {
         // Not where the URI says: found as the other readers find textures (an absolute or
         // file:// path, backslashes, a drive letter, another letter case, beside the model or
         // in its textures/ folder).
-        const fs::path file = image.uri.empty() || image.uri.rfind("data:", 0) == 0
-                                  ? fs::path()
-                                  : findTextureFile(fs::path(path_).parent_path(), image.uri);
         if (image.uri.rfind("data:", 0) == 0) {
           // One tinygltf could not decode (kept as a file name), or whose URI it was read
           // without (undecodable_).
           const auto dropped = undecodable_.find(index);
           const std::string type = dropped != undecodable_.end()
                                        ? dropped->second
-                                       : image.uri.substr(5, std::min(image.uri.find_first_of(";,"), size_t{69}) - 5);
+                                       : mediaTypeOf(image.uri);
           notes_.problem(out_.warnings, "texture image " + name + " is a data: URI" +
                                             (type.empty() ? "" : " of type " + type) +
                                             " that holds no image PRT decodes");
-        } else if (file.empty()) {
+        } else if (const fs::path file =
+                       image.uri.empty() ? fs::path()
+                                         : findTextureFile(fs::path(path_).parent_path(), image.uri);
+                   file.empty()) {
           notes_.problem(out_.warnings, "texture image " + name + " was not found");
         } else {
           try {

@@ -220,8 +220,7 @@ PlyHeader readPlyHeader(Lines& lines, const std::string& file) {
       PlyProperty p{words.back(), list, list ? words[3] : words[1], list ? words[2] : ""};
       h.elements.back().properties.push_back(p);
     } else {
-      fail(file, lines, words.empty() ? std::string_view() : words[0],
-           "malformed PLY header line starting " + quote(words[0], '\''));
+      fail(file, lines, words[0], "malformed PLY header line starting " + quote(words[0], '\''));
     }
   }
   if (!ended) fail(file, lines.number(), "the PLY header has no 'end_header'");
@@ -276,7 +275,7 @@ void checkAsciiPly(Lines& lines, const PlyHeader& header, const std::string& fil
         }
       }
       if (w != words.size()) {
-        fail(file, lines, w < words.size() ? words[w] : std::string_view(),
+        fail(file, lines, words[w],  // w < words.size(): no value is read past the line
              "this " + std::string(e.name) + " line has " + std::to_string(words.size()) +
                  " values, its header declares " + std::to_string(w));
       }

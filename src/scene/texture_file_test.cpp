@@ -17,6 +17,14 @@ const std::filesystem::path kSource(PRT_SOURCE_DIR);
 
 std::vector<uint8_t> fileBytes(const std::filesystem::path& path) { return readTextureFile(path); }
 
+// A PNG's bytes with its header's width and height both made `side` (big-endian, bytes 16-23).
+std::vector<uint8_t> withSide(std::vector<uint8_t> png, uint32_t side) {
+  for (size_t at : {16u, 20u}) {
+    for (int k = 0; k < 4; ++k) png[at + static_cast<size_t>(k)] = static_cast<uint8_t>(side >> (24 - 8 * k));
+  }
+  return png;
+}
+
 TEST(TextureFile, DecodesPngsOtherToolsWroteIncludingOnesCompressedNearTheLimit) {
   for (const char* file : {"scenes/models/board-checker.png", "tests/models/blender-cube.png",
                            "tests/models/solid-2048-ffmpeg.png"}) {
@@ -33,15 +41,9 @@ TEST(TextureFile, DecodesPngsOtherToolsWroteIncludingOnesCompressedNearTheLimit)
 }
 
 TEST(TextureFile, APngThatCannotHoldTheRowsItDeclaresIsRefusedBeforeDecoding) {
-  std::vector<uint8_t> bytes = fileBytes(kSource / "scenes/models/board-checker.png");
   // The header now says 16,000 x 16,000 (768 MB of RGB rows, within the budget); the data is
   // still a 256 x 256 image's few kilobytes.
-  for (size_t at : {16u, 20u}) {
-    bytes[at] = 0;
-    bytes[at + 1] = 0;
-    bytes[at + 2] = 0x3e;
-    bytes[at + 3] = 0x80;
-  }
+  const std::vector<uint8_t> bytes = withSide(fileBytes(kSource / "scenes/models/board-checker.png"), 16000);
   size_t budget = size_t{1} << 30;
   try {
     decodeTextureImage(bytes.data(), bytes.size(), "big.png", budget);
@@ -53,15 +55,9 @@ TEST(TextureFile, APngThatCannotHoldTheRowsItDeclaresIsRefusedBeforeDecoding) {
 }
 
 TEST(TextureFile, APngTooLargeForTheDecoderIsRefusedByItsSize) {
-  std::vector<uint8_t> bytes = fileBytes(kSource / "scenes/models/board-checker.png");
   // 30,000 x 30,000: within the side limit, beyond the budget (2.5 GiB of RGB), and beyond
   // what stb reads, which then says only that no format matched.
-  for (size_t at : {16u, 20u}) {
-    bytes[at] = 0;
-    bytes[at + 1] = 0;
-    bytes[at + 2] = 0x75;
-    bytes[at + 3] = 0x30;
-  }
+  const std::vector<uint8_t> bytes = withSide(fileBytes(kSource / "scenes/models/board-checker.png"), 30000);
   size_t budget = size_t{1} << 30;
   try {
     decodeTextureImage(bytes.data(), bytes.size(), "huge.png", budget);

@@ -159,13 +159,8 @@ PY
     start_render --slowdown 300 --checkpoint "$work/ck" --checkpoint-every 0.1
     "$prt" join "$work/port" --slowdown 1000 2>join-err.txt &
     joiner=$!
-    rendered=
-    for _ in $(seq 300); do
-      if python3 "$here/../checkpoint_owner.py" ck 1; then rendered=yes; break; fi
-      kill -0 "$joiner" 2>/dev/null || break
-      sleep 0.1
-    done
-    [ -n "$rendered" ] || fail "the joiner rendered nothing within 30 s: $(cat join-err.txt)"
+    python3 "$here/../checkpoint_owner.py" ck 1 30 "$joiner" ||
+      fail "the joiner rendered nothing within 30 s: $(cat join-err.txt)"
     kill -9 "$joiner" 2>/dev/null || fail "the joiner ended before it could be killed: $(cat join-err.txt)"
     wait "$render" || fail "the render failed after its joiner was killed: $(cat render-err.txt)"
     cmp serial.pfm out.pfm || fail "the image differs after the joiner was killed"

@@ -129,12 +129,8 @@ case $mode in
       done
       [ -n "$victim" ] || fail "the joining rank never started"
       # Once the checkpoint holds pixels it rendered (it is worker 1, the first joiner).
-      rendered_by_1=
-      for i in $(seq 1 300); do
-        if python3 "$here/../checkpoint_owner.py" ck 1; then rendered_by_1=yes; break; fi
-        sleep 0.1
-      done
-      [ -n "$rendered_by_1" ] || fail "the first joiner rendered nothing within 30 s"
+      python3 "$here/../checkpoint_owner.py" ck 1 30 "$victim" ||
+        fail "the first joiner rendered nothing within 30 s"
       if [ "$mode" = kill ]; then kill -9 "$victim"; else kill -STOP "$victim"; fi
     fi
     wait_for "$master" 100

@@ -74,13 +74,8 @@ start_render
 ip netns exec prt-h2 unshare --uts sh -c 'hostname prt-h2; exec "$@"' sh \
   "$prt" join "$work/port" --slowdown 1000 >join.txt 2>&1 &
 joiner=$!
-rendered=
-for _ in $(seq 300); do
-  if python3 "$here/../checkpoint_owner.py" ck 1; then rendered=yes; break; fi
-  kill -0 "$joiner" 2>/dev/null || break
-  sleep 0.1
-done
-[ -n "$rendered" ] || fail "the joiner rendered nothing within 30 s: $(cat join.txt)"
+python3 "$here/../checkpoint_owner.py" ck 1 30 "$joiner" ||
+  fail "the joiner rendered nothing within 30 s: $(cat join.txt)"
 kill -9 "$joiner" 2>/dev/null || fail "the joiner ended before it could be killed: $(cat join.txt)"
 wait "$job" || fail "the render failed after its joiner was killed"
 job=
