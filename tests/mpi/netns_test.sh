@@ -40,17 +40,18 @@ step="rendering the serial image"
 "$prt" render "$scene" $geometry -q -o serial.pfm
 step="rendering across the hosts"
 # Starts the run across the hosts and waits up to 30 s for its first checkpointed pixels
-# (or for mpirun to give up)
-# (scatter: worker 1 holds half the image until it renders it, so the cut below always finds
-# it holding unfinished pixels). Two
-# tries, each on hosts made afresh: the start of a job across namespaces (daemons launched
-# through the agent, TCP set up on the bridge) has been seen to stall once in many runs.
+# (or for mpirun to give up). Scatter gives worker 1 half the image, and at 1000 times slower
+# its half takes about 12 s (the serial image takes 0.03 s), so the cut below always finds it
+# holding unfinished pixels, however fast the tracer; worker 0 renders them once worker 1 is
+# declared lost. Two tries, each on hosts made afresh: the start of a job across namespaces
+# (daemons launched through the agent, TCP set up on the bridge) has been seen to stall once
+# in many runs. No speed index: at 1000 times slower its run alone would take half a minute.
 start_run() {
   rm -f ck out.pfm report.json
   # shellcheck disable=SC2086,SC2046
   "$mpiexec" $(cat "$hosts/mpirun-flags") --enable-recovery --hostfile "$hosts/hostfile" -np 3 \
-    "$prt" render "$scene" $geometry -q --strategy scatter --slowdown 60,60 --batch 8 \
-    --worker-timeout 2 \
+    "$prt" render "$scene" $geometry -q --strategy scatter --speed-index none \
+    --slowdown 60,1000 --batch 8 --worker-timeout 2 \
     -o out.pfm --checkpoint ck --checkpoint-every 0.1 --report report.json >out.txt 2>err.txt &
   job=$!
   for i in $(seq 1 300); do
