@@ -14,7 +14,7 @@ if [[ -f build/CMakeCache.txt ]]; then
   bash scripts/build.sh release prt
 else
   # No tests, no benchmarks, and the trace kernels in their baseline build only (the
-  # x86-64-v3 one is some 5 % faster, and scripts/test.sh builds it).
+  # x86-64-v3 and x86-64-v4 ones are faster, and scripts/test.sh builds them).
   # -O2 instead of -O3: a quicker build of the same pixels (no fast-math either way), a few
   # per cent slower to render. A unity build: each library's sources compiled up to 16 to a
   # file, so the heavy headers (CLI11, nlohmann's JSON, assimp) are parsed once or twice per

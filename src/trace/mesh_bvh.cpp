@@ -23,6 +23,7 @@ MeshBvh::MeshBvh(std::shared_ptr<const TriangleMesh> mesh) : mesh_(std::move(mes
   }
   bvh_ = QuadBvh(boxes, triangleOf_);
   boxes = {};  // no longer needed: free them before the corners are copied
+  static_assert(QuadBvh::kBlockItems == kBlockLanes);
   PRT_CHECK(triangleOf_.size() % QuadBvh::kBlockItems == 0);
   blocks_.resize(triangleOf_.size() / QuadBvh::kBlockItems);
   for (size_t k = 0; k < triangleOf_.size(); ++k) {
@@ -40,9 +41,9 @@ bool MeshBvh::nearest(const Ray& ray, double tMin, double& t, uint32_t& triangle
   const uint32_t* const triangleOf = triangleOf_.data();
   double best = t;
   uint32_t bestTriangle = ~0u;
-  bvh_.traverseBlocks<true>(ray, tMin, t, [&](uint32_t block, uint32_t) {
-    double d[4];
-    int lanes = blockHits(sheared, blocks[block], tMin, best, true, d);
+  bvh_.traverseBlocks<true>(ray, tMin, t, [&](uint32_t block, uint32_t used) {
+    double d[kBlockLanes];
+    int lanes = blockHits(sheared, blocks[block], static_cast<int>(used), tMin, best, true, d);
     for (; lanes != 0; lanes &= lanes - 1) {
       const int lane = std::countr_zero(static_cast<unsigned>(lanes));
       const uint32_t index = triangleOf[block * QuadBvh::kBlockItems + lane];
@@ -63,17 +64,18 @@ int MeshBvh::crossings(const Ray& ray, double tMin, double tMax, bool atMostOne)
   const ShearedRay4 sheared(ShearedRay{ray});
   const TriangleBlock* const blocks = blocks_.data();
   int count = 0;
-  bvh_.traverseBlocks<false>(ray, tMin, tMax, [&](uint32_t block, uint32_t) {
-    double d[4];
-    const int lanes = blockHits(sheared, blocks[block], tMin, tMax, false, d);
+  bvh_.traverseBlocks<false>(ray, tMin, tMax, [&](uint32_t block, uint32_t used) {
+    double d[kBlockLanes];
+    const int lanes = blockHits(sheared, blocks[block], static_cast<int>(used), tMin, tMax, false, d);
     if (atMostOne) {
       if (lanes == 0) return tMax;
       count = 1;
       return -1.0;  // stops the traversal
     }
     // No branch on a coin toss; and no std::popcount, a library call in the baseline build.
-    const int pairs = lanes - ((lanes >> 1) & 5);
-    count += (pairs & 3) + (pairs >> 2);
+    const int pairs = lanes - ((lanes >> 1) & 0x55);
+    const int quads = (pairs & 0x33) + ((pairs >> 2) & 0x33);
+    count += (quads + (quads >> 4)) & 0x0f;
     return tMax;
   });
   return count;

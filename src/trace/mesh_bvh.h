@@ -51,7 +51,7 @@ class MeshBvh {
 
  private:
   std::shared_ptr<const TriangleMesh> mesh_;
-  // The tree's leaves: blocks of up to four triangles tested at once, in the order the tree
+  // The tree's leaves: blocks of up to eight triangles tested at once, in the order the tree
   // lays them out (near ones close in memory), and the index in the mesh of the triangle in
   // each lane (~0u for an unused lane, whose corners are NaN).
   std::vector<TriangleBlock> blocks_;

@@ -9,6 +9,8 @@ namespace prt {
 namespace {
 
 constexpr uint32_t kItem = 1u << 31;
+// A binary leaf's reference: kItem | begin << kLeafCountBits | (count - 1).
+constexpr uint32_t kLeafCountBits = 3;
 
 // Beyond this depth, splits are made at the median: bounds the depth to
 // kSahDepth + log2(items) + kClusterItems whatever the boxes.
@@ -43,13 +45,13 @@ class BinaryTree {
 
   // A leaf's reference: the items items()[begin, begin + count).
   static uint32_t leaf(uint32_t begin, uint32_t count) {
-    return kItem | begin << 2 | (count - 1);
+    return kItem | begin << kLeafCountBits | (count - 1);
   }
   // What testing n items costs, in tests: blocks of maxLeaf items cost one test each, so a
   // split that fills them is preferred.
   double leafCost(uint32_t n) const { return static_cast<double>((n + maxLeaf_ - 1) / maxLeaf_); }
-  static uint32_t leafBegin(uint32_t ref) { return (ref & ~kItem) >> 2; }
-  static uint32_t leafCount(uint32_t ref) { return (ref & 3) + 1; }
+  static uint32_t leafBegin(uint32_t ref) { return (ref & ~kItem) >> kLeafCountBits; }
+  static uint32_t leafCount(uint32_t ref) { return (ref & ((1u << kLeafCountBits) - 1)) + 1; }
   const std::vector<uint32_t>& items() const { return items_; }
 
   std::vector<Node> nodes;
@@ -285,7 +287,8 @@ void QuadBvh::build(const std::vector<Bounds>& bounds, BvhBuild how,
   if (blocks != nullptr) blocks->clear();
   if (bounds.empty()) return;
   // Item and block indices take 29 bits of a reference, and the largest would make kEmpty.
-  PRT_CHECK(bounds.size() < (1u << 29) - 1);
+  static_assert(kLeafCountBits == kCountBits);
+  PRT_CHECK(bounds.size() < (1u << (31 - kCountBits)) - 1);
   double maxCoordinate = 0;
   for (const Bounds& b : bounds) maxCoordinate = std::max(maxCoordinate, b.largestMagnitude());
   maxCoordinate_ = floatAbove(maxCoordinate);
@@ -297,12 +300,12 @@ void QuadBvh::build(const std::vector<Bounds>& bounds, BvhBuild how,
   // A binary leaf becomes an item's reference, or the next block's (its items stored).
   auto leafRef = [&](uint32_t ref) {
     const uint32_t begin = BinaryTree::leafBegin(ref), count = BinaryTree::leafCount(ref);
-    if (blocks == nullptr) return kItem | tree.items()[begin] << 2;
+    if (blocks == nullptr) return kItem | tree.items()[begin] << kCountBits;
     const auto block = static_cast<uint32_t>(blocks->size() / kBlockItems);
     for (uint32_t lane = 0; lane < kBlockItems; ++lane) {
       blocks->push_back(lane < count ? tree.items()[begin + lane] : ~0u);
     }
-    return kItem | block << 2 | (count - 1);
+    return kItem | block << kCountBits | (count - 1);
   };
   if (tree.root & kItem) {  // one leaf: a root node with it in one lane, the others empty
     Bounds box;

@@ -2,7 +2,7 @@
 // QuadBvh: a bounding volume hierarchy of eight-way nodes, each holding its children's boxes in
 // one BoxOct tested at once in single precision (conservatively: see box_quad.h); a
 // child is another node or a leaf: a single item, or (for a mesh's triangles) a block of up to
-// four items the caller tests at once. The tree is built binary — top-down by a full-sweep
+// eight items the caller tests at once. The tree is built binary — top-down by a full-sweep
 // surface area heuristic over the three axes, bottom-up by greedy merging for small sets, so
 // large objects (floors, walls, pedestals) end up near the root instead of deep under boxes
 // that overlap them — then collapsed to eight children per node: a ray's way down is a chain
@@ -31,7 +31,7 @@ enum class BvhBuild { careful, binned };
 class QuadBvh {
  public:
   // Leaves of blocks: up to this many items each.
-  static constexpr uint32_t kBlockItems = 4;
+  static constexpr uint32_t kBlockItems = 8;
 
   QuadBvh() = default;
   // `bounds[i]` is the box of item i; items are referred to by their index, one per leaf.
@@ -65,9 +65,11 @@ class QuadBvh {
   size_t bytes() const { return nodes_.capacity() * sizeof(Node); }
 
  private:
-  // A child reference: kItem set for a leaf, kItem | index << 2 | (count - 1), the index an
-  // item's or a block's; otherwise a node's index. kEmpty: an unused lane.
+  // A child reference: kItem set for a leaf, kItem | index << kCountBits | (count - 1), the
+  // index an item's or a block's; otherwise a node's index. kEmpty: an unused lane.
   static constexpr uint32_t kItem = 1u << 31;
+  static constexpr uint32_t kCountBits = 3, kCountMask = (1u << kCountBits) - 1;
+  static_assert(kBlockItems <= kCountMask + 1);
   static constexpr uint32_t kEmpty = ~0u;
   static constexpr int kMaxDepth = 128;  // of the binary tree; the build guarantees it
 
@@ -129,7 +131,7 @@ void QuadBvh::traverseLeaves(const Ray& r, double tMin, double tMax, Visit&& vis
       const int lane = std::countr_zero(static_cast<unsigned>(leaves));
       if (entry[lane] > tMax) continue;  // a nearer hit has been found since the test
       const uint32_t ref = n.child[lane];
-      const double t = visit((ref & ~kItem) >> 2, (ref & 3) + 1);
+      const double t = visit((ref & ~kItem) >> kCountBits, (ref & kCountMask) + 1);
       if (t < 0) return;
       if (t != tMax) {
         tMax = t;

@@ -1,18 +1,19 @@
 #pragma once
-// TriangleBlock: four triangles tested against one ray at once, each lane computing exactly
+// TriangleBlock: eight triangles tested against one ray at once, each lane computing exactly
 // the operations of the scalar test in triangle.h in the same order (no sum reordered, no
 // fused operation: the project builds with -ffp-contract=off), so every lane's distance is bit
 // for bit triangleDistance's. Written with GCC/Clang vector extensions on vectors as wide as
-// the build's registers: two halves of two doubles (SSE2) in the baseline build, one vector of
-// four (AVX) in the x86-64-v3 build, the same IEEE operations in both. (Vectors wider than the
-// registers would have their comparisons done lane by lane.) An unused lane holds NaN corners:
-// its distance is NaN, which fails every comparison, as a miss does.
+// the build's registers: four parts of two doubles (SSE2) in the baseline build, two of four
+// (AVX) in the x86-64-v3 build, one of eight (AVX-512) in the x86-64-v4 build, the same IEEE
+// operations in all. (Vectors wider than the registers would have their comparisons done lane
+// by lane.) An unused lane holds NaN corners: its distance is NaN, which fails every
+// comparison, as a miss does; parts past a block's used lanes are not computed.
 
 #include <cstdint>
 #include <cstring>
 #include <limits>
 
-#if defined(__AVX__)
+#if defined(__AVX512F__) || defined(__AVX__)
 #include <immintrin.h>
 #elif defined(__SSE2__)
 #include <emmintrin.h>
@@ -22,9 +23,14 @@
 
 namespace prt {
 
+// Triangles per block.
+inline constexpr int kBlockLanes = 8;
+
 namespace block_detail {
-#if defined(__AVX__)
-inline constexpr int kWidth = 4;  // lanes per vector
+#if defined(__AVX512F__) && defined(__AVX512DQ__)
+inline constexpr int kWidth = 8;  // lanes per vector
+#elif defined(__AVX__)
+inline constexpr int kWidth = 4;
 #else
 inline constexpr int kWidth = 2;
 #endif
@@ -33,7 +39,9 @@ using Mask = int64_t __attribute__((vector_size(8 * kWidth)));  // lanes all bit
 
 // Bit i set when lane i of the comparison result is true.
 inline int bits(const Mask& m) {
-#if defined(__AVX__)
+#if defined(__AVX512F__) && defined(__AVX512DQ__)
+  return _mm512_movepi64_mask(reinterpret_cast<__m512i>(m));
+#elif defined(__AVX__)
   return _mm256_movemask_pd(reinterpret_cast<__m256d>(m));
 #elif defined(__SSE2__)
   return _mm_movemask_pd(reinterpret_cast<__m128d>(m));
@@ -51,7 +59,7 @@ inline int bits(const Mask& m) {
 }  // namespace block_detail
 
 struct TriangleBlock {
-  alignas(32) double corner[3][3][4];  // [a, b, c][x, y, z][lane], one triangle per lane
+  alignas(64) double corner[3][3][kBlockLanes];  // [a, b, c][x, y, z][lane], one per lane
 
   // Every lane unused.
   TriangleBlock() {
@@ -88,11 +96,12 @@ struct ShearedRay4 {
         kz(r.kz) {}
 };
 
-// triangleDistance for each lane: distance[i] is lane i's, bit for bit, or NaN where it misses.
+// triangleDistance for each of the first `used` lanes (the lanes in use come first): distance[i]
+// is lane i's, bit for bit, or NaN where it misses; lanes past `used` may be left unset.
 // Returns the lanes whose distance d is within range, lo < d < hi (lo < d <= hi with `toHi`),
 // as bit i for lane i: from the vectors still in registers, for the caller's next decision.
-inline int blockHits(const ShearedRay4& r, const TriangleBlock& t, double lo, double hi, bool toHi,
-                     double distance[4]) {
+inline int blockHits(const ShearedRay4& r, const TriangleBlock& t, int used, double lo, double hi,
+                     bool toHi, double distance[kBlockLanes]) {
   using block_detail::Doubles;
   using block_detail::Mask;
   auto load = [](const double* p) {
@@ -102,7 +111,7 @@ inline int blockHits(const ShearedRay4& r, const TriangleBlock& t, double lo, do
   };
   const Doubles low = PRT_SPLAT(lo), high = PRT_SPLAT(hi);
   int lanes = 0;
-  for (int part = 0; part < 4; part += block_detail::kWidth) {
+  for (int part = 0; part < used; part += block_detail::kWidth) {
     const Doubles az = load(&t.corner[0][r.kz][part]) - r.oz;
     const Doubles bz = load(&t.corner[1][r.kz][part]) - r.oz;
     const Doubles cz = load(&t.corner[2][r.kz][part]) - r.oz;

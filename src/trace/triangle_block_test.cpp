@@ -19,13 +19,14 @@ Vec3 randomPoint(Rng& rng, double scale) {
 
 // Each lane's distance has the bits of the scalar test's (NaN where that one misses), for
 // random triangles at several scales, triangles sharing edges and vertices with rays aimed
-// exactly at those, triangles seen edge-on and degenerate ones.
+// exactly at those, triangles seen edge-on and degenerate ones, in blocks of one to eight
+// used lanes.
 TEST(TriangleBlockTest, EveryLaneIsTheScalarTestBitForBit) {
   Rng rng(17);
   int hits = 0, misses = 0;
   for (int i = 0; i < 20000; ++i) {
     const double scale = std::ldexp(1.0, static_cast<int>(rng.uniform() * 40) - 20);
-    Vec3 corners[4][3];
+    Vec3 corners[kBlockLanes][3];
     for (auto& t : corners) {
       for (Vec3& p : t) p = randomPoint(rng, scale);
     }
@@ -46,25 +47,24 @@ TEST(TriangleBlockTest, EveryLaneIsTheScalarTestBitForBit) {
     }
     const ShearedRay sheared(ray);
     TriangleBlock block;
-    double pts[4][3][3];
-    const int used = 1 + i % 4;  // the lanes beyond are unused
+    double pts[kBlockLanes][3][3];
+    const int used = 1 + i % kBlockLanes;  // the lanes beyond are unused
     for (int lane = 0; lane < used; ++lane) {
       for (int k = 0; k < 3; ++k) {
         for (int axis = 0; axis < 3; ++axis) pts[lane][k][axis] = corners[lane][k][axis];
       }
       block.set(lane, pts[lane][0], pts[lane][1], pts[lane][2]);
     }
-    double d[4];
+    double d[kBlockLanes];
     const double lo = i % 2 ? 0.0 : -kInf, hi = i % 4 < 2 ? kInf : 2 * scale;
-    const bool toHi = i % 8 < 4;
-    const int lanes = blockHits(ShearedRay4(sheared), block, lo, hi, toHi, d);
-    for (int lane = 0; lane < 4; ++lane) {
+    const bool toHi = i % 16 < 8;
+    // Told every lane, or only the used ones (lanes past those may then be left unset).
+    const int told = i % 3 == 0 ? kBlockLanes : used;
+    const int lanes = blockHits(ShearedRay4(sheared), block, told, lo, hi, toHi, d);
+    EXPECT_EQ(lanes >> used, 0) << "ray " << i << ": an unused lane reported";
+    for (int lane = 0; lane < used; ++lane) {
       const bool within = d[lane] > lo && (toHi ? d[lane] <= hi : d[lane] < hi);
       EXPECT_EQ((lanes >> lane) & 1, within ? 1 : 0) << "ray " << i << ", lane " << lane;
-      if (lane >= used) {
-        EXPECT_TRUE(std::isnan(d[lane]));
-        continue;
-      }
       const double expected = triangleDistance(sheared, pts[lane][0], pts[lane][1], pts[lane][2]);
       if (std::isnan(expected)) {
         ++misses;
@@ -81,21 +81,25 @@ TEST(TriangleBlockTest, EveryLaneIsTheScalarTestBitForBit) {
 }
 
 TEST(TriangleBlockTest, LanesInRangeAreReportedByTheirBits) {
-  // Four triangles facing the ray at distances 1, 2, 3 and 4 along +z.
+  // Eight triangles facing the ray at distances 1 to 8 along +z.
   TriangleBlock block;
-  for (int lane = 0; lane < 4; ++lane) {
+  for (int lane = 0; lane < kBlockLanes; ++lane) {
     const double z = lane + 1.0;
     const double a[3] = {-1, -1, z}, b[3] = {1, -1, z}, c[3] = {0, 1, z};
     block.set(lane, a, b, c);
   }
   const ShearedRay4 ray(ShearedRay(Ray{{0, 0, 0}, {0, 0, 1}}));
-  double d[4];
-  EXPECT_EQ(blockHits(ray, block, 0, 3, false, d), 0b0011);
+  double d[kBlockLanes];
+  EXPECT_EQ(blockHits(ray, block, kBlockLanes, 0, 3, false, d), 0b0011);
   EXPECT_EQ(d[0], 1.0);
-  EXPECT_EQ(d[3], 4.0);
-  EXPECT_EQ(blockHits(ray, block, 0, 3, true, d), 0b0111);
-  EXPECT_EQ(blockHits(ray, block, 1, 4, true, d), 0b1110);
-  EXPECT_EQ(blockHits(ray, block, 4, 9, false, d), 0);
+  EXPECT_EQ(d[7], 8.0);
+  EXPECT_EQ(blockHits(ray, block, kBlockLanes, 0, 3, true, d), 0b0111);
+  EXPECT_EQ(blockHits(ray, block, kBlockLanes, 1, 4, true, d), 0b1110);
+  EXPECT_EQ(blockHits(ray, block, kBlockLanes, 4, 9, false, d), 0b11110000);
+  EXPECT_EQ(blockHits(ray, block, kBlockLanes, 8, 9, false, d), 0);
+  // Only the first lanes told used: the others are not looked at.
+  EXPECT_EQ(blockHits(ray, block, 2, 0, 9, false, d) & 0b11, 0b11);
+  EXPECT_EQ(blockHits(ray, block, 1, 0, 9, false, d) & 1, 1);
 }
 
 }  // namespace
