@@ -1,14 +1,21 @@
 #include "trace/mesh_bvh.h"
 
 #include <bit>
+#include <string>
 #include <utility>
 
 #include "core/check.h"
+#include "core/input_error.h"
 
 namespace prt {
 
 MeshBvh::MeshBvh(std::shared_ptr<const TriangleMesh> mesh) : mesh_(std::move(mesh)) {
   PRT_CHECK(mesh_ != nullptr && !mesh_->triangles.empty());
+  if (mesh_->triangles.size() > QuadBvh::kMaxItems) {
+    throw InputError("a mesh of " + std::to_string(mesh_->triangles.size()) +
+                     " triangles: more than the " + std::to_string(QuadBvh::kMaxItems) +
+                     " one mesh's tree holds; split it into several meshes");
+  }
   const std::vector<Vec3>& v = mesh_->vertices;
   std::vector<Bounds> boxes;
   boxes.reserve(mesh_->triangles.size());

@@ -286,9 +286,9 @@ void QuadBvh::build(const std::vector<Bounds>& bounds, BvhBuild how,
                     std::vector<uint32_t>* blocks) {
   if (blocks != nullptr) blocks->clear();
   if (bounds.empty()) return;
-  // Item and block indices take 29 bits of a reference, and the largest would make kEmpty.
+  // Item and block indices take 28 bits of a reference, and the largest would make kEmpty.
   static_assert(kLeafCountBits == kCountBits);
-  PRT_CHECK(bounds.size() < (1u << (31 - kCountBits)) - 1);
+  PRT_CHECK(bounds.size() <= kMaxItems);
   double maxCoordinate = 0;
   for (const Bounds& b : bounds) maxCoordinate = std::max(maxCoordinate, b.largestMagnitude());
   maxCoordinate_ = floatAbove(maxCoordinate);

@@ -13,6 +13,7 @@
 // Built once, then read-only: safe to query from many threads.
 
 #include <bit>
+#include <cstddef>
 #include <cstring>
 #include <cstdint>
 #include <vector>
@@ -32,6 +33,8 @@ class QuadBvh {
  public:
   // Leaves of blocks: up to this many items each.
   static constexpr uint32_t kBlockItems = 8;
+  // The most items a tree holds (their indices share a reference with a leaf's item count).
+  static constexpr size_t kMaxItems = (size_t{1} << 28) - 2;
 
   QuadBvh() = default;
   // `bounds[i]` is the box of item i; items are referred to by their index, one per leaf.
@@ -70,6 +73,7 @@ class QuadBvh {
   static constexpr uint32_t kItem = 1u << 31;
   static constexpr uint32_t kCountBits = 3, kCountMask = (1u << kCountBits) - 1;
   static_assert(kBlockItems <= kCountMask + 1);
+  static_assert(kMaxItems < (size_t{1} << (31 - kCountBits)) - 1);
   static constexpr uint32_t kEmpty = ~0u;
   static constexpr int kMaxDepth = 128;  // of the binary tree; the build guarantees it
 
