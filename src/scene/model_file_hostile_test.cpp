@@ -330,6 +330,70 @@ TEST_F(HostileGltf, AccessorsWithoutBufferViewDoNotExpandIntoGigabytes) {
   batch.run(30);
 }
 
+// Sparse accessors (glTF 2.0, 3.6.2.3) whose indices or values lie: each skips its primitive
+// with a warning saying what is wrong. The buffer: the triangle's 36 bytes of floats, then the
+// indices 0, 1, 2, 0 as 16-bit numbers; view 2 reads 1, 2, 0 (not rising).
+TEST_F(HostileGltf, SparseAccessorsThatLieSkipTheirPrimitive) {
+  const std::string base = R"("componentType":5126,"count":3,"type":"VEC3","sparse":)";
+  const std::vector<std::tuple<std::string, std::string, std::string>> cases = {
+      {"not-rising", R"("bufferView":0,)" + base +
+                         R"({"count":3,"indices":{"bufferView":2,"componentType":5123},"values":{"bufferView":0}})",
+       "indices do not rise"},
+      {"count-zero", R"("bufferView":0,)" + base +
+                         R"({"count":0,"indices":{"bufferView":1,"componentType":5123},"values":{"bufferView":0}})",
+       "count 0 is not between 1 and the accessor's count, 3"},
+      {"count-over", R"("bufferView":0,)" + base +
+                         R"({"count":4,"indices":{"bufferView":1,"componentType":5123},"values":{"bufferView":0}})",
+       "count 4 is not between 1 and the accessor's count, 3"},
+      {"index-type", R"("bufferView":0,)" + base +
+                         R"({"count":1,"indices":{"bufferView":1,"componentType":5126},"values":{"bufferView":0}})",
+       "indices are not unsigned integers"},
+      {"indices-past", R"("bufferView":0,)" + base +
+                           R"({"count":2,"indices":{"bufferView":1,"byteOffset":4,"componentType":5123},"values":{"bufferView":0}})",
+       "sparse indices reaches past its buffer view"},
+      {"values-past", R"("bufferView":0,)" + base +
+                          R"({"count":1,"indices":{"bufferView":1,"componentType":5123},"values":{"bufferView":1}})",
+       "sparse values reaches past its buffer view"},
+      {"negative", R"("bufferView":0,)" + base +
+                       R"({"count":1,"indices":{"bufferView":1,"byteOffset":-2,"componentType":5123},"values":{"bufferView":0}})",
+       "negative byte offset"},
+      {"no-view", R"("bufferView":0,)" + base +
+                      R"({"count":1,"indices":{"bufferView":9,"componentType":5123},"values":{"bufferView":0}})",
+       "names buffer view 9, which does not exist"},
+      {"zeros-huge", R"("componentType":5126,"count":2147483648,"type":"VEC3","sparse":)"
+                     R"({"count":1,"indices":{"bufferView":1,"componentType":5123},"values":{"bufferView":0}})",
+       "has no buffer view and 2147483648 elements"},
+  };
+  Batch batch;
+  for (const auto& [name, accessor, why] : cases) {
+    Gltf g;
+    g.accessors += ",{" + accessor + "}";
+    g.bufferViews += R"(,{"buffer":0,"byteOffset":38,"byteLength":6})";
+    g.withSecondMesh(R"({"attributes":{"POSITION":2},"indices":1})");
+    const std::string path = write("sparse-" + name + ".gltf", g.json());
+    batch.read(path, [path, why](const Outcome& o) {
+      EXPECT_READ_WITH_WARNING(o, path, why);
+      EXPECT_EQ(o.message, "objects 1, lights 0, cameras 0, textures 0");
+    });
+  }
+  // Zeros (no buffer view) with every vertex replaced: a triangle like the first; and as many
+  // zeros as PRT fills, one of them replaced, in bounded time and memory.
+  for (const std::string count : {"3", "1048576"}) {
+    Gltf g;
+    g.accessors += R"(,{"componentType":5126,"count":)" + count + R"(,"type":"VEC3","sparse":)"
+                   R"({"count":3,"indices":{"bufferView":1,"componentType":5123},"values":{"bufferView":0}}})";
+    g.withSecondMesh(R"({"attributes":{"POSITION":2},"indices":1})");
+    const std::string path = write("sparse-zeros-" + count + ".gltf", g.json());
+    batch.read(path, [](const Outcome& o) {
+      EXPECT_EQ(o.kind, Kind::returned) << o;
+      EXPECT_EQ(o.message, "objects 2, lights 0, cameras 0, textures 0");
+      EXPECT_LT(o.peakGrowthKb, 256 * 1024) << o;
+      EXPECT_LT(o.seconds, 5) << o;
+    });
+  }
+  batch.run(30);
+}
+
 // --- the node tree ---------------------------------------------------------------------------
 
 TEST_F(HostileGltf, NodeCyclesAreRefused) {
@@ -650,12 +714,13 @@ TEST_F(HostileGltf, AFileLeftWithNoTrianglesSaysWhatWasSkippedAndWhy) {
                            R"("buffers":[{"byteLength":44,"uri":")" + triangle + R"("}],)"
                            R"("bufferViews":[{"buffer":0,"byteLength":36}],)";
   const std::string past = head + R"("accessors":[{"bufferView":0,"componentType":5126,"count":1000,"type":"VEC3"}]})";
+  // A sparse index read from the bytes of 1.0f: 1065353216, far past the three vertices.
   const std::string sparse = head + R"("accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3",)"
-                                    R"("sparse":{"count":1,"indices":{"bufferView":0,"componentType":5125},)"
+                                    R"("sparse":{"count":1,"indices":{"bufferView":0,"byteOffset":12,"componentType":5125},)"
                                     R"("values":{"bufferView":0}}}]})";
   for (const auto& [name, json, why] :
        {std::tuple<std::string, std::string, std::string>{"past.gltf", past, "reaches past its buffer view"},
-        {"sparse.gltf", sparse, "sparse accessor, which PRT does not read"}}) {
+        {"sparse.gltf", sparse, "index 1065353216 is not below the count, 3"}}) {
     const std::string path = write(name, json);
     try {
       readModelFile(path);

@@ -11,6 +11,7 @@
 #include <fstream>
 #include <numbers>
 #include <set>
+#include <tuple>
 
 #include "scene/asset_pack.h"
 #include "scene/model_file.h"
@@ -178,6 +179,26 @@ TEST(ModelFile, DracoCompressedGltfIsRefusedByItsExtensionsName) {
               std::string::npos)
         << e.what();
   }
+}
+
+// The Khronos sample of a sparse accessor (tests/models/README.md): three of the strip's
+// vertices are replaced, lifting them from y = 1 to y = 2, 3 and 4.
+TEST(ModelFile, SparseAccessorsReplaceTheElementsTheyName) {
+  const ImportedModel strip =
+      readModelFile((kModels / "khronos-simple-sparse-accessor.gltf").string());
+  ASSERT_EQ(strip.objects.size(), 1u);
+  const auto& mesh = *std::get<InstanceShape>(strip.objects[0].shape).mesh;
+  EXPECT_EQ(mesh.triangles.size(), 12u);
+  std::set<std::tuple<double, double, double>> used;
+  for (const auto& t : mesh.triangles) {
+    for (const uint32_t v : t) used.insert({mesh.vertices[v].x, mesh.vertices[v].y, mesh.vertices[v].z});
+  }
+  for (const auto& lifted : {std::tuple{1.0, 2.0, 0.0}, {3.0, 3.0, 0.0}, {5.0, 4.0, 0.0}}) {
+    EXPECT_EQ(used.count(lifted), 1u) << std::get<0>(lifted) << ", " << std::get<1>(lifted);
+  }
+  for (const double x : {1.0, 3.0, 5.0}) EXPECT_EQ(used.count({x, 1.0, 0.0}), 0u) << x;
+  EXPECT_EQ(used.count({0.0, 1.0, 0.0}), 1u);  // the others stay
+  EXPECT_EQ(boundsOf(strip.objects[0].shape).hi.y, 4.0);
 }
 
 class ImportScene : public ::testing::Test {
