@@ -29,13 +29,14 @@ GltfAnimations::GltfAnimations(const tinygltf::Model& model, ModelNotes& notes)
   dropped_.resize(n);
   played_.assign(n, 0);
   noted_.assign(n, 0);
-  bool weights = false;
   for (size_t a = 0; a < n; ++a) {
     const tinygltf::Animation& animation = model.animations[a];
+    bool weights = false;
     for (size_t c = 0; c < animation.channels.size(); ++c) {
       const tinygltf::AnimationChannel& channel = animation.channels[c];
       const std::string what = "channel " + std::to_string(c);
       if (channel.target_path == "weights") {
+        if (!weights) ++notes_.morphAnimations;
         weights = true;
         noted_[a] = 1;
         continue;
@@ -68,7 +69,6 @@ GltfAnimations::GltfAnimations(const tinygltf::Model& model, ModelNotes& notes)
       }
     }
   }
-  if (weights) ++notes_.morphed;
 }
 
 void GltfAnimations::drop(size_t animation, const std::string& why) {

@@ -155,14 +155,14 @@ TEST_F(HostileAnimation, ChannelsBeyondWhatPrtPlaysWarnOnceEach) {
     EXPECT_READ_WITH_WARNING(o, twicePath, "2 channels are ignored");
     expectRead(o, 1);
   }, {}, rigFacts);
-  // Morph weights: the one line about morph targets, nothing played.
+  // Morph weights: one line about their animation, nothing played.
   AnimatedGltf weights;
   weights.path = "weights";
   weights.valuesType = "SCALAR";
   weights.values = {0, 1};
   const std::string weightsPath = write("weights.gltf", weights.json());
   batch.read(weightsPath, [weightsPath](const Outcome& o) {
-    EXPECT_READ_WITH_WARNING(o, weightsPath, "morph targets are not applied");
+    EXPECT_READ_WITH_WARNING(o, weightsPath, "animations of morph weights are not played (1 animation)");
     EXPECT_EQ(o.warnings.size(), 1u) << o;
     expectRead(o, 0);
   }, {}, rigFacts);

@@ -566,10 +566,12 @@ class GltfReader {
                            " does not exist");
     }
     const tinygltf::Mesh& mesh = model_.meshes[static_cast<size_t>(node.mesh)];
+    // Morph target weights: the node's, else the mesh's (glTF 2.0, 3.7.2.2), else none.
+    const std::vector<double>& weights = !node.weights.empty() ? node.weights : mesh.weights;
     for (size_t p = 0; p < mesh.primitives.size(); ++p) {
       const tinygltf::Primitive& primitive = mesh.primitives[p];
-      if (!primitive.targets.empty()) ++notes_.morphed;
-      std::shared_ptr<const TriangleMesh> triangles = primitiveMesh(node.mesh, p, primitive);
+      std::shared_ptr<const TriangleMesh> triangles =
+          primitiveMesh(node.mesh, p, primitive, usedWeights(primitive, weights));
       if (triangles == nullptr) continue;
       if (out_.objects.size() >= kMaxModelObjects) {
         throw ModelFileError("model file \"" + path_ + "\" places meshes more than " +
@@ -579,24 +581,97 @@ class GltfReader {
     }
   }
 
-  // The mesh of one primitive, read once however many nodes use it; null if it has nothing to
-  // trace (points, lines, only degenerate triangles, an accessor PRT cannot read).
+  // The weights of a primitive's morph targets that change its shape: one per target (those
+  // not given are 0), or none at all when every one is 0 (the shape as stored).
+  std::vector<double> usedWeights(const tinygltf::Primitive& primitive,
+                                  const std::vector<double>& weights) {
+    std::vector<double> used(primitive.targets.size(), 0.0);
+    bool any = false;
+    for (size_t k = 0; k < used.size() && k < weights.size(); ++k) {
+      used[k] = weights[k];
+      any = any || weights[k] != 0;
+    }
+    if (!any) return {};
+    return used;
+  }
+  size_t vertexCount(const tinygltf::Primitive& primitive) const {
+    const auto position = primitive.attributes.find("POSITION");
+    if (position == primitive.attributes.end() || position->second < 0 ||
+        static_cast<size_t>(position->second) >= model_.accessors.size()) {
+      return 0;
+    }
+    return model_.accessors[static_cast<size_t>(position->second)].count;
+  }
+
+  // The mesh of one primitive with one set of morph weights, read once however many nodes
+  // use it; null if it has nothing to trace (points, lines, only degenerate triangles, an
+  // accessor PRT cannot read).
   std::shared_ptr<const TriangleMesh> primitiveMesh(int mesh, size_t p,
-                                                    const tinygltf::Primitive& primitive) {
-    const auto key = std::make_pair(mesh, p);
+                                                    const tinygltf::Primitive& primitive,
+                                                    std::vector<double> weights) {
+    auto key = std::make_tuple(mesh, p, std::move(weights));
     if (const auto found = meshes_.find(key); found != meshes_.end()) return found->second;
+    if (!std::get<2>(key).empty()) {
+      // Each distinct set of weights is a mesh of its own: past a budget of vertices, the
+      // rest are rendered in their stored shape (a warning), so a file of many nodes cannot
+      // make PRT copy a large mesh for each.
+      const size_t vertices = vertexCount(primitive);
+      if (vertices > kMorphedVertexBudget - morphedVertices_) {
+        ++notes_.morphsOverBudget;
+        return primitiveMesh(mesh, p, primitive, {});
+      }
+      morphedVertices_ += vertices;
+    }
+    const std::vector<double>& w = std::get<2>(key);
     std::shared_ptr<const TriangleMesh> result;
     try {
-      result = readPrimitive(primitive, "mesh " + std::to_string(mesh) + " primitive " +
-                                            std::to_string(p));
+      result = readPrimitive(primitive, w,
+                             "mesh " + std::to_string(mesh) + " primitive " + std::to_string(p));
     } catch (const ModelFileError& e) {
       out_.warnings.push_back("model file \"" + path_ + "\": " + e.what() + "; skipped");
     }
-    meshes_[key] = result;
+    meshes_[std::move(key)] = result;
     return result;
   }
 
+  // Adds each morph target's POSITION and NORMAL displacements, times its weight (glTF 2.0,
+  // 3.7.2.2), to the mesh's; morphed normals are made unit again.
+  void applyMorphTargets(const tinygltf::Primitive& primitive, const std::vector<double>& weights,
+                         RawMesh& raw, const std::string& what) {
+    const size_t n = raw.positions.size();
+    for (size_t k = 0; k < weights.size(); ++k) {
+      const double w = weights[k];
+      if (w == 0) continue;
+      const std::map<std::string, int>& target = primitive.targets[k];
+      auto displacements = [&](const std::string& name) -> std::optional<GltfAccessor> {
+        const auto found = target.find(name);
+        if (found == target.end()) return std::nullopt;
+        const std::string which = what + " morph target " + std::to_string(k) + " " + name;
+        GltfAccessor a(model_, found->second, which);
+        if (a.count() != n) throw ModelFileError(which + " has a count unlike POSITION's");
+        if (a.components() != 3) throw ModelFileError(which + " is not 3-vectors");
+        if (!a.hasData()) return std::nullopt;  // all zeros: moves nothing
+        return a;
+      };
+      if (const auto d = displacements("POSITION")) {
+        for (size_t i = 0; i < n; ++i) {
+          raw.positions[i] += w * Vec3(d->get(i, 0), d->get(i, 1), d->get(i, 2));
+        }
+      }
+      if (const auto d = displacements("NORMAL"); d && !raw.normals.empty()) {
+        for (size_t i = 0; i < n; ++i) {
+          raw.normals[i] += w * Vec3(d->get(i, 0), d->get(i, 1), d->get(i, 2));
+        }
+      }
+    }
+    for (Vec3& normal : raw.normals) {
+      const double size = length(normal);
+      if (size > 0) normal /= size;
+    }
+  }
+
   std::shared_ptr<const TriangleMesh> readPrimitive(const tinygltf::Primitive& primitive,
+                                                    const std::vector<double>& weights,
                                                     const std::string& what) {
     const int mode = primitive.mode < 0 ? TINYGLTF_MODE_TRIANGLES : primitive.mode;
     if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP &&
@@ -646,6 +721,7 @@ class GltfReader {
                          static_cast<float>(colors->get(i, 2))};
       }
     }
+    applyMorphTargets(primitive, weights, raw, what);
     std::vector<uint64_t> order;
     if (primitive.indices >= 0) {
       const GltfAccessor indices(model_, primitive.indices, what + " indices");
@@ -988,7 +1064,10 @@ class GltfReader {
   bool rigging_ = false;           // whether the file has channels that may move its nodes
   std::vector<int> rigGltfNodes_;  // per node of out_.rig while walking the tree: its glTF node
   uintmax_t bytesLeft_ = kMaxBytesRead;
-  std::map<std::pair<int, size_t>, std::shared_ptr<const TriangleMesh>> meshes_;
+  // Meshes by (mesh, primitive, morph weights: none for the shape as stored).
+  std::map<std::tuple<int, size_t, std::vector<double>>, std::shared_ptr<const TriangleMesh>> meshes_;
+  size_t morphedVertices_ = 0;  // of the morphed copies made so far
+  static constexpr size_t kMorphedVertexBudget = size_t{1} << 22;
   std::map<int, Material> materials_;
   std::map<int, int> textures_;
   std::map<int, std::shared_ptr<const TextureImage>> images_;

@@ -12,7 +12,10 @@
 // its test instead of taking the whole test binary down. Files are tiny and written to a
 // scratch folder per test. The prt command is run from $PRT_BINARY, which CTest sets.
 
+#include <set>
+
 #include "scene/hostile_model_files.h"
+#include "trace/shapes.h"
 
 namespace prt {
 namespace {
@@ -392,6 +395,100 @@ TEST_F(HostileGltf, SparseAccessorsThatLieSkipTheirPrimitive) {
     });
   }
   batch.run(30);
+}
+
+// Morph targets (glTF 2.0, 3.7.2.2). The target moves vertex 0 by (1, 0, 0): sparse over zeros,
+// its one value the triangle's second vertex. Node weights override the mesh's; each distinct
+// set of weights is a mesh of its own, and equal ones share one.
+namespace morph {
+const std::string kTarget = R"({"componentType":5126,"count":3,"type":"VEC3","sparse":{"count":1,)"
+                            R"("indices":{"bufferView":1,"componentType":5123},"values":{"bufferView":0,"byteOffset":12}}})";
+std::string facts(const ImportedModel& m) {
+  std::string out;
+  std::set<const TriangleMesh*> meshes;
+  for (const Object& o : m.objects) {
+    const Bounds box = boundsOf(o.shape);
+    char range[64];
+    std::snprintf(range, sizeof range, "[%f %f]", box.lo.x, box.hi.x);
+    out += range;
+    meshes.insert(std::get<InstanceShape>(o.shape).mesh.get());
+  }
+  return out + " meshes " + std::to_string(meshes.size());
+}
+}  // namespace morph
+
+TEST_F(HostileGltf, MorphTargetsMoveTheVerticesByTheirWeights) {
+  Gltf g;
+  g.accessors += "," + morph::kTarget;
+  g.meshes = R"({"primitives":[{"attributes":{"POSITION":0},"indices":1,"targets":[{"POSITION":2}]}],"weights":[-1]})";
+  g.scenes = R"("scene":0,"scenes":[{"nodes":[0,1,2,3,4]}])";
+  // The mesh's weight; 2; 2 again; 0 (the stored shape); more weights than targets.
+  g.nodes = R"({"mesh":0},{"mesh":0,"weights":[2]},{"mesh":0,"weights":[2]},{"mesh":0,"weights":[0]},)"
+            R"({"mesh":0,"weights":[-1,5]})";
+  const std::string path = write("morph.gltf", g.json());
+  const Outcome o = readIsolated(path, {}, morph::facts);
+  EXPECT_EQ(o.kind, Kind::returned) << o;
+  EXPECT_TRUE(o.warnings.empty()) << o;
+  EXPECT_EQ(o.message,
+            "[-1.000000 1.000000][0.000000 2.000000][0.000000 2.000000][0.000000 1.000000]"
+            "[-1.000000 1.000000] meshes 3");
+}
+
+TEST_F(HostileGltf, MorphTargetsThatCannotBeReadSkipTheirPrimitive) {
+  Batch batch;
+  const std::vector<std::pair<std::string, std::string>> targets = {
+      {R"({"componentType":5126,"count":4,"type":"VEC3"})", "has a count unlike POSITION's"},
+      {R"({"bufferView":0,"componentType":5126,"count":3,"type":"VEC2"})", "is not 3-vectors"},
+      {R"({"bufferView":0,"byteOffset":24,"componentType":5126,"count":3,"type":"VEC3"})",
+       "reaches past its buffer view"},
+  };
+  int k = 0;
+  for (const auto& [target, why] : targets) {
+    Gltf g;
+    g.accessors += "," + target;
+    g.withSecondMesh(R"({"attributes":{"POSITION":0},"indices":1,"targets":[{"POSITION":2}]})");
+    g.meshes = R"({"primitives":[{"attributes":{"POSITION":0},"indices":1}]},)"
+               R"({"primitives":[{"attributes":{"POSITION":0},"indices":1,"targets":[{"POSITION":2}]}],"weights":[1]})";
+    const std::string path = write("morph-bad" + std::to_string(k++) + ".gltf", g.json());
+    batch.read(path, [path, why](const Outcome& o) {
+      EXPECT_READ_WITH_WARNING(o, path, "morph target 0 POSITION");
+      EXPECT_READ_WITH_WARNING(o, path, why);
+      EXPECT_EQ(o.message, "objects 1, lights 0, cameras 0, textures 0");
+    });
+  }
+  // A target of zeros moves nothing, whatever its weight.
+  Gltf zeros;
+  zeros.accessors += R"(,{"componentType":5126,"count":3,"type":"VEC3"})";
+  zeros.meshes = R"({"primitives":[{"attributes":{"POSITION":0},"indices":1,"targets":[{"POSITION":2}]}],"weights":[7]})";
+  const std::string zerosPath = write("morph-zeros.gltf", zeros.json());
+  batch.read(zerosPath, [](const Outcome& o) {
+    EXPECT_EQ(o.kind, Kind::returned) << o;
+    EXPECT_EQ(o.message, "[0.000000 1.000000] meshes 1");
+  }, {}, morph::facts);
+  batch.run();
+}
+
+// Each distinct set of weights copies the mesh: 2^20 vertices (zeros, three of them replaced)
+// placed with five different weights pass the budget of 2^22 vertices four times; the fifth
+// is the stored shape, with a warning.
+TEST_F(HostileGltf, MorphedCopiesStopAtABudgetOfVertices) {
+  Gltf g;
+  g.accessors = R"({"componentType":5126,"count":1048576,"type":"VEC3","sparse":{"count":3,)"
+                R"("indices":{"bufferView":1,"componentType":5123},"values":{"bufferView":0}}},)"
+                R"({"bufferView":1,"componentType":5123,"count":3,"type":"SCALAR"},)"
+                R"({"componentType":5126,"count":1048576,"type":"VEC3","sparse":{"count":1,)"
+                R"("indices":{"bufferView":1,"componentType":5123},"values":{"bufferView":0,"byteOffset":12}}})";
+  g.meshes = R"({"primitives":[{"attributes":{"POSITION":0},"indices":1,"targets":[{"POSITION":2}]}]})";
+  g.scenes = R"("scene":0,"scenes":[{"nodes":[0,1,2,3,4]}])";
+  g.nodes = R"({"mesh":0,"weights":[2]},{"mesh":0,"weights":[3]},{"mesh":0,"weights":[4]},)"
+            R"({"mesh":0,"weights":[5]},{"mesh":0,"weights":[6]})";
+  const std::string path = write("morph-budget.gltf", g.json());
+  const Outcome o = readIsolated(path, {}, morph::facts);
+  EXPECT_READ_WITH_WARNING(o, path, "1 placement of a mesh with morph weights of its own");
+  EXPECT_EQ(o.message,
+            "[0.000000 2.000000][0.000000 3.000000][0.000000 4.000000][0.000000 5.000000]"
+            "[0.000000 1.000000] meshes 5");
+  EXPECT_LT(o.seconds, 10) << o;
 }
 
 // --- the node tree ---------------------------------------------------------------------------

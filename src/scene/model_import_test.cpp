@@ -114,12 +114,23 @@ TEST(ModelFile, EmbeddedAndSeparateGltfGiveTheSameScene) {
   EXPECT_FALSE(std::get<InstanceShape>(glb.objects[0].shape).mesh->uvs.empty());
 }
 
-TEST(ModelFile, SkinningAndMorphTargetsWarnAndGiveTheRestPose) {
+// Blender's shape key "Bulge" at 0.5 (the mesh's weights): the column's middle ring, of radius
+// 0.2, moved out by half of the key's 0.16; skinning is not applied (the rest pose).
+TEST(ModelFile, MorphTargetsAreAppliedAndSkinningWarnsAndGivesTheRestPose) {
   const ImportedModel model = readModelFile((kModels / "blender-skinned.glb").string());
-  EXPECT_FALSE(model.objects.empty());
+  ASSERT_EQ(model.objects.size(), 1u);
   EXPECT_TRUE(anyWarning(model.warnings, "skinning is not applied"));
-  EXPECT_TRUE(anyWarning(model.warnings, "morph targets are not applied"));
+  EXPECT_FALSE(anyWarning(model.warnings, "morph"));
   EXPECT_TRUE(anyWarning(model.warnings, "animations are not played"));
+  const Bounds box = boundsOf(model.objects[0].shape);
+  const double radius = static_cast<double>(0.2f) + 0.5 * static_cast<double>(0.16f);
+  EXPECT_NEAR(box.hi.x, radius, 1e-6);
+  EXPECT_NEAR(box.lo.z, -radius, 1e-6);
+  EXPECT_NEAR(box.hi.y, 2.0, 1e-6);  // the ends stay
+  // Smooth normals stay unit after their displacements are added.
+  const TriangleMesh& mesh = *std::get<InstanceShape>(model.objects[0].shape).mesh;
+  ASSERT_EQ(mesh.normals.size(), mesh.vertices.size());
+  for (const Vec3& n : mesh.normals) EXPECT_NEAR(length(n), 1.0, 1e-12);
 }
 
 TEST(ModelFile, ObjTexturesAreFoundAsWindowsToolsWriteTheirPaths) {

@@ -25,6 +25,17 @@ void ModelNotes::warn(std::vector<std::string>& warnings) const {
                        "): the rest pose is rendered");
   }
   if (morphed > 0) warnings.push_back(head + "morph targets are not applied: the base shape is rendered");
+  if (morphAnimations > 0) {
+    warnings.push_back(head + "animations of morph weights are not played (" +
+                       plural(morphAnimations, "animation", "animations") +
+                       "): the weights the file sets are rendered in every frame");
+  }
+  if (morphsOverBudget > 0) {
+    warnings.push_back(head + plural(morphsOverBudget, "placement", "placements") +
+                       " of a mesh with morph weights of its own are rendered in the mesh's stored "
+                       "shape: the morphed copies already made hold all the vertices PRT copies for "
+                       "morphs of one file");
+  }
   if (animations > 0) {
     warnings.push_back(head + "animations are not played (" + plural(animations, "animation", "animations") +
                        "): nodes are rendered as the file places them");

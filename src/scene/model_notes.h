@@ -19,7 +19,9 @@ struct ModelNotes {
 
   MeshSkips skips;              // triangles and faces left out
   size_t skinned = 0;           // meshes or nodes with skins
-  size_t morphed = 0;           // meshes with morph targets
+  size_t morphed = 0;           // meshes with morph targets not applied (assimp's)
+  size_t morphAnimations = 0;   // animations of morph weights (glTF), not played
+  size_t morphsOverBudget = 0;  // morphed copies not made: over the budget of vertices
   size_t animations = 0;        // animations in the file
   size_t hiddenNodes = 0;       // nodes scaled to nothing
   size_t unusedLights = 0;      // lights of a kind PRT does not have
