@@ -642,6 +642,13 @@ class GltfReader {
     for (size_t k = 0; k < weights.size(); ++k) {
       const double w = weights[k];
       if (w == 0) continue;
+      // A few bytes of JSON can name one target thousands of times: the vertices moved in all
+      // are bounded, as the copies are.
+      if (n > kMorphMoves - morphMoves_) {
+        throw ModelFileError(what + ": its morph targets would move more than the " +
+                             std::to_string(kMorphMoves) + " vertices PRT moves for one file");
+      }
+      morphMoves_ += n;
       const std::map<std::string, int>& target = primitive.targets[k];
       auto displacements = [&](const std::string& name) -> std::optional<GltfAccessor> {
         const auto found = target.find(name);
@@ -1068,6 +1075,8 @@ class GltfReader {
   std::map<std::tuple<int, size_t, std::vector<double>>, std::shared_ptr<const TriangleMesh>> meshes_;
   size_t morphedVertices_ = 0;  // of the morphed copies made so far
   static constexpr size_t kMorphedVertexBudget = size_t{1} << 22;
+  size_t morphMoves_ = 0;  // vertices moved by a target, each time one is
+  static constexpr size_t kMorphMoves = size_t{1} << 26;
   std::map<int, Material> materials_;
   std::map<int, int> textures_;
   std::map<int, std::shared_ptr<const TextureImage>> images_;

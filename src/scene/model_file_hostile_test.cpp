@@ -468,6 +468,31 @@ TEST_F(HostileGltf, MorphTargetsThatCannotBeReadSkipTheirPrimitive) {
   batch.run();
 }
 
+// One target named 200 times, each of 2^20 vertices (zeros, sparse): moving them all would be
+// 200 million moves from a file of a few kilobytes; PRT stops at 2^26 and skips the primitive.
+TEST_F(HostileGltf, MorphTargetsMovingTooManyVerticesSkipTheirPrimitive) {
+  Gltf g;
+  g.accessors = R"({"componentType":5126,"count":1048576,"type":"VEC3","sparse":{"count":3,)"
+                R"("indices":{"bufferView":1,"componentType":5123},"values":{"bufferView":0}}},)"
+                R"({"bufferView":1,"componentType":5123,"count":3,"type":"SCALAR"},)"
+                R"({"componentType":5126,"count":1048576,"type":"VEC3","sparse":{"count":1,)"
+                R"("indices":{"bufferView":1,"componentType":5123},"values":{"bufferView":0,"byteOffset":12}}})";
+  std::string targets, weights;
+  for (int k = 0; k < 200; ++k) {
+    targets += std::string(k ? "," : "") + R"({"POSITION":2})";
+    weights += std::string(k ? "," : "") + "0.01";
+  }
+  g.withSecondMesh(R"({"attributes":{"POSITION":0},"indices":1,"targets":[)" + targets + "]}");
+  g.meshes = R"({"primitives":[{"attributes":{"POSITION":0},"indices":1}]},{"primitives":[)"
+             R"({"attributes":{"POSITION":0},"indices":1,"targets":[)" + targets +
+             R"(]}],"weights":[)" + weights + "]}";
+  const std::string path = write("morph-moves.gltf", g.json());
+  const Outcome o = readIsolated(path);
+  EXPECT_READ_WITH_WARNING(o, path, "its morph targets would move more than the 67108864 vertices");
+  EXPECT_EQ(o.message, "objects 1, lights 0, cameras 0, textures 0");
+  EXPECT_LT(o.seconds, 10) << o;
+}
+
 // Each distinct set of weights copies the mesh: 2^20 vertices (zeros, three of them replaced)
 // placed with five different weights pass the budget of 2^22 vertices four times; the fifth
 // is the stored shape, with a warning.
