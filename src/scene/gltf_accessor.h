@@ -1,8 +1,9 @@
 #pragma once
 // GltfAccessor: one accessor of a glTF file read by tinygltf, every byte of its elements
 // checked to lie inside its buffer view and buffer before any is read (tinygltf leaves those
-// ranges unchecked), sparse ones included (elements replaced by index). Shared by the glTF reader's meshes (gltf_reader.cpp) and animations
-// (gltf_animation.cpp). Throws ModelFileError, saying `what`, for an accessor it cannot read.
+// ranges unchecked), sparse ones included (elements replaced by index). Shared by the glTF
+// reader's meshes (gltf_reader.cpp) and animations (gltf_animation.cpp). Throws
+// ModelFileError, saying `what`, for an accessor it cannot read.
 
 #include <tiny_gltf.h>
 
@@ -20,10 +21,12 @@ class GltfAccessor {
  public:
   static constexpr size_t kMaxElements = size_t{1} << 31;  // vertices or indices of one accessor
   // Of an accessor without a buffer view (zeros, some replaced by sparse values): no buffer
-  // bounds its count, so a few bytes of JSON could ask for any amount of memory.
+  // bounds its count, so a few bytes of JSON could ask for any amount of memory. A reader
+  // whose count is bounded otherwise (an attribute must have POSITION's) may allow more.
   static constexpr size_t kMaxZeroFilled = size_t{1} << 20;
 
-  GltfAccessor(const tinygltf::Model& model, int index, const std::string& what) {
+  GltfAccessor(const tinygltf::Model& model, int index, const std::string& what,
+               size_t maxZeroFilled = kMaxZeroFilled) {
     if (index < 0 || static_cast<size_t>(index) >= model.accessors.size()) {
       fail(what + " names accessor " + std::to_string(index) + ", which does not exist");
     }
@@ -41,10 +44,11 @@ class GltfAccessor {
     const size_t element = static_cast<size_t>(components_) * static_cast<size_t>(componentBytes_);
     // Without a buffer view: all zeros (glTF 2.0, 3.6.2.3), unless sparse values replace some.
     if (a.bufferView >= 0) {
-      data_ = elements(model, a.bufferView, a.byteOffset, count_, element, stride_, what, name);
-    } else if (a.sparse.isSparse && count_ > kMaxZeroFilled) {
+      data_ = elements(model, a.bufferView, a.byteOffset, count_, element, false, stride_, what,
+                       name);
+    } else if (a.sparse.isSparse && count_ > maxZeroFilled) {
       fail(what + ": " + name + " has no buffer view and " + std::to_string(count_) +
-           " elements, more than the " + std::to_string(kMaxZeroFilled) + " PRT fills with zeros");
+           " elements, more than the " + std::to_string(maxZeroFilled) + " PRT fills with zeros");
     }
     if (a.sparse.isSparse) readSparse(model, a, element, what, name + "'s sparse");
   }
@@ -53,6 +57,9 @@ class GltfAccessor {
   int components() const { return components_; }
   // False for an accessor of zeros only (no buffer view, no sparse values).
   bool hasData() const { return data_ != nullptr || !sparseAt_.empty(); }
+  // Zeros but for the sparse values: only the elements sparseIndices() names are not zero.
+  bool onlySparse() const { return data_ == nullptr && !sparseAt_.empty(); }
+  const std::vector<uint32_t>& sparseIndices() const { return sparseAt_; }
   bool isFloat() const { return type_ == TINYGLTF_COMPONENT_TYPE_FLOAT; }
 
   // Component c of element i, as a number (normalised integers in [0, 1] or [-1, 1]).
@@ -103,9 +110,11 @@ class GltfAccessor {
   }
 
   // The bytes of `count` elements of `element` bytes at `offset` in buffer view `viewIndex`,
-  // each one checked to lie inside the view and its buffer; `stride` set to the view's.
+  // each one checked to lie inside the view and its buffer; `stride` set to the view's, or to
+  // the element's when `tight` (sparse indices and values are tightly packed whatever the view
+  // says, glTF 2.0, 3.6.2.3).
   static const unsigned char* elements(const tinygltf::Model& model, int viewIndex, size_t offset,
-                                       size_t count, size_t element, size_t& stride,
+                                       size_t count, size_t element, bool tight, size_t& stride,
                                        const std::string& what, const std::string& name) {
     if (viewIndex < 0 || static_cast<size_t>(viewIndex) >= model.bufferViews.size()) {
       fail(what + ": " + name + " names buffer view " + std::to_string(viewIndex) +
@@ -116,7 +125,7 @@ class GltfAccessor {
       fail(what + ": buffer " + std::to_string(view.buffer) + " does not exist");
     }
     const std::vector<unsigned char>& buffer = model.buffers[static_cast<size_t>(view.buffer)].data;
-    stride = view.byteStride != 0 ? view.byteStride : element;
+    stride = view.byteStride != 0 && !tight ? view.byteStride : element;
     if (stride < element && count > 1) fail(what + ": a stride shorter than an element");
     if (view.byteOffset > buffer.size() || view.byteLength > buffer.size() - view.byteOffset) {
       fail(what + ": buffer view " + std::to_string(viewIndex) + " reaches past its buffer");
@@ -156,10 +165,10 @@ class GltfAccessor {
     size_t indexStride = 0;
     const unsigned char* indices =
         elements(model, sparse.indices.bufferView, static_cast<size_t>(sparse.indices.byteOffset),
-                 n, indexBytes, indexStride, what, name + " indices");
+                 n, indexBytes, true, indexStride, what, name + " indices");
     sparseValues_ =
         elements(model, sparse.values.bufferView, static_cast<size_t>(sparse.values.byteOffset), n,
-                 element, sparseStride_, what, name + " values");
+                 element, true, sparseStride_, what, name + " values");
     sparseAt_.resize(n);
     for (size_t k = 0; k < n; ++k) {
       const unsigned char* p = indices + k * indexStride;

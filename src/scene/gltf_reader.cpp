@@ -25,6 +25,7 @@
 #include <optional>
 #include <set>
 #include <string_view>
+#include <tuple>
 
 #include "scene/gltf_accessor.h"
 #include "scene/gltf_animation.h"
@@ -581,26 +582,24 @@ class GltfReader {
     }
   }
 
-  // The weights of a primitive's morph targets that change its shape: one per target (those
-  // not given are 0), or none at all when every one is 0 (the shape as stored).
-  std::vector<double> usedWeights(const tinygltf::Primitive& primitive,
-                                  const std::vector<double>& weights) {
-    std::vector<double> used(primitive.targets.size(), 0.0);
-    bool any = false;
-    for (size_t k = 0; k < used.size() && k < weights.size(); ++k) {
-      used[k] = weights[k];
-      any = any || weights[k] != 0;
-    }
-    if (!any) return {};
-    return used;
+  // The weights of a primitive's morph targets that change its shape: those the file gives,
+  // as many as there are targets, trailing zeros left out (so none at all for the shape as
+  // stored, and never longer than the weights the JSON spells out).
+  static std::vector<double> usedWeights(const tinygltf::Primitive& primitive,
+                                         const std::vector<double>& weights) {
+    size_t used = std::min(weights.size(), primitive.targets.size());
+    while (used > 0 && weights[used - 1] == 0) --used;
+    return {weights.begin(), weights.begin() + static_cast<std::ptrdiff_t>(used)};
   }
-  size_t vertexCount(const tinygltf::Primitive& primitive) const {
+  // What a copy of the primitive holds, as its accessors declare: vertices and indices.
+  size_t copiedElements(const tinygltf::Primitive& primitive) const {
+    auto countOf = [&](int accessor) -> size_t {
+      if (accessor < 0 || static_cast<size_t>(accessor) >= model_.accessors.size()) return 0;
+      return model_.accessors[static_cast<size_t>(accessor)].count;
+    };
     const auto position = primitive.attributes.find("POSITION");
-    if (position == primitive.attributes.end() || position->second < 0 ||
-        static_cast<size_t>(position->second) >= model_.accessors.size()) {
-      return 0;
-    }
-    return model_.accessors[static_cast<size_t>(position->second)].count;
+    const size_t vertices = position == primitive.attributes.end() ? 0 : countOf(position->second);
+    return vertices + countOf(primitive.indices);
   }
 
   // The mesh of one primitive with one set of morph weights, read once however many nodes
@@ -612,15 +611,15 @@ class GltfReader {
     auto key = std::make_tuple(mesh, p, std::move(weights));
     if (const auto found = meshes_.find(key); found != meshes_.end()) return found->second;
     if (!std::get<2>(key).empty()) {
-      // Each distinct set of weights is a mesh of its own: past a budget of vertices, the
-      // rest are rendered in their stored shape (a warning), so a file of many nodes cannot
-      // make PRT copy a large mesh for each.
-      const size_t vertices = vertexCount(primitive);
-      if (vertices > kMorphedVertexBudget - morphedVertices_) {
+      // Each distinct set of weights is a mesh of its own: past a budget of vertices and
+      // indices (and weights, which the key holds), the rest are rendered in their stored
+      // shape (a warning), so a file of many nodes cannot make PRT copy a large mesh for each.
+      const size_t cost = copiedElements(primitive) + std::get<2>(key).size();
+      if (cost > kMorphedCopyBudget - morphedCopies_) {
         ++notes_.morphsOverBudget;
         return primitiveMesh(mesh, p, primitive, {});
       }
-      morphedVertices_ += vertices;
+      morphedCopies_ += cost;
     }
     const std::vector<double>& w = std::get<2>(key);
     std::shared_ptr<const TriangleMesh> result;
@@ -635,46 +634,52 @@ class GltfReader {
   }
 
   // Adds each morph target's POSITION and NORMAL displacements, times its weight (glTF 2.0,
-  // 3.7.2.2), to the mesh's; morphed normals are made unit again.
+  // 3.7.2.2), to the mesh's (cleanMesh makes the normals unit again). A target that cannot be
+  // read leaves the mesh in its stored shape, with a warning.
   void applyMorphTargets(const tinygltf::Primitive& primitive, const std::vector<double>& weights,
                          RawMesh& raw, const std::string& what) {
+    if (weights.empty()) return;
+    RawMesh morphed = raw;
+    try {
+      for (size_t k = 0; k < weights.size(); ++k) {
+        if (weights[k] != 0) addMorphTarget(primitive.targets[k], k, weights[k], morphed, what);
+      }
+    } catch (const ModelFileError& e) {
+      out_.warnings.push_back("model file \"" + path_ + "\": " + e.what() +
+                              "; rendered in its stored shape");
+      return;
+    }
+    raw = std::move(morphed);
+  }
+  void addMorphTarget(const std::map<std::string, int>& target, size_t k, double w, RawMesh& raw,
+                      const std::string& what) {
     const size_t n = raw.positions.size();
-    for (size_t k = 0; k < weights.size(); ++k) {
-      const double w = weights[k];
-      if (w == 0) continue;
-      // A few bytes of JSON can name one target thousands of times: the vertices moved in all
-      // are bounded, as the copies are.
-      if (n > kMorphMoves - morphMoves_) {
-        throw ModelFileError(what + ": its morph targets would move more than the " +
-                             std::to_string(kMorphMoves) + " vertices PRT moves for one file");
+    auto add = [&](const std::string& name, std::vector<Vec3>& to) {
+      const auto found = target.find(name);
+      if (found == target.end()) return;
+      const std::string which = what + " morph target " + std::to_string(k) + " " + name;
+      // Its count must be the mesh's, which bounds what it costs: no cap on zeros.
+      const GltfAccessor d(model_, found->second, which, GltfAccessor::kMaxElements);
+      if (d.count() != n) throw ModelFileError(which + " has a count unlike POSITION's");
+      if (d.components() != 3) throw ModelFileError(which + " is not 3-vectors");
+      // A few bytes of JSON can name one target thousands of times: the vertices moved in
+      // all are bounded, as the copies are. Sparse values over zeros move only those named.
+      const std::vector<uint32_t>* only = d.onlySparse() ? &d.sparseIndices() : nullptr;
+      const size_t moves = only != nullptr ? only->size() : d.hasData() ? n : 0;
+      if (moves > kMorphMoves - morphMoves_) {
+        throw ModelFileError(which + " would take the vertices morph targets move past the " +
+                             std::to_string(kMorphMoves) + " PRT moves for one file");
       }
-      morphMoves_ += n;
-      const std::map<std::string, int>& target = primitive.targets[k];
-      auto displacements = [&](const std::string& name) -> std::optional<GltfAccessor> {
-        const auto found = target.find(name);
-        if (found == target.end()) return std::nullopt;
-        const std::string which = what + " morph target " + std::to_string(k) + " " + name;
-        GltfAccessor a(model_, found->second, which);
-        if (a.count() != n) throw ModelFileError(which + " has a count unlike POSITION's");
-        if (a.components() != 3) throw ModelFileError(which + " is not 3-vectors");
-        if (!a.hasData()) return std::nullopt;  // all zeros: moves nothing
-        return a;
-      };
-      if (const auto d = displacements("POSITION")) {
-        for (size_t i = 0; i < n; ++i) {
-          raw.positions[i] += w * Vec3(d->get(i, 0), d->get(i, 1), d->get(i, 2));
-        }
+      morphMoves_ += moves;
+      auto move = [&](size_t i) { to[i] += w * Vec3(d.get(i, 0), d.get(i, 1), d.get(i, 2)); };
+      if (only != nullptr) {
+        for (const uint32_t i : *only) move(i);
+      } else if (d.hasData()) {
+        for (size_t i = 0; i < n; ++i) move(i);
       }
-      if (const auto d = displacements("NORMAL"); d && !raw.normals.empty()) {
-        for (size_t i = 0; i < n; ++i) {
-          raw.normals[i] += w * Vec3(d->get(i, 0), d->get(i, 1), d->get(i, 2));
-        }
-      }
-    }
-    for (Vec3& normal : raw.normals) {
-      const double size = length(normal);
-      if (size > 0) normal /= size;
-    }
+    };
+    add("POSITION", raw.positions);
+    if (!raw.normals.empty()) add("NORMAL", raw.normals);
   }
 
   std::shared_ptr<const TriangleMesh> readPrimitive(const tinygltf::Primitive& primitive,
@@ -702,7 +707,8 @@ class GltfReader {
     auto attribute = [&](const std::string& name) -> std::optional<GltfAccessor> {
       const auto found = primitive.attributes.find(name);
       if (found == primitive.attributes.end()) return std::nullopt;
-      GltfAccessor a(model_, found->second, what + " " + name);
+      // Its count must be POSITION's, which bounds what it costs: no cap on zeros.
+      GltfAccessor a(model_, found->second, what + " " + name, GltfAccessor::kMaxElements);
       if (a.count() != n) throw ModelFileError(what + ": " + name + " has a count unlike POSITION's");
       if (!a.hasData()) return std::nullopt;  // all zeros: as good as none
       return a;
@@ -1073,8 +1079,8 @@ class GltfReader {
   uintmax_t bytesLeft_ = kMaxBytesRead;
   // Meshes by (mesh, primitive, morph weights: none for the shape as stored).
   std::map<std::tuple<int, size_t, std::vector<double>>, std::shared_ptr<const TriangleMesh>> meshes_;
-  size_t morphedVertices_ = 0;  // of the morphed copies made so far
-  static constexpr size_t kMorphedVertexBudget = size_t{1} << 22;
+  size_t morphedCopies_ = 0;  // vertices, indices and weights of the morphed copies so far
+  static constexpr size_t kMorphedCopyBudget = size_t{1} << 23;
   size_t morphMoves_ = 0;  // vertices moved by a target, each time one is
   static constexpr size_t kMorphMoves = size_t{1} << 26;
   std::map<int, Material> materials_;

@@ -97,7 +97,8 @@ struct ShearedRay4 {
 };
 
 // triangleDistance for each of the first `used` lanes (the lanes in use come first): distance[i]
-// is lane i's, bit for bit, or NaN where it misses; lanes past `used` may be left unset.
+// is lane i's, bit for bit, or NaN where it misses. Lanes past `used` in a part still computed
+// are tested too (their NaN corners miss); those in parts past it are left unset.
 // Returns the lanes whose distance d is within range, lo < d < hi (lo < d <= hi with `toHi`),
 // as bit i for lane i: from the vectors still in registers, for the caller's next decision.
 inline int blockHits(const ShearedRay4& r, const TriangleBlock& t, int used, double lo, double hi,
