@@ -16,6 +16,7 @@
 
 #include "core/rng.h"
 #include "scene/mesh_file.h"
+#include "trace/isa_level.h"
 #include "trace/mesh_bvh.h"
 #include "trace/world.h"
 
@@ -238,6 +239,8 @@ void rayTable(const std::string& file) {
 }  // namespace prt
 
 int main(int argc, char** argv) {
+  // The figures are those of the build of the kernels the loader took (prt --version's).
+  std::printf("trace kernels: %s\n\n", prt::traceIsaLevel());
   prt::buildTable();
   prt::worldTable();
   prt::rayTable(argc > 1 ? argv[1] : std::string(PRT_SOURCE_DIR) + "/scenes/models/bunny.ply");

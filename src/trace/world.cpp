@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <string>
 #include <utility>
 #include <variant>
 
@@ -11,6 +12,7 @@
 #include <emmintrin.h>
 #endif
 
+#include "core/input_error.h"
 #include "core/overloaded.h"
 #include "trace/bvh.h"
 #include "trace/shapes.h"
@@ -148,6 +150,10 @@ World::World(Scene scene, const World* reuse) : scene_(std::move(scene)) {
         o.shape);
   }
   const std::vector<Bounds> boxes = itemBounds();
+  if (boxes.size() > QuadBvh::kMaxItems) {
+    throw InputError("a scene of " + std::to_string(boxes.size()) + " objects: more than the " +
+                     std::to_string(QuadBvh::kMaxItems) + " its tree holds");
+  }
   for (const Bounds& b : boxes) itemsBox_.extend(b);
   bvh_ = QuadBvh(boxes);
   std::vector<Bounds> lights;
