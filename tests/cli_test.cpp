@@ -348,6 +348,24 @@ TEST_F(CliTest, EveryBuildOfTheKernelsRendersTheSameImages) {
   EXPECT_GE(scenes, 8);
 }
 
+// Each worker's report names the build of the trace kernels it ran (the workers of a mixed
+// cluster differ): for the thread driver, the process's own, which the loader picks.
+TEST_F(CliTest, TheReportNamesEachWorkersBuildOfTheKernels) {
+  for (const std::string environment : {"", "GLIBC_TUNABLES=glibc.cpu.hwcaps=-AVX2 "}) {
+    const std::string level = traceLevel(environment);
+    ASSERT_NE(level, "?");
+    const Result r = run("render " + std::string(PRT_SOURCE_DIR) +
+                             "/scenes/fig08-basic-features.scene --workers 2 --width 32 "
+                             "--height 24 -q -o " + path("k.png") + " --report " + path("k.json"),
+                         environment);
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    std::ifstream in(path("k.json"));
+    const nlohmann::json report = nlohmann::json::parse(in);
+    ASSERT_EQ(report["workers"].size(), 2u);
+    for (const auto& w : report["workers"]) EXPECT_EQ(w["kernels"], level) << environment;
+  }
+}
+
 // prt simulate takes prt render's --slowdown-at: K times slower is a speed of 1/K.
 TEST_F(CliTest, SimulateTakesRendersSlowdownAt) {
   const auto elapsed = [&](const std::string& flags) {

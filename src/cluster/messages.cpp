@@ -7,6 +7,14 @@
 #include "core/byte_codec.h"
 
 namespace prt {
+
+std::string kernelsOf(const std::string& build) {
+  const std::string key = "(trace kernels: ";
+  const size_t at = build.find(key);
+  if (at == std::string::npos) return "";
+  const size_t begin = at + key.size(), end = build.find(')', begin);
+  return end == std::string::npos ? "" : build.substr(begin, end - begin);
+}
 namespace {
 
 // Task sets travel as their runs: a count, then (first, count, stride) for each.

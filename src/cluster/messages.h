@@ -45,6 +45,9 @@ struct WorkerIdentity {
   std::string host;
   bool operator==(const WorkerIdentity&) const = default;
 };
+// The build of the trace kernels a build description names: "x86-64-v4" of
+// "prt 0.1.0 (trace kernels: x86-64-v4)"; "" when it names none.
+std::string kernelsOf(const std::string& build);
 struct SpeedIndexMsg {
   double seconds = 0;
   WorkerIdentity identity = {};

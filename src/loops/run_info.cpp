@@ -14,6 +14,7 @@ void recordMaster(RunInfo& info, MasterRecord r) {
     info.joinedAt.push_back(ledger.joinedAt(w));
     info.acceptedPixels.push_back(ledger.acceptedFrom(w));
     info.hosts.push_back(master.identity(w).host);
+    info.kernels.push_back(kernelsOf(master.identity(w).build));
     auto& summary = r.summaries[static_cast<size_t>(w)];
     if (!summary) {
       info.slowdowns.push_back(r.slowdownOf ? r.slowdownOf(w) : 1.0);

@@ -67,6 +67,7 @@ RunReport makeReport(const RunInfo& info, const std::vector<Event>& events,
     wr.tasks = w < info.tasksReceived.size() ? info.tasksReceived[w] : 0;
     wr.threads = w < info.threads.size() ? info.threads[w] : 1;
     if (w < info.hosts.size()) wr.host = info.hosts[w];
+    if (w < info.kernels.size()) wr.kernels = info.kernels[w];
     if (w < info.joinedAt.size()) wr.joinedAtSeconds = info.joinedAt[w];
   }
   // Per worker, from the master's sending of the scene to it to its receipt (a worker that
@@ -237,6 +238,7 @@ std::string RunReport::toJson() const {
                   {"tasks", w.tasks},
                   {"threads", w.threads},
                   {"host", w.host},
+                  {"kernels", w.kernels},
                   {"pixels", w.pixels},
                   {"check_pixels", w.checkPixels},
                   {"busy_s", w.busySeconds},

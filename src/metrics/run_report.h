@@ -44,6 +44,7 @@ struct WorkerReport {
   uint64_t tasks = 0;   // task messages received (assignments and transfers)
   int threads = 1;      // rendering threads (0: unknown, its summary never came)
   std::string host;     // the machine it ran on, as it named itself ("": not known)
+  std::string kernels;  // the build of the trace kernels it ran ("x86-64-v4"; "": not known)
   uint64_t pixels = 0;  // pixels rendered (from its events; for a worker whose events never
                         // came, a lost one, the pixels the master accepted from it)
   double busySeconds = 0;
@@ -127,6 +128,7 @@ struct RunInfo {
   std::vector<uint64_t> tasksReceived;  // per worker
   std::vector<int> threads;             // per worker: rendering threads (0: unknown)
   std::vector<std::string> hosts;       // per worker: its machine's name ("": not known)
+  std::vector<std::string> kernels;     // per worker: its trace kernels' build ("": not known)
   std::vector<std::optional<double>> joinedAt;  // per worker: when it joined; none: at start
   std::vector<uint64_t> acceptedPixels;  // per worker, optional: the pixels of the image whose
                                          // result came first from it (the master's count)
