@@ -10,6 +10,7 @@ constexpr const char* kVersion = "0.1.0";
 
 std::string prtVersion() { return kVersion; }
 
+// Parsed by versionOf below and by kernelsOf (cluster/messages.h), for the report.
 std::string buildDescription() {
   return std::string("prt ") + kVersion + " (trace kernels: " + traceIsaLevel() + ")";
 }

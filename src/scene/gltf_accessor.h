@@ -82,13 +82,7 @@ class GltfAccessor {
   // Element i of an index accessor.
   uint64_t index(size_t i) const {
     const unsigned char* p = element(i);
-    if (p == nullptr) return 0;
-    switch (type_) {
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return load<uint8_t>(p);
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return load<uint16_t>(p);
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: return load<uint32_t>(p);
-      default: return ~uint64_t{0};
-    }
+    return p == nullptr ? 0 : unsignedAt(p, type_);
   }
   bool isIndexType() const {
     return components_ == 1 && (type_ == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
@@ -97,6 +91,16 @@ class GltfAccessor {
   }
 
  private:
+  // An unsigned integer of glTF component type `type` at p; ~0 for another type.
+  static uint64_t unsignedAt(const unsigned char* p, int type) {
+    switch (type) {
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return load<uint8_t>(p);
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return load<uint16_t>(p);
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: return load<uint32_t>(p);
+      default: return ~uint64_t{0};
+    }
+  }
+
   // The first byte of element i: from the sparse values when they replace it, else from the
   // buffer view; null for an element of zeros.
   const unsigned char* element(size_t i) const {
@@ -155,13 +159,13 @@ class GltfAccessor {
     }
     const auto n = static_cast<size_t>(sparse.count);
     const int indexType = sparse.indices.componentType;
-    size_t indexBytes = 0;
-    switch (indexType) {
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: indexBytes = 1; break;
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: indexBytes = 2; break;
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: indexBytes = 4; break;
-      default: fail(what + ": " + name + " indices are not unsigned integers");
+    if (indexType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
+        indexType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
+        indexType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT) {
+      fail(what + ": " + name + " indices are not unsigned integers");
     }
+    const auto indexBytes =
+        static_cast<size_t>(tinygltf::GetComponentSizeInBytes(static_cast<uint32_t>(indexType)));
     size_t indexStride = 0;
     const unsigned char* indices =
         elements(model, sparse.indices.bufferView, static_cast<size_t>(sparse.indices.byteOffset),
@@ -171,10 +175,7 @@ class GltfAccessor {
                  element, true, sparseStride_, what, name + " values");
     sparseAt_.resize(n);
     for (size_t k = 0; k < n; ++k) {
-      const unsigned char* p = indices + k * indexStride;
-      const uint64_t at = indexBytes == 1   ? load<uint8_t>(p)
-                          : indexBytes == 2 ? load<uint16_t>(p)
-                                            : load<uint32_t>(p);
+      const uint64_t at = unsignedAt(indices + k * indexStride, indexType);
       if (at >= count_) {
         fail(what + ": " + name + " index " + std::to_string(at) + " is not below the count, " +
              std::to_string(count_));

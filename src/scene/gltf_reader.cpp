@@ -639,21 +639,26 @@ class GltfReader {
   void applyMorphTargets(const tinygltf::Primitive& primitive, const std::vector<double>& weights,
                          RawMesh& raw, const std::string& what) {
     if (weights.empty()) return;
-    RawMesh morphed = raw;
+    // Moved on copies: a target that fails leaves the stored shape whole.
+    std::vector<Vec3> positions = raw.positions, normals = raw.normals;
     try {
       for (size_t k = 0; k < weights.size(); ++k) {
-        if (weights[k] != 0) addMorphTarget(primitive.targets[k], k, weights[k], morphed, what);
+        if (weights[k] != 0) {
+          addMorphTarget(primitive.targets[k], k, weights[k], positions, normals, what);
+        }
       }
     } catch (const ModelFileError& e) {
       out_.warnings.push_back("model file \"" + path_ + "\": " + e.what() +
                               "; rendered in its stored shape");
       return;
     }
-    raw = std::move(morphed);
+    raw.positions = std::move(positions);
+    raw.normals = std::move(normals);
   }
-  void addMorphTarget(const std::map<std::string, int>& target, size_t k, double w, RawMesh& raw,
+  void addMorphTarget(const std::map<std::string, int>& target, size_t k, double w,
+                      std::vector<Vec3>& positions, std::vector<Vec3>& normals,
                       const std::string& what) {
-    const size_t n = raw.positions.size();
+    const size_t n = positions.size();
     auto add = [&](const std::string& name, std::vector<Vec3>& to) {
       const auto found = target.find(name);
       if (found == target.end()) return;
@@ -678,8 +683,8 @@ class GltfReader {
         for (size_t i = 0; i < n; ++i) move(i);
       }
     };
-    add("POSITION", raw.positions);
-    if (!raw.normals.empty()) add("NORMAL", raw.normals);
+    add("POSITION", positions);
+    if (!normals.empty()) add("NORMAL", normals);
   }
 
   std::shared_ptr<const TriangleMesh> readPrimitive(const tinygltf::Primitive& primitive,

@@ -337,31 +337,35 @@ TEST_F(HostileGltf, AccessorsWithoutBufferViewDoNotExpandIntoGigabytes) {
 // with a warning saying what is wrong. The buffer: the triangle's 36 bytes of floats, then the
 // indices 0, 1, 2, 0 as 16-bit numbers; view 2 reads 1, 2, 0 (not rising).
 TEST_F(HostileGltf, SparseAccessorsThatLieSkipTheirPrimitive) {
-  const std::string base = R"("componentType":5126,"count":3,"type":"VEC3","sparse":)";
+  // The triangle's three vertices, a sparse part of `count` elements over them.
+  auto sparse = [](const std::string& count, const std::string& indices, const std::string& values) {
+    std::string a = R"("bufferView":0,"componentType":5126,"count":3,"type":"VEC3","sparse":{"count":)";
+    a += count;
+    a += R"(,"indices":{)";
+    a += indices;
+    a += R"(},"values":{)";
+    a += values;
+    a += "}}";
+    return a;
+  };
+  const std::string ushorts = R"("bufferView":1,"componentType":5123)";
+  const std::string floats = R"("bufferView":0)";
   const std::vector<std::tuple<std::string, std::string, std::string>> cases = {
-      {"not-rising", R"("bufferView":0,)" + base +
-                         R"({"count":3,"indices":{"bufferView":2,"componentType":5123},"values":{"bufferView":0}})",
+      {"not-rising", sparse("3", R"("bufferView":2,"componentType":5123)", floats),
        "indices do not rise"},
-      {"count-zero", R"("bufferView":0,)" + base +
-                         R"({"count":0,"indices":{"bufferView":1,"componentType":5123},"values":{"bufferView":0}})",
+      {"count-zero", sparse("0", ushorts, floats),
        "count 0 is not between 1 and the accessor's count, 3"},
-      {"count-over", R"("bufferView":0,)" + base +
-                         R"({"count":4,"indices":{"bufferView":1,"componentType":5123},"values":{"bufferView":0}})",
+      {"count-over", sparse("4", ushorts, floats),
        "count 4 is not between 1 and the accessor's count, 3"},
-      {"index-type", R"("bufferView":0,)" + base +
-                         R"({"count":1,"indices":{"bufferView":1,"componentType":5126},"values":{"bufferView":0}})",
+      {"index-type", sparse("1", R"("bufferView":1,"componentType":5126)", floats),
        "indices are not unsigned integers"},
-      {"indices-past", R"("bufferView":0,)" + base +
-                           R"({"count":2,"indices":{"bufferView":1,"byteOffset":4,"componentType":5123},"values":{"bufferView":0}})",
+      {"indices-past", sparse("2", R"("bufferView":1,"byteOffset":4,"componentType":5123)", floats),
        "sparse indices reaches past its buffer view"},
-      {"values-past", R"("bufferView":0,)" + base +
-                          R"({"count":1,"indices":{"bufferView":1,"componentType":5123},"values":{"bufferView":1}})",
+      {"values-past", sparse("1", ushorts, R"("bufferView":1)"),
        "sparse values reaches past its buffer view"},
-      {"negative", R"("bufferView":0,)" + base +
-                       R"({"count":1,"indices":{"bufferView":1,"byteOffset":-2,"componentType":5123},"values":{"bufferView":0}})",
+      {"negative", sparse("1", R"("bufferView":1,"byteOffset":-2,"componentType":5123)", floats),
        "negative byte offset"},
-      {"no-view", R"("bufferView":0,)" + base +
-                      R"({"count":1,"indices":{"bufferView":9,"componentType":5123},"values":{"bufferView":0}})",
+      {"no-view", sparse("1", R"("bufferView":9,"componentType":5123)", floats),
        "names buffer view 9, which does not exist"},
       {"zeros-huge", R"("componentType":5126,"count":2147483648,"type":"VEC3","sparse":)"
                      R"({"count":1,"indices":{"bufferView":1,"componentType":5123},"values":{"bufferView":0}})",
