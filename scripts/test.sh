@@ -5,8 +5,10 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
-# Tests and benchmarks on, whatever an earlier scripts/demo.sh configured.
-PRT_CMAKE_ARGS="-DPRT_BUILD_TESTS=ON -DPRT_BUILD_BENCH=ON" bash scripts/build.sh ci
+# The ci preset sets every setting scripts/demo.sh changes (tests and benchmarks on, the
+# kernels' three builds, -O3, the unity build), so the tests build what they test whatever an
+# earlier demo configured in the same folder.
+bash scripts/build.sh ci
 ctest --preset ci "$@"
 fuzz_seconds=${PRT_FUZZ_SECONDS:-45}
 if ((fuzz_seconds > 0)); then bash scripts/fuzz.sh "$fuzz_seconds"; fi

@@ -28,45 +28,45 @@ using prt::e2e::Result;
 using prt::e2e::run;
 using AnimationCliTest = prt::e2e::ScratchDirTest;
 
-const fs::path kSource(PRT_SOURCE_DIR);
+const fs::path kAnimationSource(PRT_SOURCE_DIR);
 
-std::string readAll(const std::string& path) {
+std::string readWhole(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
-const std::string kScene = (kSource / "scenes" / "keyframes.scene").string();
-const std::string kGltfScene = (kSource / "scenes" / "animated.scene").string();
+const std::string kKeyframesScene = (kAnimationSource / "scenes" / "keyframes.scene").string();
+const std::string kGltfScene = (kAnimationSource / "scenes" / "animated.scene").string();
 const std::string kSize = " --width 32 --height 24 --spp 2 --fps 2 -q";
 
 TEST_F(AnimationCliTest, EveryFrameOfASequenceIsThatFrameRenderedAlone) {
-  for (const std::string& scene : {kScene, kGltfScene}) {
+  for (const std::string& scene : {kKeyframesScene, kGltfScene}) {
     const Result seq = run("render " + scene + kSize + " --frames 0-6:3 -o " + path("s_##.pfm"));
     ASSERT_EQ(seq.exitCode, 0) << seq.output;
     for (const char* f : {"0", "3", "6"}) {
       const std::string alone = path(std::string("alone_") + f + ".pfm");
       ASSERT_EQ(run("render " + scene + kSize + " --frame " + f + " -o " + alone).exitCode, 0);
-      EXPECT_EQ(readAll(alone), readAll(path(std::string("s_0") + f + ".pfm"))) << scene << f;
+      EXPECT_EQ(readWhole(alone), readWhole(path(std::string("s_0") + f + ".pfm"))) << scene << f;
     }
     EXPECT_FALSE(fs::exists(path("s_01.pfm")));  // the step skips it
-    EXPECT_NE(readAll(path("s_00.pfm")), readAll(path("s_06.pfm"))) << scene << ": nothing moved";
+    EXPECT_NE(readWhole(path("s_00.pfm")), readWhole(path("s_06.pfm"))) << scene << ": nothing moved";
   }
 }
 
 TEST_F(AnimationCliTest, EveryStrategyRendersTheSequenceBitForBit) {
-  ASSERT_EQ(run("render " + kScene + kSize + " --frames 0-5 -o " + path("ref_#.pfm")).exitCode, 0);
+  ASSERT_EQ(run("render " + kKeyframesScene + kSize + " --frames 0-5 -o " + path("ref_#.pfm")).exitCode, 0);
   for (const char* strategy : {"adaptive", "scatter", "hybrid", "reservoir", "reservoir-scatter",
                                "frames", "self", "stealing", "awf-b"}) {
-    const Result r = run("render " + kScene + kSize + " --frames 0-5 --workers 3 --slowdown 1,2,3 "
+    const Result r = run("render " + kKeyframesScene + kSize + " --frames 0-5 --workers 3 --slowdown 1,2,3 "
                          "--batch 16 --strategy " + strategy + " -o " + path("p_#.pfm") +
                          " --report " + path("r.json"));
     ASSERT_EQ(r.exitCode, 0) << strategy << "\n" << r.output;
     for (int f = 0; f <= 5; ++f) {
       const std::string n = std::to_string(f);
-      EXPECT_EQ(readAll(path("ref_" + n + ".pfm")), readAll(path("p_" + n + ".pfm")))
+      EXPECT_EQ(readWhole(path("ref_" + n + ".pfm")), readWhole(path("p_" + n + ".pfm")))
           << strategy << " frame " << f;
     }
-    const std::string report = readAll(path("r.json"));
+    const std::string report = readWhole(path("r.json"));
     EXPECT_NE(report.find("\"frame_count\": 6"), std::string::npos) << strategy;
   }
 }
@@ -74,7 +74,7 @@ TEST_F(AnimationCliTest, EveryStrategyRendersTheSequenceBitForBit) {
 // An import's keyed placement moves the whole file (a model without an animation of its own),
 // under the thread driver as serially.
 TEST_F(AnimationCliTest, AKeyedImportMovesTheWholeFile) {
-  const std::string crate = (kSource / "scenes" / "models" / "crate.glb").string();
+  const std::string crate = (kAnimationSource / "scenes" / "models" / "crate.glb").string();
   const std::string scene = write(
       "moving.scene", "image { width 32 height 24 }\n"
                       "import { file \"" + crate + "\" key 2 { translate 1 0 0 rotate 0 90 0 } }\n"
@@ -84,10 +84,10 @@ TEST_F(AnimationCliTest, AKeyedImportMovesTheWholeFile) {
                        path("p_#.pfm"));
   ASSERT_EQ(r.exitCode, 0) << r.output;
   for (const char* f : {"0", "2", "4"}) {
-    EXPECT_EQ(readAll(path(std::string("s_") + f + ".pfm")),
-              readAll(path(std::string("p_") + f + ".pfm"))) << f;
+    EXPECT_EQ(readWhole(path(std::string("s_") + f + ".pfm")),
+              readWhole(path(std::string("p_") + f + ".pfm"))) << f;
   }
-  EXPECT_NE(readAll(path("s_0.pfm")), readAll(path("s_4.pfm")));
+  EXPECT_NE(readWhole(path("s_0.pfm")), readWhole(path("s_4.pfm")));
 }
 
 // The simulator takes a sequence as one job too: whole frames per worker leave the slow
@@ -100,7 +100,7 @@ TEST_F(AnimationCliTest, TheSimulatorBalancesASequenceAndShowsWholeFramesLosing)
   EXPECT_NE(adaptive.output.find("10 frames"), std::string::npos) << adaptive.output;
   ASSERT_EQ(run(common + path("f.json") + " --strategy frames").exitCode, 0);
   const auto elapsed = [&](const std::string& file) {
-    const std::string text = readAll(path(file));
+    const std::string text = readWhole(path(file));
     const size_t at = text.find("\"elapsed_s\": ");
     return std::stod(text.substr(at + 13));
   };
@@ -111,10 +111,10 @@ TEST_F(AnimationCliTest, TheSimulatorBalancesASequenceAndShowsWholeFramesLosing)
 // The run's page of a sequence shows a sheet of its frames, one frame's ownership map and
 // the frame boundaries on its timeline.
 TEST_F(AnimationCliTest, TheRunPageOfASequenceShowsItsFrames) {
-  const Result r = run("render " + kScene + kSize + " --frames 0-20:4 --workers 2 -o " +
+  const Result r = run("render " + kKeyframesScene + kSize + " --frames 0-20:4 --workers 2 -o " +
                        path("f_##.png") + " --html " + path("page.html"));
   ASSERT_EQ(r.exitCode, 0) << r.output;
-  const std::string page = readAll(path("page.html"));
+  const std::string page = readWhole(path("page.html"));
   EXPECT_NE(page.find("6 frames of 32×24"), std::string::npos);
   EXPECT_NE(page.find("shown: frames 0, 4, 8, 12, 16, 20"), std::string::npos);
   EXPECT_NE(page.find("ownership_map"), std::string::npos);
@@ -139,7 +139,7 @@ TEST_F(AnimationCliTest, FlagsAndPatternsAreCheckedBeforeRendering) {
       {"--frames 0-3 -o f_#_#.png", "needs an output pattern"},
   };
   for (const Case& c : cases) {
-    const Result r = run("render " + kScene + kSize + " " + c.flags);
+    const Result r = run("render " + kKeyframesScene + kSize + " " + c.flags);
     EXPECT_EQ(r.exitCode, 2) << c.flags << "\n" << r.output;
     EXPECT_NE(r.output.find(c.message), std::string::npos) << c.flags << "\n" << r.output;
   }
@@ -161,8 +161,8 @@ TEST_F(AnimationCliTest, KeyframesThatMakeAFrameImpossibleAreCaughtAtThatFrame) 
 // and the frames finished before the kill are not rendered again.
 TEST_F(AnimationCliTest, AKilledSequenceResumesToTheSameFrames) {
   const std::string size = " --width 48 --height 36 --spp 2 --fps 4 -q --frames 0-7";
-  ASSERT_EQ(run("render " + kScene + size + " -o " + path("ref_#.pfm")).exitCode, 0);
-  const std::string command = prt::e2e::prtBinary() + " render " + kScene + size +
+  ASSERT_EQ(run("render " + kKeyframesScene + size + " -o " + path("ref_#.pfm")).exitCode, 0);
+  const std::string command = prt::e2e::prtBinary() + " render " + kKeyframesScene + size +
                               " --workers 2 --slowdown 8,8 --batch 16 -o " + path("k_#.pfm") +
                               " --checkpoint " + path("ck") + " --checkpoint-every 0.05";
   const pid_t child = fork();
@@ -182,24 +182,24 @@ TEST_F(AnimationCliTest, AKilledSequenceResumesToTheSameFrames) {
   waitpid(child, &status, 0);
   ASSERT_TRUE(WIFSIGNALED(status)) << "the render ended before it was killed";
   ASSERT_TRUE(fs::exists(path("ck")));
-  const Result resumed = run("render " + kScene + size + " --workers 2 -o " + path("k_#.pfm") +
+  const Result resumed = run("render " + kKeyframesScene + size + " --workers 2 -o " + path("k_#.pfm") +
                              " --checkpoint " + path("ck") + " --resume --report " +
                              path("r.json"));
   ASSERT_EQ(resumed.exitCode, 0) << resumed.output;
   for (int f = 0; f <= 7; ++f) {
     const std::string n = std::to_string(f);
-    EXPECT_EQ(readAll(path("ref_" + n + ".pfm")), readAll(path("k_" + n + ".pfm"))) << f;
+    EXPECT_EQ(readWhole(path("ref_" + n + ".pfm")), readWhole(path("k_" + n + ".pfm"))) << f;
   }
   EXPECT_FALSE(fs::exists(path("ck")));
-  const std::string report = readAll(path("r.json"));
+  const std::string report = readWhole(path("r.json"));
   EXPECT_EQ(report.find("\"resumed_pixels\": 0,"), std::string::npos) << report;
 }
 
 // The serial render with a checkpoint: killed and resumed the same way.
 TEST_F(AnimationCliTest, ASerialSequenceWithACheckpointResumes) {
   const std::string size = " --width 64 --height 48 --spp 4 --fps 4 -q --frames 0-5 --threads 1";
-  ASSERT_EQ(run("render " + kScene + size + " -o " + path("ref_#.pfm")).exitCode, 0);
-  const std::string command = prt::e2e::prtBinary() + " render " + kScene + size + " -o " +
+  ASSERT_EQ(run("render " + kKeyframesScene + size + " -o " + path("ref_#.pfm")).exitCode, 0);
+  const std::string command = prt::e2e::prtBinary() + " render " + kKeyframesScene + size + " -o " +
                               path("k_#.pfm") + " --checkpoint " + path("ck") +
                               " --checkpoint-every 0.02";
   const pid_t child = fork();
@@ -214,12 +214,12 @@ TEST_F(AnimationCliTest, ASerialSequenceWithACheckpointResumes) {
   kill(child, SIGKILL);
   int status = 0;
   waitpid(child, &status, 0);
-  const Result resumed = run("render " + kScene + size + " -o " + path("k_#.pfm") +
+  const Result resumed = run("render " + kKeyframesScene + size + " -o " + path("k_#.pfm") +
                              " --checkpoint " + path("ck") + " --resume");
   ASSERT_EQ(resumed.exitCode, 0) << resumed.output;
   for (int f = 0; f <= 5; ++f) {
     const std::string n = std::to_string(f);
-    EXPECT_EQ(readAll(path("ref_" + n + ".pfm")), readAll(path("k_" + n + ".pfm"))) << f;
+    EXPECT_EQ(readWhole(path("ref_" + n + ".pfm")), readWhole(path("k_" + n + ".pfm"))) << f;
   }
 }
 
@@ -257,7 +257,7 @@ TEST_F(AnimationCliTest, VideoOfASequenceHasEveryFrameAtTheAnimationsSpeed) {
   if (!haveFfmpeg()) GTEST_SKIP() << "ffmpeg and ffprobe are not installed (scripts/install-deps.sh)";
   // An older frame beside the pattern's is not picked up: only this run's frames are fed.
   write("f_99.png", "not a frame of this run");
-  const Result r = run("render " + kScene + " --width 33 --height 25 --spp 1 --fps 8 "
+  const Result r = run("render " + kKeyframesScene + " --width 33 --height 25 --spp 1 --fps 8 "
                        "--frames 0-22:2 --workers 2 -o " + path("f_##.png") + " --video " +
                        path("v.mp4"));
   ASSERT_EQ(r.exitCode, 0) << r.output;
@@ -270,7 +270,7 @@ TEST_F(AnimationCliTest, VideoOfASequenceHasEveryFrameAtTheAnimationsSpeed) {
   EXPECT_EQ(probe.output, "h264,34,26,yuv420p,4/1,12\n");
   EXPECT_TRUE(temporariesIn(dir_.string()).empty());
   // A serial sequence, quiet, to a container of ffmpeg's own choice.
-  const Result gif = run("render " + kScene + " --width 16 --height 12 --spp 1 --frames 0-4 -q "
+  const Result gif = run("render " + kKeyframesScene + " --width 16 --height 12 --spp 1 --frames 0-4 -q "
                          "-o " + path("g_#.ppm") + " --video " + path("v.gif"));
   ASSERT_EQ(gif.exitCode, 0) << gif.output;
   EXPECT_EQ(gif.output, "");
@@ -281,7 +281,7 @@ TEST_F(AnimationCliTest, VideoOfASequenceHasEveryFrameAtTheAnimationsSpeed) {
 }
 
 TEST_F(AnimationCliTest, VideoProblemsAreCleanErrorsAndKeepTheFrames) {
-  const std::string base = "render " + kScene + " --width 16 --height 12 --spp 1 -q ";
+  const std::string base = "render " + kKeyframesScene + " --width 16 --height 12 --spp 1 -q ";
   // Refused before anything renders (exit 2, no frames).
   EXPECT_EQ(run(base + "-o " + path("a.png") + " --video " + path("a.mp4")).exitCode, 2);
   EXPECT_EQ(run(base + "--frames 0-2 -o " + path("b_#.png") + " --video " + path("b")).exitCode,
@@ -308,7 +308,7 @@ TEST_F(AnimationCliTest, VideoProblemsAreCleanErrorsAndKeepTheFrames) {
   const std::string deaf = write("ffmpeg-deaf", "#!/bin/sh\nexit 0\n");
   fs::permissions(deaf, fs::perms::owner_all);
   const Result stopped =
-      run("render " + kScene + " --width 200 --height 150 --spp 1 -q --frames 0-1 -o " +
+      run("render " + kKeyframesScene + " --width 200 --height 150 --spp 1 -q --frames 0-1 -o " +
           path("e_#.ppm") + " --video " + path("e.mp4"), "PRT_FFMPEG=" + deaf + " ");
   EXPECT_EQ(stopped.exitCode, 1) << stopped.output;
   EXPECT_NE(stopped.output.find("stopped reading"), std::string::npos) << stopped.output;
@@ -331,7 +331,7 @@ TEST_F(AnimationCliTest, CtrlCWhileTheVideoIsMadeLeavesNothingBehind) {
                                                 "echo partial > \"$out\"\nexec sleep 30\n");
   fs::permissions(slow, fs::perms::owner_all);
   const std::string command = "PRT_FFMPEG=" + slow + " exec " + prt::e2e::prtBinary() +
-                              " render " + kScene + " --width 16 --height 12 --spp 1 -q "
+                              " render " + kKeyframesScene + " --width 16 --height 12 --spp 1 -q "
                               "--frames 0-2 -o " + path("f_#.png") + " --video " +
                               path("v.mp4") + " >/dev/null 2>&1";
   const pid_t child = prt::e2e::spawnShellGroup(command);

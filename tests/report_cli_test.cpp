@@ -20,7 +20,7 @@ using e2e::Result;
 using e2e::run;
 using ReportCliTest = e2e::ScratchDirTest;
 
-const std::string kScene = std::string(PRT_SOURCE_DIR) + "/scenes/fig06-primitives.scene";
+const std::string kReportScene = std::string(PRT_SOURCE_DIR) + "/scenes/fig06-primitives.scene";
 
 nlohmann::json embeddedReport(const std::string& html) {
   const std::string open = "<script type=\"application/json\" id=\"prt-run\">";
@@ -32,7 +32,7 @@ nlohmann::json embeddedReport(const std::string& html) {
 
 TEST_F(ReportCliTest, SavedReportDrawsTheSamePageAgain) {
   const Result r =
-      run("render " + kScene + " --width 48 --height 32 --workers 2 --html " + path("run.html") +
+      run("render " + kReportScene + " --width 48 --height 32 --workers 2 --html " + path("run.html") +
           " --report " + path("run.json") + " -o " + path("run.png") + " -q");
   ASSERT_EQ(r.exitCode, 0) << r.output;
   const std::string page = readWholeFile(path("run.html"));
@@ -78,19 +78,19 @@ TEST_F(ReportCliTest, SimulatedRunHasACostPictureAndOwnershipMap) {
 }
 
 TEST_F(ReportCliTest, BadInputIsExitCodeTwoAndWritesNothing) {
-  Result r = run("render " + kScene + " --width 16 --height 16 --workers 2 --html " +
+  Result r = run("render " + kReportScene + " --width 16 --height 16 --workers 2 --html " +
                  path("page.txt") + " -o " + path("a.png"));
   EXPECT_EQ(r.exitCode, 2);
   EXPECT_NE(r.output.find(".html or .htm"), std::string::npos) << r.output;
   EXPECT_FALSE(fs::exists(path("a.png"))) << "checked before rendering";
 
-  r = run("render " + kScene + " --width 16 --height 16 --workers 2 --html " +
+  r = run("render " + kReportScene + " --width 16 --height 16 --workers 2 --html " +
           path("nowhere/page.html") + " -o " + path("a.png"));
   EXPECT_EQ(r.exitCode, 2);
   EXPECT_NE(r.output.find("no folder"), std::string::npos) << r.output;
   EXPECT_FALSE(fs::exists(path("a.png"))) << "checked before rendering";
 
-  r = run("render " + kScene + " --width 16 --height 16 --html " + path("page.html") + " -o " +
+  r = run("render " + kReportScene + " --width 16 --height 16 --html " + path("page.html") + " -o " +
           path("a.png"));
   EXPECT_EQ(r.exitCode, 2);
   EXPECT_NE(r.output.find("describe a parallel run"), std::string::npos) << r.output;
@@ -122,7 +122,7 @@ TEST_F(ReportCliTest, BadInputIsExitCodeTwoAndWritesNothing) {
 // A saved report that was edited: a field of another type is named, exit 2, no page; a huge
 // one gives a page of bounded size that says what it left out.
 TEST_F(ReportCliTest, AnEditedReportIsRefusedByItsFieldAndAHugeOneMakesABoundedPage) {
-  Result r = run("render " + kScene + " --width 24 --height 16 --workers 2 --report " +
+  Result r = run("render " + kReportScene + " --width 24 --height 16 --workers 2 --report " +
                  path("run.json") + " -o " + path("run.png") + " -q");
   ASSERT_EQ(r.exitCode, 0) << r.output;
   const nlohmann::json saved = nlohmann::json::parse(readWholeFile(path("run.json")));

@@ -2,12 +2,12 @@
 
 #include <gtest/gtest.h>
 
+#include "balance/assign_testing.h"
+
 namespace prt {
 namespace {
 
-Assign assign(int worker, uint64_t first, uint64_t count) {
-  return Assign{worker, TaskSet::range(first, count)};
-}
+using testing_support::assignRange;
 
 TEST(FactoringTest, ChunksFollowTheWeights) {
   EXPECT_EQ(factoringChunks(50, {0.5, 0.5}), (std::vector<uint64_t>{25, 25}));
@@ -17,10 +17,11 @@ TEST(FactoringTest, ChunksFollowTheWeights) {
 
 TEST(FactoringTest, EqualWorkersHalveTheRemainderEachBatch) {
   FactoringStrategy s;
-  EXPECT_EQ(s.start(StartInfo{100, {1, 1}}), (Decisions{assign(0, 0, 25), assign(1, 25, 25)}));
+  EXPECT_EQ(s.start(StartInfo{100, {1, 1}}),
+            (Decisions{assignRange(0, 0, 25), assignRange(1, 25, 25)}));
   // Batch 2 is ceil(50 / 2) = 25, chunks ceil(12.5) = 13: 13 then the 12 left.
-  EXPECT_EQ(s.onRequest(0), (Decisions{assign(0, 50, 13)}));
-  EXPECT_EQ(s.onRequest(1), (Decisions{assign(1, 63, 12)}));
+  EXPECT_EQ(s.onRequest(0), (Decisions{assignRange(0, 50, 13)}));
+  EXPECT_EQ(s.onRequest(1), (Decisions{assignRange(1, 63, 12)}));
   for (int i = 0;; ++i) {
     if (s.onRequest(i % 2) == Decisions{NoMoreWork{i % 2}}) break;
   }
@@ -31,12 +32,13 @@ TEST(FactoringTest, WeightedChunksAndAFastWorkerAskingTwice) {
   // Speeds (1, 3): weights 0.75, 0.25.
   FactoringStrategy s;
   // Batch 50: chunks 38 and 13, the second clamped to the 12 left in the batch.
-  EXPECT_EQ(s.start(StartInfo{100, {1, 3}}), (Decisions{assign(0, 0, 38), assign(1, 38, 12)}));
+  EXPECT_EQ(s.start(StartInfo{100, {1, 3}}),
+            (Decisions{assignRange(0, 0, 38), assignRange(1, 38, 12)}));
   // Batch 25: chunks ceil(18.75) = 19 and ceil(6.25) = 7.
-  EXPECT_EQ(s.onRequest(0), (Decisions{assign(0, 50, 19)}));
-  EXPECT_EQ(s.onRequest(0), (Decisions{assign(0, 69, 6)}));  // the rest of the batch
+  EXPECT_EQ(s.onRequest(0), (Decisions{assignRange(0, 50, 19)}));
+  EXPECT_EQ(s.onRequest(0), (Decisions{assignRange(0, 69, 6)}));  // the rest of the batch
   // Batch 13: chunks 10 and 4.
-  EXPECT_EQ(s.onRequest(1), (Decisions{assign(1, 75, 4)}));
+  EXPECT_EQ(s.onRequest(1), (Decisions{assignRange(1, 75, 4)}));
   EXPECT_EQ(s.batchSizes(), (std::vector<uint64_t>{50, 25, 13}));
 }
 

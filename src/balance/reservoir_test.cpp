@@ -2,27 +2,26 @@
 
 #include <gtest/gtest.h>
 
+#include "balance/assign_testing.h"
 #include "balance/interleaved_order.h"
 #include "core/input_error.h"
 
 namespace prt {
 namespace {
 
-Assign assign(int worker, uint64_t first, uint64_t count) {
-  return Assign{worker, TaskSet::range(first, count)};
-}
+using testing_support::assignRange;
 
 TEST(ReservoirTest, ScriptedRequestsThreeWorkers) {
   // Speeds (1, 2, 4): division 4/7, 2/7, 1/7. n = 100, p = 80 %: limit 80, blocks
   // ceil(45.7) = 46, ceil(22.9) = 23, then 11 of ceil(11.4) = 12; the reservoir is 80..99.
   ReservoirStrategy s(80);
   EXPECT_EQ(s.start(StartInfo{100, {1, 2, 4}}),
-            (Decisions{assign(0, 0, 46), assign(1, 46, 23), assign(2, 69, 11)}));
-  EXPECT_EQ(s.onRequest(0), (Decisions{assign(0, 80, 12)}));  // ceil(20 * 4/7) = 12
-  EXPECT_EQ(s.onRequest(2), (Decisions{assign(2, 92, 2)}));   // ceil(8 * 1/7) = 2
-  EXPECT_EQ(s.onRequest(1), (Decisions{assign(1, 94, 2)}));   // ceil(6 * 2/7) = 2
-  EXPECT_EQ(s.onRequest(0), (Decisions{assign(0, 96, 3)}));   // ceil(4 * 4/7) = 3
-  EXPECT_EQ(s.onRequest(1), (Decisions{assign(1, 99, 1)}));   // ceil(1 * 2/7) = 1
+            (Decisions{assignRange(0, 0, 46), assignRange(1, 46, 23), assignRange(2, 69, 11)}));
+  EXPECT_EQ(s.onRequest(0), (Decisions{assignRange(0, 80, 12)}));  // ceil(20 * 4/7) = 12
+  EXPECT_EQ(s.onRequest(2), (Decisions{assignRange(2, 92, 2)}));   // ceil(8 * 1/7) = 2
+  EXPECT_EQ(s.onRequest(1), (Decisions{assignRange(1, 94, 2)}));   // ceil(6 * 2/7) = 2
+  EXPECT_EQ(s.onRequest(0), (Decisions{assignRange(0, 96, 3)}));   // ceil(4 * 4/7) = 3
+  EXPECT_EQ(s.onRequest(1), (Decisions{assignRange(1, 99, 1)}));   // ceil(1 * 2/7) = 1
   EXPECT_EQ(s.onRequest(2), (Decisions{NoMoreWork{2}}));
   EXPECT_EQ(s.onRequest(0), (Decisions{NoMoreWork{0}}));
 }
@@ -31,23 +30,23 @@ TEST(ReservoirTest, TableOneWorkerOneTakesSixtyFiveOfAHundred) {
   // n = 500, p = 80 %: 400 tasks out at the start, 100 in the reserve.
   ReservoirStrategy s(80);
   const Decisions start = s.start(StartInfo{500, {1, 3, 12, 7}});
-  EXPECT_EQ(start, (Decisions{assign(0, 0, 257), assign(1, 257, 86), assign(2, 343, 22),
-                              assign(3, 365, 35)}));
-  EXPECT_EQ(s.onRequest(0), (Decisions{assign(0, 400, 65)}));
+  EXPECT_EQ(start, (Decisions{assignRange(0, 0, 257), assignRange(1, 257, 86),
+                              assignRange(2, 343, 22), assignRange(3, 365, 35)}));
+  EXPECT_EQ(s.onRequest(0), (Decisions{assignRange(0, 400, 65)}));
   EXPECT_NEAR(s.division()[2], 1.0 / 18.714285714285714, 1e-12);
 }
 
 TEST(ReservoirTest, HundredPercentLeavesAnEmptyReservoir) {
   ReservoirStrategy s(100);
   const Decisions start = s.start(StartInfo{10, {1, 1}});
-  EXPECT_EQ(start, (Decisions{assign(0, 0, 5), assign(1, 5, 5)}));
+  EXPECT_EQ(start, (Decisions{assignRange(0, 0, 5), assignRange(1, 5, 5)}));
   EXPECT_EQ(s.onRequest(1), (Decisions{NoMoreWork{1}}));
 }
 
 TEST(ReservoirTest, TinyImageManyWorkers) {
   // One task, three workers: limit ceil(0.8) = 1, all of it to worker 0.
   ReservoirStrategy s(80);
-  EXPECT_EQ(s.start(StartInfo{1, {1, 1, 1}}), (Decisions{assign(0, 0, 1)}));
+  EXPECT_EQ(s.start(StartInfo{1, {1, 1, 1}}), (Decisions{assignRange(0, 0, 1)}));
   EXPECT_EQ(s.onRequest(1), (Decisions{NoMoreWork{1}}));
 }
 
@@ -70,8 +69,8 @@ TEST(ReservoirTest, LostWorkerServesIdleWorkersAtOnce) {
   s.start(StartInfo{9, {1, 1, 1}});  // 0..2, 3..5, 6..8
   EXPECT_EQ(s.onRequest(2), (Decisions{NoMoreWork{2}}));
   // Worker 0 goes with 1..2 unrendered: worker 2 is idle and gets ceil(2 * 1/2) = 1 now.
-  EXPECT_EQ(s.onWorkerLost(0, TaskSet::range(1, 2)), (Decisions{assign(2, 1, 1)}));
-  EXPECT_EQ(s.onRequest(1), (Decisions{assign(1, 2, 1)}));
+  EXPECT_EQ(s.onWorkerLost(0, TaskSet::range(1, 2)), (Decisions{assignRange(2, 1, 1)}));
+  EXPECT_EQ(s.onRequest(1), (Decisions{assignRange(1, 2, 1)}));
   EXPECT_EQ(s.onRequest(2), (Decisions{NoMoreWork{2}}));
 }
 

@@ -2,27 +2,27 @@
 
 #include <gtest/gtest.h>
 
+#include "balance/assign_testing.h"
 #include "core/input_error.h"
 
 namespace prt {
 namespace {
 
-Assign assign(int worker, uint64_t first, uint64_t count) {
-  return Assign{worker, TaskSet::range(first, count)};
-}
+using testing_support::assignRange;
 
 TEST(SelfSchedulingTest, FixedChunksFromTheFront) {
   SelfSchedulingStrategy s(10);
   EXPECT_EQ(s.name(), "self");
   EXPECT_EQ(s.start(StartInfo{35, {1, 5, 2}}),
-            (Decisions{assign(0, 0, 10), assign(1, 10, 10), assign(2, 20, 10)}));
-  EXPECT_EQ(s.onRequest(1), (Decisions{assign(1, 30, 5)}));  // the last chunk is short
+            (Decisions{assignRange(0, 0, 10), assignRange(1, 10, 10), assignRange(2, 20, 10)}));
+  EXPECT_EQ(s.onRequest(1), (Decisions{assignRange(1, 30, 5)}));  // the last chunk is short
   EXPECT_EQ(s.onRequest(0), (Decisions{NoMoreWork{0}}));
 }
 
 TEST(SelfSchedulingTest, FewerTasksThanChunks) {
   SelfSchedulingStrategy s(4);
-  EXPECT_EQ(s.start(StartInfo{6, {1, 1, 1}}), (Decisions{assign(0, 0, 4), assign(1, 4, 2)}));
+  EXPECT_EQ(s.start(StartInfo{6, {1, 1, 1}}),
+            (Decisions{assignRange(0, 0, 4), assignRange(1, 4, 2)}));
   EXPECT_EQ(s.onRequest(2), (Decisions{NoMoreWork{2}}));
 }
 
@@ -33,7 +33,7 @@ TEST(SelfSchedulingTest, LostWorkersTasksGoFirst) {
   TaskSet expected = TaskSet::range(4, 2);
   expected.append(TaskSet::range(6, 1));
   EXPECT_EQ(s.onRequest(0), (Decisions{Assign{0, expected}}));
-  EXPECT_EQ(s.onRequest(0), (Decisions{assign(0, 7, 3)}));
+  EXPECT_EQ(s.onRequest(0), (Decisions{assignRange(0, 7, 3)}));
 }
 
 TEST(SelfSchedulingTest, RejectsZeroChunk) {

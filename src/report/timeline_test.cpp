@@ -11,7 +11,7 @@ namespace {
 
 using nlohmann::json;
 
-std::vector<Event> twoWorkers() {
+std::vector<Event> twoWorkerEvents() {
   std::vector<Event> e;
   e.push_back({EventKind::Setup, 0, 0.0, 1.0, 0, 0, 0, ""});
   e.push_back({EventKind::Setup, 1, 0.0, 1.0, 0, 0, 0, ""});
@@ -25,7 +25,7 @@ std::vector<Event> twoWorkers() {
 }
 
 TEST(Timeline, SpansInTicksMergedAndMarked) {
-  const json t = timelineJson(twoWorkers(), 2, 10.0, {100, 64, 100, 100});
+  const json t = timelineJson(twoWorkerEvents(), 2, 10.0, {100, 64, 100, 100});
   EXPECT_FALSE(t["aggregated"].get<bool>());
   EXPECT_EQ(t["ticks"], 100);
   ASSERT_EQ(t["rows"].size(), 2u);
@@ -85,7 +85,7 @@ size_t countOf(const std::string& text, const std::string& what) {
 }
 
 TEST(TimelineSvg, FrameBoundariesAreDrawnEachAndLabelledWhereTheyFit) {
-  const json t = timelineJson(twoWorkers(), 2, 10.0, {100, 64, 100, 100});
+  const json t = timelineJson(twoWorkerEvents(), 2, 10.0, {100, 64, 100, 100});
   EXPECT_EQ(countOf(timelineSvg(t, {"#ff0000", "#00ff00"}), "frame-line"), 0u) << "a still";
   // 100 frames in 10 s: a line for each, far fewer labels (the plot is 900 px wide).
   json frames = json::array();

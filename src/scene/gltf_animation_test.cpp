@@ -22,9 +22,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path kSource(PRT_SOURCE_DIR);
-const std::string kAnimated = (kSource / "scenes" / "models" / "animated.glb").string();
-const std::string kScene = (kSource / "scenes" / "animated.scene").string();
+const fs::path kAnimSource(PRT_SOURCE_DIR);
+const std::string kAnimated = (kAnimSource / "scenes" / "models" / "animated.glb").string();
+const std::string kScene = (kAnimSource / "scenes" / "animated.scene").string();
 
 // The rig's nodes in the order the reader walks the file's tree (roots Base, Stepper, Slider,
 // Spinner with its child Moon, Camera, Lamp): every node places something, so all are kept.
@@ -116,17 +116,17 @@ TEST(GltfAnimation, ObjectsAsReadAreTheNodesAtRestInTheRigsOwnArithmetic) {
 }
 
 TEST(GltfAnimation, FilesWithoutAnimationsHaveNoRig) {
-  const ImportedModel model = readModelFile((kSource / "scenes" / "models" / "crate.glb").string());
+  const ImportedModel model = readModelFile((kAnimSource / "scenes" / "models" / "crate.glb").string());
   EXPECT_TRUE(model.rig.empty());
   EXPECT_TRUE(model.rig.nodes.empty());
   EXPECT_TRUE(model.rig.objectNodes.empty());
-  const Scene scene = loadSceneFile((kSource / "scenes" / "crate.scene").string());
+  const Scene scene = loadSceneFile((kAnimSource / "scenes" / "crate.scene").string());
   EXPECT_EQ(scene.animation, nullptr);
 }
 
 TEST(GltfAnimation, AnimationsMovingOnlyBonesGiveNoRig) {
   const ImportedModel model =
-      readModelFile((kSource / "tests" / "models" / "blender-skinned.glb").string());
+      readModelFile((kAnimSource / "tests" / "models" / "blender-skinned.glb").string());
   EXPECT_TRUE(model.rig.empty());
 }
 

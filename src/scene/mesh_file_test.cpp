@@ -19,7 +19,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const std::string kPreamble = "camera { eye 0 0 -5 look_at 0 0 0 }\nimage { width 4 height 3 }\n";
+const std::string kMeshPreamble = "camera { eye 0 0 -5 look_at 0 0 0 }\nimage { width 4 height 3 }\n";
 
 // A unit square in z = 0 as two triangles, counter-clockwise seen from +z.
 const std::string kSquareObj = "# a square\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3\nf 1 3 4\n";
@@ -40,7 +40,7 @@ class MeshFile : public ::testing::Test {
   }
   // The scene `body` (after the preamble) saved in the test directory and loaded.
   Scene load(const std::string& body) const {
-    write("test.scene", kPreamble + body);
+    write("test.scene", kMeshPreamble + body);
     return loadSceneFile((dir_ / "test.scene").string());
   }
   std::string errorOf(const std::string& body) const {

@@ -28,8 +28,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path kSource(PRT_SOURCE_DIR);
-const fs::path kModels = kSource / "tests" / "models";
+const fs::path kImportSource(PRT_SOURCE_DIR);
+const fs::path kModels = kImportSource / "tests" / "models";
 constexpr double kDegrees = 180 / std::numbers::pi;
 
 size_t distinctMeshes(const std::vector<Object>& objects) {
@@ -46,7 +46,7 @@ bool anyWarning(const std::vector<std::string>& warnings, const std::string& fra
 }
 
 TEST(ModelFile, GltfInstancesShareTheirMeshes) {
-  const ImportedModel pawns = readModelFile((kSource / "scenes/models/pawns.gltf").string());
+  const ImportedModel pawns = readModelFile((kImportSource / "scenes/models/pawns.gltf").string());
   // The board (2 primitives) and 16 pawns of 2 primitives each, from 3 meshes of 6 primitives.
   EXPECT_EQ(pawns.objects.size(), 2u + 16u * 2u);
   EXPECT_EQ(distinctMeshes(pawns.objects), 6u);
@@ -63,7 +63,7 @@ TEST(ModelFile, GltfInstancesShareTheirMeshes) {
 }
 
 TEST(ModelFile, GltfCamerasAndLightsAsBlenderExportsThem) {
-  const ImportedModel pawns = readModelFile((kSource / "scenes/models/pawns.gltf").string());
+  const ImportedModel pawns = readModelFile((kImportSource / "scenes/models/pawns.gltf").string());
   ASSERT_EQ(pawns.cameras.size(), 1u);
   EXPECT_EQ(pawns.cameras[0].name, "Camera");
   EXPECT_NEAR(pawns.cameras[0].camera.fovDegrees, 0.6509916954952726 * kDegrees, 1e-9);

@@ -12,7 +12,7 @@ namespace prt {
 namespace {
 
 // Two lines, so that the text under test starts on line 3.
-const std::string kPreamble = "camera { eye 0 0 -5 look_at 0 0 0 }\nimage { width 4 height 3 }\n";
+const std::string kErrorPreamble = "camera { eye 0 0 -5 look_at 0 0 0 }\nimage { width 4 height 3 }\n";
 
 InputError errorOf(const std::string& text) {
   try {
@@ -40,7 +40,7 @@ void expectError(const std::string& text, int line, int column,
 // `body` goes on line 3, after a valid camera and image.
 void expectBodyError(const std::string& body, int column,
                      std::initializer_list<std::string> fragments) {
-  expectError(kPreamble + body, 3, column, fragments);
+  expectError(kErrorPreamble + body, 3, column, fragments);
 }
 
 TEST(SceneErrors, UnknownDirectiveListsTheValidOnes) {
@@ -68,7 +68,7 @@ TEST(SceneErrors, UnknownParameterListsTheBlocksParameters) {
 }
 
 TEST(SceneErrors, MissingClosingBraceIsHinted) {
-  expectError(kPreamble + "sphere { center 0 0 0 radius 1\nbox { min 0 0 0 max 1 1 1 }", 4, 1,
+  expectError(kErrorPreamble + "sphere { center 0 0 0 radius 1\nbox { min 0 0 0 max 1 1 1 }", 4, 1,
               {"unknown parameter 'box'", "'}' of the block opened at line 3, column 8"});
 }
 
@@ -83,13 +83,13 @@ TEST(SceneErrors, DuplicateParameter) {
 }
 
 TEST(SceneErrors, DuplicateSceneWideBlocks) {
-  expectError(kPreamble + "camera { eye 0 0 1 look_at 0 0 0 }", 3, 1,
+  expectError(kErrorPreamble + "camera { eye 0 0 1 look_at 0 0 0 }", 3, 1,
               {"duplicate 'camera' block", "line 1, column 1"});
-  expectError(kPreamble + "image { width 4 height 3 }", 3, 1,
+  expectError(kErrorPreamble + "image { width 4 height 3 }", 3, 1,
               {"duplicate 'image' block", "line 2, column 1"});
-  expectError(kPreamble + "environment { }\nenvironment { }", 4, 1,
+  expectError(kErrorPreamble + "environment { }\nenvironment { }", 4, 1,
               {"duplicate 'environment' block", "line 3, column 1"});
-  expectError(kPreamble + "sampling { }\n  sampling { }", 4, 3, {"duplicate 'sampling' block"});
+  expectError(kErrorPreamble + "sampling { }\n  sampling { }", 4, 3, {"duplicate 'sampling' block"});
 }
 
 TEST(SceneErrors, MalformedMaterialName) {
@@ -98,7 +98,7 @@ TEST(SceneErrors, MalformedMaterialName) {
 }
 
 TEST(SceneErrors, DuplicateMaterialName) {
-  expectError(kPreamble + "material red { color 1 0 0 }\nmaterial red { color 1 0 0 }", 4, 10,
+  expectError(kErrorPreamble + "material red { color 1 0 0 }\nmaterial red { color 1 0 0 }", 4, 10,
               {"material 'red' is already defined at line 3, column 10"});
 }
 
@@ -171,7 +171,7 @@ TEST(SceneErrors, SurfacesThatSendOnMoreLightThanReachesThem) {
                   {"'reflect' + 'transmit' must be at most 1", "found 0.5 + 0.6"});
   // Inherited from a material: reported where this block adds the excess.
   const std::string glassSphere = "sphere { center 0 0 0 radius 1 surface glass { reflect 0.2 } }";
-  expectError(kPreamble + "material glass { transmit 0.9 }\n" + glassSphere, 4,
+  expectError(kErrorPreamble + "material glass { transmit 0.9 }\n" + glassSphere, 4,
               static_cast<int>(glassSphere.find("0.2")) + 1, {"found 0.2 + 0.9"});
 }
 
@@ -220,12 +220,12 @@ TEST(SceneErrors, CameraRanges) {
 }
 
 TEST(SceneErrors, IntegerParameters) {
-  expectError(kPreamble + "environment { max_depth 65 }", 3, 25,
+  expectError(kErrorPreamble + "environment { max_depth 65 }", 3, 25,
               {"'max_depth' must be a whole number in [0, 64], found '65'"});
-  expectError(kPreamble + "sampling { samples 0 }", 3, 20,
+  expectError(kErrorPreamble + "sampling { samples 0 }", 3, 20,
               {"'samples' must be a whole number in [1, 4096], found '0'"});
-  expectError(kPreamble + "sampling { samples 4097 }", 3, 20, {"[1, 4096]"});
-  expectError(kPreamble + "sampling { drt 65 }", 3, 16,
+  expectError(kErrorPreamble + "sampling { samples 4097 }", 3, 20, {"[1, 4096]"});
+  expectError(kErrorPreamble + "sampling { drt 65 }", 3, 16,
               {"'drt' must be a whole number in [1, 64]"});
 }
 
@@ -303,7 +303,7 @@ TEST(SceneErrors, MissingOpeningBrace) {
 
 TEST(SceneErrors, UnexpectedEndOfFile) {
   expectError(
-      kPreamble + "sphere { center 0 0 0\n   radius 1  \n# the end\n", 4, 12,
+      kErrorPreamble + "sphere { center 0 0 0\n   radius 1  \n# the end\n", 4, 12,
       {"unexpected end of file", "'sphere' block opened at line 3, column 8", "no closing '}'"});
   expectBodyError("sphere { center 0 0", 20, {"needs 3 numbers", "the end of the file"});
 }
@@ -311,11 +311,11 @@ TEST(SceneErrors, UnexpectedEndOfFile) {
 TEST(SceneErrors, LexicalErrorsCarryTheFileName) {
   expectBodyError("sphere { center 0 0 0 radius 1 surface { color 1; } }", 48,
                   {"malformed number '1;'"});
-  expectError(kPreamble + "image { output \"abc }", 3, 16, {"unterminated string"});
+  expectError(kErrorPreamble + "image { output \"abc }", 3, 16, {"unterminated string"});
 }
 
 TEST(SceneErrors, FormatShowsTheLineAndACaret) {
-  const InputError error = errorOf(kPreamble + "  sphere { center 0 0 0 radius -1 }");
+  const InputError error = errorOf(kErrorPreamble + "  sphere { center 0 0 0 radius -1 }");
   EXPECT_EQ(error.format(),
             "bad.scene:3:32: error: 'radius' must be in (0, 1e+09], found -1\n"
             "    sphere { center 0 0 0 radius -1 }\n"
@@ -326,7 +326,7 @@ TEST(SceneErrors, LongLinesAndTokensAreShownCutAroundTheCulprit) {
   const std::string padding(5000, ' ');
   const std::string name(3000, 'x');
   const InputError error =
-      errorOf(kPreamble + "sphere {" + padding + name + " radius 1 }" + padding + "# end");
+      errorOf(kErrorPreamble + "sphere {" + padding + name + " radius 1 }" + padding + "# end");
   const std::string text = error.format();
   EXPECT_LT(text.size(), 600u) << text;
   EXPECT_NE(text.find("unknown parameter 'xxxxxxxxxx"), std::string::npos) << text;

@@ -10,7 +10,7 @@
 namespace prt {
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kBoxInf = std::numeric_limits<double>::infinity();
 
 // A direction with some components exactly +0 or -0 (rays parallel to slabs) or tiny now and
 // then.
@@ -34,7 +34,7 @@ Vec3 randomOrigin(Rng& rng, const Bounds& b) {
     } else if (u < 0.3) {
       o[a] = b.hi[a];
     } else if (u < 0.35) {
-      o[a] = std::nextafter(b.hi[a], kInf);
+      o[a] = std::nextafter(b.hi[a], kBoxInf);
     } else if (u < 0.6) {
       o[a] = b.lo[a] + rng.uniform() * (b.hi[a] - b.lo[a]);
     } else {
@@ -86,7 +86,7 @@ void checkRandomRays(double scale, uint64_t seed) {
     const Ray ray{randomOrigin(rng, box[i % 4]), randomDirection(rng)};
     const RayQuery q(ray);
     const double tMin = rng.uniform() < 0.5 ? 0.0 : rng.uniform() * scale;
-    const double tMax = rng.uniform() < 0.5 ? kInf : rng.uniform() * 20 * scale;
+    const double tMax = rng.uniform() < 0.5 ? kBoxInf : rng.uniform() * 20 * scale;
     Float4 entry;
     const int mask = quad.hits(QuadRay(ray, floatAbove(maxCoordinate)), floatBelow(tMin),
                                floatAbove(tMax), entry);
@@ -133,11 +133,11 @@ TEST(BoxQuadTest, GrazingRaysAlongFacesAndEdges) {
   for (const Ray& ray : rays) {
     const RayQuery q(ray);
     Float4 entry;
-    const int mask = quad.hits(QuadRay(ray, 2), 0, floatAbove(kInf), entry);
-    if (hitsBounds(b, q, 0, kInf)) {
+    const int mask = quad.hits(QuadRay(ray, 2), 0, floatAbove(kBoxInf), entry);
+    if (hitsBounds(b, q, 0, kBoxInf)) {
       EXPECT_EQ(mask & 1, 1);
     }
-    if (hitsBounds(Bounds{{1, 0, 0}, {2, 1, 1}}, q, 0, kInf)) {
+    if (hitsBounds(Bounds{{1, 0, 0}, {2, 1, 1}}, q, 0, kBoxInf)) {
       EXPECT_EQ(mask & 4, 4);
     }
     EXPECT_EQ(mask & 10, 0);  // the empty lanes are never hit
@@ -151,8 +151,8 @@ TEST(BoxQuadTest, OutOfRangeCoordinatesOnlyLoosenTheTest) {
   quad.set(0, huge);
   const Ray ray{{1.5e300, 0.5, -5}, {0, 0, 1}};
   Float4 entry;
-  EXPECT_EQ(quad.hits(QuadRay(ray, floatAbove(2e300)), 0, floatAbove(kInf), entry) & 1, 1);
-  EXPECT_TRUE(hitsBounds(huge, RayQuery(ray), 0, kInf));
+  EXPECT_EQ(quad.hits(QuadRay(ray, floatAbove(2e300)), 0, floatAbove(kBoxInf), entry) & 1, 1);
+  EXPECT_TRUE(hitsBounds(huge, RayQuery(ray), 0, kBoxInf));
 }
 
 TEST(BoxQuadTest, FloatRoundingIsOutwards) {
@@ -163,7 +163,7 @@ TEST(BoxQuadTest, FloatRoundingIsOutwards) {
     EXPECT_GE(static_cast<double>(floatAbove(x)), x);
     EXPECT_LT(std::abs(floatAbove(x) - x), std::abs(x) * 1e-6);
   }
-  EXPECT_EQ(floatAbove(kInf), std::numeric_limits<float>::infinity());
+  EXPECT_EQ(floatAbove(kBoxInf), std::numeric_limits<float>::infinity());
   EXPECT_EQ(floatBelow(0.0), 0.0f);
   EXPECT_GE(static_cast<double>(floatAbove(1e300)), 1e300);
 }
@@ -197,7 +197,7 @@ TEST(BoxOctTest, GivesWhatTwoQuadsGiveBitForBit) {
       const Ray ray{randomOrigin(rng, box[i % 4]), randomDirection(rng)};
       const QuadRay q(ray, floatAbove(maxCoordinate));
       const float tMin = floatBelow(rng.uniform() < 0.5 ? 0.0 : rng.uniform() * scale);
-      const float tMax = floatAbove(rng.uniform() < 0.5 ? kInf : rng.uniform() * 20 * scale);
+      const float tMax = floatAbove(rng.uniform() < 0.5 ? kBoxInf : rng.uniform() * 20 * scale);
       Float4 low, high;
       const int expected =
           quads[0].hits(q, tMin, tMax, low) | quads[1].hits(q, tMin, tMax, high) << 4;

@@ -55,7 +55,7 @@ std::shared_ptr<TriangleMesh> randomSoup(int count, uint64_t seed) {
   return mesh;
 }
 
-Ray randomRay(Rng& rng) {
+Ray randomBvhRay(Rng& rng) {
   const Vec3 o(rng.uniform() * 30 - 15, rng.uniform() * 30 - 15, rng.uniform() * 30 - 15);
   const Vec3 d(rng.uniform() - 0.5, rng.uniform() - 0.5, rng.uniform() - 0.5);
   return {o, normalize(d)};
@@ -94,7 +94,7 @@ TEST(MeshBvhTest, NearestMatchesEveryTriangleTriedInTurn) {
   Rng rng(2);
   int hits = 0;
   for (int i = 0; i < 2000; ++i) {
-    Ray ray = randomRay(rng);
+    Ray ray = randomBvhRay(rng);
     if (i % 10 == 0) {  // straight at triangle 7's centre
       const auto& t = soup->triangles[7];
       const Vec3 centre =
@@ -189,7 +189,7 @@ TEST(MeshBvhTest, SmallMeshesMatchEveryTriangleTriedInTurn) {
     EXPECT_EQ(mesh.triangleCount(), static_cast<size_t>(count));
     Rng rng(static_cast<uint64_t>(count));
     for (int i = 0; i < 300; ++i) {
-      Ray ray = randomRay(rng);
+      Ray ray = randomBvhRay(rng);
       const auto& aim = soup->triangles[static_cast<size_t>(i % count)];
       ray.direction = normalize(soup->vertices[aim[i % 3]] * 0.5 +
                                 soup->vertices[aim[(i + 1) % 3]] * 0.5 - ray.origin);

@@ -67,7 +67,7 @@ int countCrossings(const Object& o, const Ray& ray, double tMin, double tMax) {
   return crossingsOf(o, ray, tMin, tMax).count;
 }
 
-Ray randomRay(Rng& rng) {
+Ray randomMeshRay(Rng& rng) {
   const Vec3 o(rng.uniform() * 8 - 4, rng.uniform() * 3 + 0.05, rng.uniform() * 8 - 5);
   const Vec3 target(rng.uniform() * 4 - 2, rng.uniform() * 2, rng.uniform() * 3 - 1);
   return {o, normalize(target - o)};
@@ -81,7 +81,7 @@ TEST(MeshWorldTest, NearestHitIsTheNearestOfEveryObject) {
   Rng rng(4);
   int meshHits = 0;
   for (int i = 0; i < 3000; ++i) {
-    const Ray ray = randomRay(rng);
+    const Ray ray = randomMeshRay(rng);
     double best = std::numeric_limits<double>::infinity();
     int bestObject = -1;
     for (uint32_t k = 0; k < scene.objects.size(); ++k) {
@@ -111,7 +111,7 @@ TEST(MeshWorldTest, ShadowRaysAreDimmedOncePerTriangleCrossed) {
   Rng rng(8);
   int dimmed = 0;
   for (int i = 0; i < 3000; ++i) {
-    const Ray ray = randomRay(rng);
+    const Ray ray = randomMeshRay(rng);
     const double distance = 1 + rng.uniform() * 8;
     double expected = 1;
     for (const Object& o : scene.objects) {

@@ -23,7 +23,7 @@ std::vector<Bounds> randomBoxes(int count, uint64_t seed) {
   return boxes;
 }
 
-Ray randomRay(Rng& rng) {
+Ray randomQuadRay(Rng& rng) {
   const Vec3 o(rng.uniform() * 30 - 15, rng.uniform() * 30 - 15, rng.uniform() * 30 - 15);
   Vec3 d(rng.uniform() - 0.5, rng.uniform() - 0.5, rng.uniform() - 0.5);
   if (rng.uniform() < 0.1) d.y = 0;  // parallel to the y slabs
@@ -38,7 +38,7 @@ TEST(QuadBvhTest, VisitsEveryItemWhoseBoxIsHit) {
     const QuadBvh bvh(boxes);
     Rng rng(3);
     for (int i = 0; i < 500; ++i) {
-      const Ray ray = randomRay(rng);
+      const Ray ray = randomQuadRay(rng);
       const RayQuery q(ray);
       const double tMax = rng.uniform() < 0.5 ? 1e30 : rng.uniform() * 20;
       for (const bool ordered : {false, true}) {
@@ -72,7 +72,7 @@ TEST(QuadBvhTest, ShrinkingSearchFindsNearestAndStops) {
   const QuadBvh bvh(boxes);
   Rng rng(4);
   for (int i = 0; i < 1000; ++i) {
-    const RayQuery q(randomRay(rng));
+    const RayQuery q(randomQuadRay(rng));
     double expected = 1e30;
     for (const Bounds& b : boxes) {
       // Entry distance by bisection-free brute force: the smallest t hitsBounds accepts is
@@ -169,7 +169,7 @@ TEST(QuadBvhTest, BlocksHoldEveryItemOnceAndAreVisitedWhenHit) {
     for (int n : seen) EXPECT_EQ(n, 1);
     Rng rng(9);
     for (int i = 0; i < 300; ++i) {
-      const Ray ray = randomRay(rng);
+      const Ray ray = randomQuadRay(rng);
       const RayQuery q(ray);
       const double tMax = rng.uniform() < 0.5 ? 1e30 : rng.uniform() * 20;
       for (const bool ordered : {false, true}) {

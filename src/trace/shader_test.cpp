@@ -10,7 +10,7 @@
 namespace prt {
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kShaderInf = std::numeric_limits<double>::infinity();
 
 // A floor plane through the origin facing +y with the given material, plus extra objects.
 Scene floorScene(const Material& m) {

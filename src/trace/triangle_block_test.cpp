@@ -11,7 +11,7 @@
 namespace prt {
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kBlockInf = std::numeric_limits<double>::infinity();
 
 Vec3 randomPoint(Rng& rng, double scale) {
   return scale * Vec3(rng.uniform() - 0.5, rng.uniform() - 0.5, rng.uniform() - 0.5);
@@ -56,7 +56,7 @@ TEST(TriangleBlockTest, EveryLaneIsTheScalarTestBitForBit) {
       block.set(lane, pts[lane][0], pts[lane][1], pts[lane][2]);
     }
     double d[kBlockLanes];
-    const double lo = i % 2 ? 0.0 : -kInf, hi = i % 4 < 2 ? kInf : 2 * scale;
+    const double lo = i % 2 ? 0.0 : -kBlockInf, hi = i % 4 < 2 ? kBlockInf : 2 * scale;
     const bool toHi = i % 16 < 8;
     // Told every lane, or only the used ones (lanes past those may then be left unset).
     const int told = i % 3 == 0 ? kBlockLanes : used;

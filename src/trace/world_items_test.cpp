@@ -13,7 +13,7 @@
 namespace prt {
 namespace {
 
-Ray randomRay(Rng& rng) {
+Ray randomItemsRay(Rng& rng) {
   auto coordinate = [&] { return 8 * rng.uniform() - 4; };
   const Vec3 origin(coordinate(), coordinate(), coordinate());
   const Vec3 towards(rng.uniform() - 0.5, rng.uniform() - 0.5, rng.uniform() - 0.5);
@@ -26,7 +26,7 @@ void expectAgreesWithIntersect(const WorldItem& item, const ShapeT& shape) {
   Rng rng(7);
   int hits = 0;
   for (int i = 0; i < 20000; ++i) {
-    const Ray ray = randomRay(rng);
+    const Ray ray = randomItemsRay(rng);
     const double tMin = rng.uniform() < 0.5 ? 0.0 : rng.uniform();
     const Crossings all = intersect(shape, ray, tMin, INFINITY);
     uint32_t triangle = 0;
