@@ -34,6 +34,7 @@ struct ExportOptions {
 
 int runExport(const ExportOptions& o) {
   Scene scene = loadScene(o.scene);
+  scene.environment.integrator = Integrator::hall;  // what POV-Ray's model can be compared with
   // As `prt render` resolves them: the scene's sampling, then --case, then --spp and --drt.
   RenderSettings settings{scene.sampling.samplesPerPixel, scene.sampling.drtRate};
   if (!o.testCase.empty()) settings = *paperTestCase(o.testCase);

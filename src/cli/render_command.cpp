@@ -64,6 +64,9 @@ RenderSettings resolveSettings(const RenderOptions& o, Scene& scene) {
   if (!o.testCase.empty()) s = *paperTestCase(o.testCase);
   if (o.spp) s.samplesPerPixel = *o.spp;
   if (o.drt) s.drtRate = *o.drt;
+  if (!o.integrator.empty()) {
+    scene.environment.integrator = o.integrator == "path" ? Integrator::path : Integrator::hall;
+  }
   applyImageSize(scene, o.width, o.height);
   if (!o.output.empty()) scene.image.output = o.output;
   const uint64_t pixels = static_cast<uint64_t>(scene.image.width) * scene.image.height;
@@ -419,6 +422,13 @@ Action addRenderCommand(CLI::App& app, const std::string& commandLine) {
                   "Distributed ray tracing rate: rays per glossy reflection, blurry "
                   "transmission and area light at each hit (DRT)")
       ->check(CLI::Range(1, 64));
+  cmd->add_option("--integrator", o->integrator,
+                  "hall: the paper's ray tracer (Whitted, Hall's model); path: the physically "
+                  "based path tracer (next-event estimation, multiple importance sampling, "
+                  "glTF's metallic-roughness materials). Default: the scene's own (environment "
+                  "{ integrator ... }): path for a model file rendered directly, hall for a "
+                  ".scene file that does not say")
+      ->check(CLI::IsMember({"hall", "path"}));
   cmd->add_option("--case", o->testCase,
                   "The paper's test cases: A (DRT 1, SS 8), B (1, 16), C (2, 8), D (2, 16); "
                   "--spp and --drt override")

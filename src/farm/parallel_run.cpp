@@ -129,9 +129,9 @@ Image ownershipImage(const Image& image, const std::vector<int16_t>& owner) {
   Image out(image.width(), image.height());
   for (size_t p = 0; p < owner.size(); ++p) {
     const Color c = image.at(p);
-    const double luminance = std::clamp(0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z, 0.0, 1.0);
+    const double bright = std::clamp(luminance(c), 0.0, 1.0);
     const Color base = owner[p] < 0 ? Color(0) : kPalette[owner[p] % 10];
-    out.set(p, base * (0.45 + 0.55 * std::sqrt(luminance)));
+    out.set(p, base * (0.45 + 0.55 * std::sqrt(bright)));
   }
   return out;
 }

@@ -13,7 +13,7 @@ namespace prt {
 namespace {
 
 constexpr uint32_t kTag = 0x41545250;  // "PRTA"
-constexpr uint32_t kVersion = 2;  // 2: the rig
+constexpr uint32_t kVersion = 3;  // 2: the rig; 3: the path tracer's surface
 
 bool isShippedMeshBlock(const Object& object) {
   const auto* m = std::get_if<MeshShape>(&object.shape);
@@ -40,6 +40,11 @@ void putMaterial(ByteWriter& w, const Material& m, int32_t textureOffset) {
   }
   putTextureRef(w, m.colorTexture, textureOffset);
   putTextureRef(w, m.emissionTexture, textureOffset);
+  w.pod(static_cast<uint8_t>(m.pbr.given));
+  for (const double v : {m.pbr.roughness, m.pbr.transmission, m.pbr.ior, m.pbr.specularLevel,
+                         m.pbr.coverage}) {
+    w.pod(v);
+  }
 }
 
 class Reader {
@@ -90,6 +95,18 @@ class Reader {
     }
     m.colorTexture = textureRef(textures);
     m.emissionTexture = textureRef(textures);
+    const auto given = in_.pod<uint8_t>();
+    if (given > 1) in_.fail("a material no scene can hold");
+    m.pbr.given = given == 1;
+    PbrSurface& p = m.pbr;
+    for (double* f : {&p.roughness, &p.transmission, &p.ior, &p.specularLevel, &p.coverage}) {
+      *f = finite();
+    }
+    auto unit = [](double v) { return v >= 0 && v <= 1; };
+    if (!unit(p.roughness) || !unit(p.transmission) || !(p.ior >= 1 && p.ior <= 10) ||
+        !unit(p.specularLevel) || !unit(p.coverage)) {
+      in_.fail("a material no scene can hold");
+    }
     return m;
   }
 

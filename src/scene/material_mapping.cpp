@@ -83,6 +83,12 @@ Material mapPbrMaterial(const PbrMaterialInputs& in) {
     m.transmissivity = std::min(1 - cover, 1 - m.reflectivity);
     m.ior = 1;
   }
+  // The path tracer takes the model as it is (trace/bsdf.h).
+  m.pbr.given = true;
+  m.pbr.roughness = roughness;
+  m.pbr.transmission = clamp01(in.transmission);
+  m.pbr.ior = ior;
+  m.pbr.coverage = cover;
   m.diffuse = (1 - metallic) * (1 - transmission) * cover;
   m.ambient = m.diffuse;
   m.specular *= cover;

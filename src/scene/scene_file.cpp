@@ -158,7 +158,8 @@ std::string modelSceneText(const std::string& path, const ImportedModel& model,
     return q + "\"";
   };
   text += quoted(file.stem().string() + ".png") + " }\n";
-  text += "environment { background 0.05 0.05 0.05 ambient 0.05 0.05 0.05 }\n";
+  // Blender's default world grey; a model file is path-traced, as the tool that made it renders.
+  text += "environment { background 0.05 0.05 0.05 ambient 0.05 0.05 0.05 integrator path }\n";
   text += "import { file " + quoted(file.string()) + " }\n";
   return text;
 }

@@ -293,12 +293,25 @@ class SceneParser {
   void environment(const Token& keyword) {
     once(keyword, environment_);
     Environment& environment = scene_.environment;
-    BlockReader block(in_, keyword, "environment", {"background", "ambient", "max_depth"});
+    BlockReader block(in_, keyword, "environment",
+                      {"background", "ambient", "max_depth", "integrator", "max_bounces"});
     while (const Token* param = block.next()) {
       const std::string& name = param->text;
       if (name == "background") environment.background = readColor(in_, name);
       if (name == "ambient") environment.ambient = readColor(in_, name);
       if (name == "max_depth") environment.maxDepth = readInteger(in_, name, 0, 64);
+      if (name == "max_bounces") environment.maxBounces = readInteger(in_, name, 0, 1024);
+      if (name == "integrator") {
+        const Token& value = in_.next();
+        if (value.kind == TokenKind::Word && value.text == "hall") {
+          environment.integrator = Integrator::hall;
+        } else if (value.kind == TokenKind::Word && value.text == "path") {
+          environment.integrator = Integrator::path;
+        } else {
+          in_.fail(value, "'integrator' must be hall (the paper's ray tracer) or path (the "
+                          "physically based path tracer), found " + describe(value));
+        }
+      }
     }
   }
 

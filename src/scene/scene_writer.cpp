@@ -106,6 +106,17 @@ std::string surfaceFields(const Material& material) {
                           defaults.translucencyDegrees);
   out.numberUnlessDefault("metallic", material.metallic, defaults.metallic);
   if (!sameBits(material.emission, defaults.emission)) out.vector("emission", material.emission);
+  const PbrSurface& pbr = material.pbr;
+  if (pbr.given) {
+    out.number("roughness", pbr.roughness);
+    out.number("transmission", pbr.transmission);
+    out.number("specular_level", pbr.specularLevel);
+    out.number("coverage", pbr.coverage);
+  }
+  // `ior` above sets both indices; the path tracer's own is written when it differs from what
+  // reading that back gives.
+  const double readIor = sameBits(material.ior, defaults.ior) ? defaults.pbr.ior : material.ior;
+  if (!sameBits(pbr.ior, readIor)) out.number("pbr_ior", pbr.ior);
   return out.take();
 }
 
@@ -226,6 +237,10 @@ std::string writeScene(const Scene& scene) {
   out.vector("background", scene.environment.background);
   out.vector("ambient", scene.environment.ambient);
   out.integer("max_depth", scene.environment.maxDepth);
+  if (scene.environment.integrator == Integrator::path) out.raw(" integrator path");
+  if (scene.environment.maxBounces != Environment{}.maxBounces) {
+    out.integer("max_bounces", scene.environment.maxBounces);
+  }
   out.close();
 
   out.open("sampling");

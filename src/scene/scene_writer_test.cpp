@@ -142,6 +142,25 @@ TEST(SceneWriter, KeepsNegativeZeros) {
   expectSameBits(back.camera.lookAt.z, -0.0, "look_at z");
 }
 
+TEST(SceneWriter, RoundTripsThePathTracersSettingsAndSurfaces) {
+  Scene scene = awkwardScene();
+  scene.environment.integrator = Integrator::path;
+  scene.environment.maxBounces = 3;
+  Material& m = scene.objects[1].material;
+  m.pbr.given = true;
+  m.pbr.roughness = 1.0 / 3.0;
+  m.pbr.transmission = 0.25;
+  m.pbr.ior = 1.45;
+  m.pbr.specularLevel = 0.1;
+  m.pbr.coverage = 0.5;
+  const Scene back = roundTrip(scene);
+  expectSameScene(back, scene);
+  EXPECT_EQ(back.environment.integrator, Integrator::path);
+  EXPECT_EQ(back.environment.maxBounces, 3);
+  EXPECT_EQ(back.objects[1].material.pbr, m.pbr);
+  EXPECT_EQ(back.objects[0].material.pbr, scene.objects[0].material.pbr);  // ior's own
+}
+
 TEST(SceneWriter, RoundTripsTheDefaultScene) {
   const Scene scene;
   expectSameScene(roundTrip(scene), scene);

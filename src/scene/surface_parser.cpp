@@ -29,12 +29,27 @@ void readSurfaceBlock(TokenStream& in, const Token& keyword, const std::string& 
                       Material& material) {
   BlockReader block(in, keyword, title,
                     {"color", "ambient", "diffuse", "specular", "phong", "reflect", "transmit",
-                     "ior", "gloss", "translucency", "metallic", "emission"});
+                     "ior", "gloss", "translucency", "metallic", "emission", "base_color",
+                     "roughness", "transmission", "pbr_ior", "specular_level", "coverage"});
   const Range weight = Range::closed(0, 1);
   while (const Token* param = block.next()) {
     const std::string& name = param->text;
-    if (name == "color") {
+    if (name == "color" || name == "base_color") {
       material.color = readColor(in, name);
+    } else if (name == "roughness") {
+      material.pbr.roughness = readNumber(in, name, weight);
+      material.pbr.given = true;
+    } else if (name == "transmission") {
+      material.pbr.transmission = readNumber(in, name, weight);
+      material.pbr.given = true;
+    } else if (name == "pbr_ior") {
+      material.pbr.ior = readNumber(in, name, Range::closed(1, 10));
+    } else if (name == "specular_level") {
+      material.pbr.specularLevel = readNumber(in, name, weight);
+      material.pbr.given = true;
+    } else if (name == "coverage") {
+      material.pbr.coverage = readNumber(in, name, weight);
+      material.pbr.given = true;
     } else if (name == "ambient") {
       material.ambient = readNumber(in, name, weight);
     } else if (name == "diffuse") {
@@ -50,6 +65,7 @@ void readSurfaceBlock(TokenStream& in, const Token& keyword, const std::string& 
     } else if (name == "ior") {
       // Above 10 no real material exists; such a value is almost surely a typo.
       material.ior = readNumber(in, name, Range::closed(1, 10));
+      material.pbr.ior = material.ior;
     } else if (name == "gloss") {
       material.glossDegrees = readNumber(in, name, Range::closedOpen(0, 90));
     } else if (name == "metallic") {

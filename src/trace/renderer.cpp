@@ -21,7 +21,11 @@ Renderer::Renderer(const World& world, const RenderSettings& settings)
       height_(world.scene().image.height),
       camera_(world.scene().camera, width_, height_),
       view_(camera_, width_, height_, world.itemBounds()),
-      shader_(world, settings) {}
+      shader_(world, settings) {
+  if (world.scene().environment.integrator == Integrator::path) {
+    path_ = std::make_unique<const PathTracer>(world);
+  }
+}
 
 Color Renderer::renderPixel(uint64_t pixelIndex, uint64_t& rays) const {
   const int x = static_cast<int>(pixelIndex % static_cast<uint64_t>(width_));
@@ -39,6 +43,15 @@ Color Renderer::renderPixel(uint64_t pixelIndex, uint64_t& rays) const {
       stratifiedSample(s, grid, jx, jy, dx, dy);
     }
     const Ray ray = camera_.generateRay(x + dx, y + dy);
+    if (path_) {
+      const Color c = path_->radiance(ray, candidates ? &*candidates : nullptr, rng.child(1), rays);
+      if (isFinite(c)) {
+        sum += c;
+      } else {
+        nonFinite_.fetch_add(1, std::memory_order_relaxed);
+      }
+      continue;
+    }
     sum += candidates ? shader_.traceAmong(*candidates, ray, rng.child(1), rays)
                       : shader_.trace(ray, 0, rng.child(1), rays);
   }

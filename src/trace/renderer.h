@@ -8,11 +8,13 @@
 #include <atomic>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <vector>
 
 #include "core/task_set.h"
 #include "image/image.h"
 #include "trace/camera.h"
+#include "trace/path_tracer.h"
 #include "trace/shader.h"
 #include "trace/view_lists.h"
 
@@ -27,8 +29,12 @@ class Renderer {
   uint64_t pixelCount() const { return static_cast<uint64_t>(width_) * height_; }
   const RenderSettings& settings() const { return settings_; }
 
-  // The pixel at index y * width + x; adds the rays it traced to `rays`.
+  // The pixel at index y * width + x; adds the rays it traced to `rays`. A sample whose value
+  // is not finite (which only the path tracer could give) counts as black, and is counted.
   Color renderPixel(uint64_t pixelIndex, uint64_t& rays) const;
+  // The samples renderPixel found not finite so far, over every thread.
+  uint64_t nonFiniteSamples() const { return nonFinite_.load(std::memory_order_relaxed); }
+  Integrator integrator() const { return path_ ? Integrator::path : Integrator::hall; }
 
  private:
   const World& world_;
@@ -37,6 +43,8 @@ class Renderer {
   PinholeCamera camera_;
   ViewLists view_;
   Shader shader_;
+  std::unique_ptr<const PathTracer> path_;  // when the scene asks for the path tracer
+  mutable std::atomic<uint64_t> nonFinite_{0};
 };
 
 // A tile just rendered, for progress reports: its pixels, the wall seconds its thread spent

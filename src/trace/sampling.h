@@ -2,6 +2,7 @@
 // Sampling helpers for distributed ray tracing and supersampling. Pure functions of their
 // random inputs, so results depend only on the counter-based Rng that feeds them.
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -9,6 +10,12 @@
 #include "core/vec3.h"
 
 namespace prt {
+
+// How far spawned rays start off the surface they leave, scaled to the hit's magnitude so
+// large scenes do not self-intersect and small ones do not skip thin gaps.
+inline double surfaceEpsilon(const Vec3& p) {
+  return 1e-9 * std::max(1.0, maxComponent(Vec3(std::abs(p.x), std::abs(p.y), std::abs(p.z))));
+}
 
 // Stratum i of n, jittered by u in [0, 1): (i + u) / n. With a single stratum that is u
 // itself, bit for bit, and the division (slow) is skipped.

@@ -32,16 +32,36 @@ struct ImageSpec {
   std::string output = "out.png";  // extension picks the format: .png, .ppm, .pfm
 };
 
+// How pixels are computed: the paper's Whitted ray tracing with Hall's model (trace/shader.h),
+// or the physically based path tracer (trace/path_tracer.h).
+enum class Integrator : uint8_t { hall, path };
+
 struct Environment {
-  Color background{0, 0, 0};   // colour of rays that hit nothing
+  Color background{0, 0, 0};   // colour of rays that hit nothing (the path tracer: radiance)
   Color ambient{0.1, 0.1, 0.1};  // ambient light colour (Hall's I_a)
   int maxDepth = 5;            // maximum recursion depth of reflection/transmission rays
+  Integrator integrator = Integrator::hall;
+  int maxBounces = 12;  // the path tracer's longest path, in bounces (Cycles' default)
 };
 
 // Default sampling of the scene; the command line overrides it.
 struct Sampling {
   int samplesPerPixel = 1;  // SS: stratified, jittered samples per pixel
   int drtRate = 1;          // DRT: rays per glossy reflection, blurry transmission, area light
+};
+
+// What the path tracer needs of a surface beyond the fields it shares with Hall's model (the
+// colour as the base colour, `metallic`, `emission` and the textures): glTF 2.0's
+// metallic-roughness model (trace/bsdf.h). `given` false: derived from Hall's parameters by
+// pbrFromHall (trace/bsdf_inputs.h), the rule for scenes written for the paper's renderer.
+struct PbrSurface {
+  bool given = false;
+  double roughness = 0.5;     // in [0, 1]
+  double transmission = 0;    // share that is glass, in [0, 1]
+  double ior = 1.5;           // in [1, 10]
+  double specularLevel = 0.5;  // Blender's "specular": F0 = 0.08 * level for dielectrics
+  double coverage = 1;        // alpha: 0 absent (rays pass straight through) to 1, in [0, 1]
+  bool operator==(const PbrSurface&) const = default;
 };
 
 // The paper's surface: Hall's simplified model. All weights are in [0, 1] unless stated.
@@ -64,6 +84,7 @@ struct Material {
                             // lights nothing else: it is not a light source)
   TextureRef colorTexture;     // multiplies `color` (and a mesh's vertex colours)
   TextureRef emissionTexture;  // multiplies `emission`
+  PbrSurface pbr;              // the path tracer's
 
   bool operator==(const Material&) const = default;
 };

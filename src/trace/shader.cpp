@@ -14,12 +14,6 @@
 namespace prt {
 namespace {
 
-// Offsets spawned rays off the surface they leave, scaled to the hit's magnitude so large
-// scenes do not self-intersect and small ones do not skip thin gaps.
-double surfaceEpsilon(const Vec3& p) {
-  return 1e-9 * std::max(1.0, maxComponent(Vec3(std::abs(p.x), std::abs(p.y), std::abs(p.z))));
-}
-
 constexpr double kDegrees = std::numbers::pi / 180.0;
 
 // e with 2^e <= x < 2^(e + 1), for finite x > 0 (a subnormal reports -1023, which is lower:

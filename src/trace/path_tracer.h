@@ -1,0 +1,67 @@
+#pragma once
+// PathTracer: the physically based integrator. Unidirectional path tracing: from the camera a
+// path bounces off surfaces, each bounce's direction drawn from the surface's BSDF
+// (trace/bsdf.h); at every surface that is not a perfect mirror or clear glass, one emitter is
+// chosen (trace/emitters.h) and a shadow ray sent to it (next-event estimation). Where both
+// could have found the same light — an emissive triangle, met by a bounce or aimed at — the two
+// estimates are weighed by multiple importance sampling with the power heuristic (Veach 1997).
+// Rays that leave the scene take the environment's colour as radiance. After three bounces a
+// path whose throughput has fallen below 1 survives with that probability (Russian roulette,
+// its survivors weighted up to keep the mean); every path ends after the environment's
+// max_bounces.
+//
+// Shadow rays are stopped by any surface but the transparent part of one (coverage < 1): the
+// glass of a path-traced scene lets light through by refraction alone, as a real one does.
+// Random numbers: one counter-based stream per sample (core/rng.h), a child stream per bounce,
+// so that a pixel's value depends only on the pixel and the sample, on any machine.
+// Reads only immutable data; one PathTracer may be used by many threads at once.
+
+#include <cstdint>
+#include <span>
+
+#include "core/rng.h"
+#include "trace/bsdf.h"
+#include "trace/emitters.h"
+#include "trace/sampling.h"
+#include "trace/world.h"
+
+namespace prt {
+
+// The path tracer's surface for a material written for the paper's renderer (pbr.given
+// false): base colour = colour; metallic = the larger of `metallic` and `reflect` (a mirror is
+// a metal of the surface's colour); roughness = from the gloss cone for a reflecting or
+// refracting surface (0 for a sharp one), from the Phong exponent for one with a highlight,
+// 1 otherwise; transmission = `transmit` when it refracts (ior > 1), and coverage 1 - `transmit`
+// when it does not (light passes straight through); ior = the material's where it refracts,
+// 1.5 otherwise. The inverse of the mapping of glTF's materials onto Hall's (material_mapping).
+PbrSurface pbrFromHall(const Material& m);
+
+class PathTracer {
+ public:
+  explicit PathTracer(const World& world);
+
+  // Radiance arriving along the camera ray; with `candidates`, the first hit is looked for
+  // among them (ViewLists). `rays` counts every ray traced, shadow rays included.
+  Color radiance(const Ray& ray, const std::span<const uint32_t>* candidates, Rng rng,
+                 uint64_t& rays) const;
+
+  const Emitters& emitters() const { return emitters_; }
+
+ private:
+  struct Surface {
+    BsdfInputs bsdf;
+    double coverage = 1;
+    bool attributes = false;  // texture coordinates or vertex colours are needed
+  };
+  // Whether anything opaque lies between `origin` and `distance` along `direction`; returns the
+  // share of light that gets through the transparent parts of what lies between.
+  double visibility(const Vec3& origin, const Vec3& direction, double distance,
+                    uint64_t& rays) const;
+
+  const World& world_;
+  Emitters emitters_;
+  std::vector<Surface> surfaces_;  // per object
+  int maxBounces_;
+};
+
+}  // namespace prt

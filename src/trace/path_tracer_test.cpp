@@ -1,0 +1,129 @@
+#include "trace/path_tracer.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+
+#include "trace/renderer.h"
+
+namespace prt {
+namespace {
+
+// A ball of the given surface inside a uniform white environment, seen by the path tracer.
+Scene furnace(const Material& ball) {
+  Scene scene;
+  scene.camera.eye = Vec3(0, 0, -4);
+  scene.camera.fovDegrees = 30;
+  scene.image.width = 16;
+  scene.image.height = 16;
+  scene.environment.background = Color(1);
+  scene.environment.integrator = Integrator::path;
+  scene.objects.push_back({SphereShape{{0, 0, 0}, 1}, ball});
+  return scene;
+}
+
+Material pbr(const Color& base, double metallic, double roughness, double transmission) {
+  Material m;
+  m.color = base;
+  m.metallic = metallic;
+  m.pbr.given = true;
+  m.pbr.roughness = roughness;
+  m.pbr.transmission = transmission;
+  return m;
+}
+
+double meanOfImage(const Image& image) {
+  double sum = 0;
+  for (uint64_t p = 0; p < image.pixelCount(); ++p) sum += image.at(p).x;
+  return sum / static_cast<double>(image.pixelCount());
+}
+
+// pbrt-v4's white furnace: an object that absorbs nothing, inside a uniform environment,
+// disappears. A clear glass and a smooth white metal are deltas that lose nothing, so every
+// pixel is 1 up to rounding (and up to paths longer than max_bounces, which end black).
+TEST(PathTracerTest, WhiteFurnaceLosslessBallsVanish) {
+  for (const Material& m : {pbr(Color(1), 1, 0, 0), pbr(Color(1), 0, 0, 1)}) {
+    const World world(furnace(m));
+    const Renderer renderer(world, RenderSettings{4, 1});
+    const Image image = renderImage(renderer, 1);
+    double least = 2, most = 0;
+    for (uint64_t p = 0; p < image.pixelCount(); ++p) {
+      least = std::min(least, image.at(p).x);
+      most = std::max(most, image.at(p).x);
+    }
+    EXPECT_NEAR(most, 1.0, 1e-6);
+    // The glass's paths that bounce inside more than max_bounces times end black: a few
+    // samples at the rim.
+    EXPECT_GT(least, m.pbr.transmission > 0 ? 0.7 : 1 - 1e-6);
+    EXPECT_GT(meanOfImage(image), m.pbr.transmission > 0 ? 0.99 : 1 - 1e-6);
+  }
+}
+
+// A rough white metal or frosted glass loses only what single-scattering GGX loses (the
+// light that would bounce between microfacets), a few per cent at these roughnesses: the
+// image stays within that of the environment and never above it.
+TEST(PathTracerTest, WhiteFurnaceRoughBallsLoseLittleAndGainNothing) {
+  for (const Material& m : {pbr(Color(1), 1, 0.3, 0), pbr(Color(1), 0, 0.3, 1)}) {
+    const World world(furnace(m));
+    const Renderer renderer(world, RenderSettings{64, 1});
+    const double mean = meanOfImage(renderImage(renderer, 2));
+    EXPECT_LT(mean, 1.01);
+    EXPECT_GT(mean, 0.93);
+  }
+}
+
+// The image is a function of the pixels alone: any number of threads, any order of tasks.
+TEST(PathTracerTest, PixelsDoNotDependOnThreadsOrOrder) {
+  Scene scene = furnace(pbr(Color(0.8, 0.3, 0.2), 0, 0.5, 0));
+  scene.environment.background = Color(0.2, 0.3, 0.4);
+  Material floor = pbr(Color(0.5), 0, 0.8, 0);
+  scene.objects.push_back({PlaneShape{{0, -1, 0}, {0, 1, 0}}, floor});
+  Light sun;
+  sun.shape = DirectionalLight{normalize(Vec3(1, -2, 1))};
+  scene.lights.push_back(sun);
+  const World world(scene);
+  const Renderer renderer(world, RenderSettings{8, 1});
+  const Image one = renderImage(renderer, 1);
+  const Image two = renderImage(renderer, 2);
+  for (uint64_t p = 0; p < renderer.pixelCount(); ++p) ASSERT_EQ(one.at(p), two.at(p)) << p;
+  // Every other pixel, odd ones first, as tasks of a worker.
+  const uint64_t half = renderer.pixelCount() / 2;
+  for (const uint64_t first : {1u, 0u}) {
+    std::vector<Color> colors(half);
+    renderTasks(renderer, TaskSet::strided(first, half, 2), 2, colors);
+    for (uint64_t i = 0; i < half; ++i) {  // at the image's precision
+      const Color a = one.at(first + 2 * i), b = colors[i];
+      ASSERT_EQ(static_cast<float>(a.x), static_cast<float>(b.x)) << i;
+      ASSERT_EQ(static_cast<float>(a.y), static_cast<float>(b.y)) << i;
+      ASSERT_EQ(static_cast<float>(a.z), static_cast<float>(b.z)) << i;
+    }
+  }
+  EXPECT_EQ(renderer.nonFiniteSamples(), 0u);
+  EXPECT_GT(meanOfImage(one), 0.05);
+}
+
+// The rule for scenes written for the paper's renderer: a mirror becomes a metal, a glass a
+// glass, a matte surface a rough dielectric.
+TEST(PathTracerTest, HallMaterialsMapToTheModelByTheWrittenRule) {
+  Material matte;
+  EXPECT_EQ(pbrFromHall(matte).roughness, 1.0);
+  Material mirror;
+  mirror.reflectivity = 0.8;
+  EXPECT_EQ(pbrFromHall(mirror).roughness, 0.0);
+  Material glass;
+  glass.transmissivity = 0.9;
+  glass.ior = 1.5;
+  const PbrSurface g = pbrFromHall(glass);
+  EXPECT_EQ(g.transmission, 0.9);
+  EXPECT_EQ(g.ior, 1.5);
+  EXPECT_EQ(g.coverage, 1.0);
+  Material sheer;
+  sheer.transmissivity = 0.25;  // ior 1: light passes straight through
+  EXPECT_EQ(pbrFromHall(sheer).coverage, 0.75);
+  Material given = pbr(Color(1), 1, 0.25, 0);
+  EXPECT_EQ(pbrFromHall(given), given.pbr);
+}
+
+}  // namespace
+}  // namespace prt
