@@ -27,7 +27,14 @@ std::string readFile(const std::string& path) {
   try {
     text = readInputFile(path, "mesh file");
   } catch (const InputError& e) {
-    throw MeshFileError(e.what());
+    std::string message = e.what();
+    // The one example model not in the repository (its licence is the npm package's).
+    if (std::filesystem::path(path).filename() == "bunny.ply" &&
+        !std::filesystem::exists(path)) {
+      message += " (the Stanford bunny is fetched by scripts/fetch-bunny.sh, which "
+                 "scripts/test.sh runs; scripts/demo.sh does not)";
+    }
+    throw MeshFileError(message);
   }
   if (text.empty()) throw MeshFileError("mesh file " + quote(path) + " is empty");
   return text;

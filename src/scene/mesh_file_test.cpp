@@ -167,6 +167,13 @@ TEST_F(MeshFile, MissingFileNamesTheMeshAndTheSceneLine) {
   EXPECT_NE(message.find("does not exist"), std::string::npos) << message;
 }
 
+TEST_F(MeshFile, AMissingBunnySaysWhichScriptFetchesIt) {
+  const std::string message = errorOf("mesh { file \"models/bunny.ply\" }\n");
+  EXPECT_NE(message.find("does not exist"), std::string::npos) << message;
+  EXPECT_NE(message.find("scripts/fetch-bunny.sh"), std::string::npos) << message;
+  EXPECT_EQ(errorOf("mesh { file \"models/none.ply\" }\n").find("fetch-bunny"), std::string::npos);
+}
+
 TEST_F(MeshFile, MalformedObjLineIsReportedWithItsLineAndColumn) {
   write("models/bad.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 x 2\nf 1 2 3\n");
   const std::string message = errorOf("mesh { file \"models/bad.obj\" }\n");
