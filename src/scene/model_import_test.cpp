@@ -331,6 +331,13 @@ TEST_F(ImportScene, PlacementScaleRotationAndTranslationApplyOnTop) {
   EXPECT_EQ(std::get<PointLight>(placed.lights[0].shape).position, placed.camera.eye);
 }
 
+TEST_F(ImportScene, AnEmissiveSurfaceIsTheLightNotTheHeadlight) {
+  const Scene lit = load(std::string(kImage) +
+                         "import { file \"blender-cube.glb\" no_lights }\n"
+                         "triangle { vertices 0 5 0 1 5 0 0 5 1 surface { emission 10 10 10 } }\n");
+  EXPECT_TRUE(lit.lights.empty());
+}
+
 TEST_F(ImportScene, CameraFromPicksAFilesCameraByNameOrIndex) {
   const std::string base = std::string(kImage) + "import { file \"blender-cube.glb\" }\n";
   const Scene byName = load(base + "camera { from \"blender-cube.glb\" name \"Camera\" }\n");

@@ -64,8 +64,11 @@ class SceneParser {
     while (!in_.atEnd()) directive(in_.next());
     chooseCamera();
     requireBlock(image_, "image", "image { width 320 height 240 }");
-    // A scene of imported models that brought no light gets one at the eye, so that it shows.
-    if (scene_.lights.empty() && !scene_.imports.empty()) {
+    // A scene of imported models that brought no light gets one at the eye, so that it shows;
+    // not one with emissive surfaces, its lights for the path tracer (a Cornell box's lamp).
+    const bool emits = std::any_of(scene_.objects.begin(), scene_.objects.end(),
+                                   [](const Object& o) { return o.material.emission != Color(); });
+    if (scene_.lights.empty() && !scene_.imports.empty() && !emits) {
       scene_.lights.push_back(Light{PointLight{scene_.camera.eye}, Color(1), Falloff::none});
     }
     return std::move(scene_);
