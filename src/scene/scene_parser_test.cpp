@@ -134,9 +134,11 @@ sphere { center 0 0 0 radius 1 surface frosted }
   Material glass;
   glass.transmissivity = 0.9;
   glass.ior = 1.5;
+  glass.pbr.ior = 1.5;  // `ior` sets the path tracer's index too
   EXPECT_EQ(scene.objects[0].material, glass);
   Material water = glass;
   water.ior = 1.33;
+  water.pbr.ior = 1.33;
   EXPECT_EQ(scene.objects[1].material, water);
   Material frosted = glass;
   frosted.translucencyDegrees = 10;
