@@ -940,4 +940,5 @@ def main():
         print("VERIFY %-28s %s" % (mtl, lines))
 
 
-main()
+if __name__ == "__main__":  # scripts/make-path-scenes.py imports the helpers
+    main()
