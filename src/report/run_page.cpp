@@ -121,7 +121,9 @@ std::string rejectedWorkers(const json& r) {
   if (percent > 0) {
     s += "<li>Spot checks (--verify " + genericValue(json(percent)) + "): " +
          formatCount(r.value("verified_pixels", uint64_t{0})) +
-         " pixels rendered again elsewhere came out bit for bit the same.</li>";
+         " pixels rendered again elsewhere came out bit for bit the same";
+    const std::string guarantee = r.value("verify_guarantee", std::string());
+    s += guarantee.empty() ? std::string(".</li>") : ": " + escapeHtml(guarantee) + ".</li>";
   }
   return s;
 }
@@ -280,6 +282,8 @@ std::string measures(const json& r) {
       {"verify_percent", {kFaults, "spot-check rate", "the share of each worker's pixels checked (--verify; more for new workers)"}},
       {"refused_joiners", {kFaults, "refused joiners", "jobs that tried to join without this render's invitation, or of another PRT version"}},
       {"verify_seed", {kFaults, "spot-check seed", "which pixels were checked: --verify-seed repeats the sample"}},
+      {"verify_lowest_percent", {kFaults, "lowest check rate", "each pixel a worker delivered was checked with at least this probability (--verify 100: every pixel)"}},
+      {"verify_guarantee", {kFaults, "what the checks guarantee", "the chance that a worker returning wrong pixels was caught"}},
       {"referee_checks", {kFaults, "checks by the master", "spot checks the master rendered itself (no other worker to do them)"}},
       {"duplicate_pixels", {kFaults, "duplicate pixels", "results that came twice; the first was kept"}},
       {"endgame_copies", {kFaults, "endgame copies", "tasks copied to idle workers at the end (--endgame)"}},
