@@ -227,7 +227,9 @@ const std::set<std::string> kKnownKeys = {"driver",
                                           "workers",
                                           "context",
                                           "timeline",
-                                          "ownership_map"};
+                                          "ownership_map",
+                                          "verify_guarantee",  // both said in words at a glance
+                                          "verify_lowest_percent"};
 
 std::string measures(const json& r) {
   const bool simulated = text(r, "driver") == "simulated";
@@ -282,8 +284,6 @@ std::string measures(const json& r) {
       {"verify_percent", {kFaults, "spot-check rate", "the share of each worker's pixels checked (--verify; more for new workers)"}},
       {"refused_joiners", {kFaults, "refused joiners", "jobs that tried to join without this render's invitation, or of another PRT version"}},
       {"verify_seed", {kFaults, "spot-check seed", "which pixels were checked: --verify-seed repeats the sample"}},
-      {"verify_lowest_percent", {kFaults, "lowest check rate", "each pixel a worker delivered was checked with at least this probability (--verify 100: every pixel)"}},
-      {"verify_guarantee", {kFaults, "what the checks guarantee", "the chance that a worker returning wrong pixels was caught"}},
       {"referee_checks", {kFaults, "checks by the master", "spot checks the master rendered itself (no other worker to do them)"}},
       {"duplicate_pixels", {kFaults, "duplicate pixels", "results that came twice; the first was kept"}},
       {"endgame_copies", {kFaults, "endgame copies", "tasks copied to idle workers at the end (--endgame)"}},
@@ -318,6 +318,7 @@ std::string measures(const json& r) {
       return formatSeconds(value.get<double>());
     }
     if (key == "scene_bytes" && value.is_number()) return formatBytes(value.get<uint64_t>());
+
     if (key == "master_busy_share" && value.is_number()) {
       char b[32];
       std::snprintf(b, sizeof b, "%.1f %%", 100 * value.get<double>());
