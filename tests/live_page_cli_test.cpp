@@ -25,7 +25,7 @@ namespace {
 
 using LivePageClock = std::chrono::steady_clock;
 
-double secondsSince(LivePageClock::time_point start) {
+double livePageSecondsSince(LivePageClock::time_point start) {
   return std::chrono::duration<double>(LivePageClock::now() - start).count();
 }
 
@@ -41,8 +41,8 @@ TEST_F(LivePageCliTest, SlowClientsHoldNeitherThePageNorTheExit) {
   const std::string command =
       "exec " + e2e::prtBinary() + " render " + std::string(PRT_SOURCE_DIR) +
       "/scenes/fig08-basic-features.scene --width 48 --height 36 --spp 4 --workers 2 "
-      "--slowdown 400,400 --no-checkpoint --serve 127.0.0.1:0 -o " + image + " >/dev/null 2>" +
-      errors;
+      "--slowdown 400,400 --no-checkpoint --serve 127.0.0.1:0 -o " +
+      image + " >/dev/null 2>" + errors;
   const pid_t child = e2e::spawnShellGroup(command);
   ASSERT_GE(child, 0);
   int port = 0;
@@ -70,7 +70,7 @@ TEST_F(LivePageCliTest, SlowClientsHoldNeitherThePageNorTheExit) {
   for (;;) {
     if (waitpid(child, &status, WNOHANG) == child) break;
     if (!imageAt && std::filesystem::exists(image)) imageAt = LivePageClock::now();
-    if (secondsSince(start) > 60) {
+    if (livePageSecondsSince(start) > 60) {
       kill(-child, SIGKILL);
       waitpid(child, &status, 0);
       FAIL() << "the render did not end within 60 s";
@@ -85,7 +85,7 @@ TEST_F(LivePageCliTest, SlowClientsHoldNeitherThePageNorTheExit) {
     }
     std::this_thread::sleep_for(std::chrono::milliseconds(200));
   }
-  const double afterImage = imageAt ? secondsSince(*imageAt) : -1;
+  const double afterImage = imageAt ? livePageSecondsSince(*imageAt) : -1;
   EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << readWholeFile(errors);
   ASSERT_TRUE(imageAt.has_value()) << readWholeFile(errors);
   EXPECT_GT(probes, 0);
@@ -109,11 +109,12 @@ TEST_F(LivePageCliTest, ANameSkipsTheTokenOnlyWhenItResolvesToLoopback) {
                                   "0.0.0.0 127.example.test\n"
                                   "127.0.0.5 loop.example.test\n");
   const auto serve = [&](const std::string& name) {
-    return e2e::runShell("unshare --mount --net sh -c 'ip link set lo up && mount --bind " +
-                         hosts + " /etc/hosts && exec " + e2e::prtBinary() + " render " +
+    return e2e::runShell("unshare --mount --net sh -c 'ip link set lo up && mount --bind " + hosts +
+                         " /etc/hosts && exec " + e2e::prtBinary() + " render " +
                          std::string(PRT_SOURCE_DIR) +
                          "/scenes/fig06-primitives.scene --width 16 --height 12 "
-                         "--no-checkpoint --serve " + name + ":0 -o " + path("out.png") + "'");
+                         "--no-checkpoint --serve " +
+                         name + ":0 -o " + path("out.png") + "'");
   };
   const e2e::Result probe = serve("localhost");
   if (probe.output.find("live page at") == std::string::npos) {
@@ -126,7 +127,8 @@ TEST_F(LivePageCliTest, ANameSkipsTheTokenOnlyWhenItResolvesToLoopback) {
   const e2e::Result loop = serve("loop.example.test");
   EXPECT_EQ(loop.exitCode, 0) << loop.output;
   EXPECT_EQ(loop.output.find("?token="), std::string::npos)
-      << "a name resolving to 127.0.0.5 needs no token:\n" << loop.output;
+      << "a name resolving to 127.0.0.5 needs no token:\n"
+      << loop.output;
 
   const e2e::Result everywhere = serve("127.example.test");
   EXPECT_EQ(everywhere.exitCode, 0) << everywhere.output;

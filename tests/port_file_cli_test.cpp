@@ -24,7 +24,8 @@ class PortFileCliTest : public e2e::ScratchDirTest {
                              const std::string& extra = "--width 16 --height 12") {
     return "render " + std::string(PRT_SOURCE_DIR) +
            "/scenes/fig06-primitives.scene --workers 2 --no-checkpoint --accept-address "
-           "127.0.0.1 --accept-workers " + portFile + " " + extra + " -o " + path("out.png");
+           "127.0.0.1 --accept-workers " +
+           portFile + " " + extra + " -o " + path("out.png");
   }
 };
 
@@ -55,8 +56,8 @@ TEST_F(PortFileCliTest, ASecondRenderDoesNotTakeTheRunningOnesPortFile) {
   // The first render lasts a few seconds (400 times slower), its door open all along.
   const pid_t first = e2e::spawnShellGroup(
       "exec " + e2e::prtBinary() + " " +
-      renderWithDoor(port, "--slowdown 400,400 --spp 4 --width 48 --height 36") +
-      " >/dev/null 2>" + errors);
+      renderWithDoor(port, "--slowdown 400,400 --spp 4 --width 48 --height 36") + " >/dev/null 2>" +
+      errors);
   ASSERT_GE(first, 0);
   std::string before;
   for (int i = 0; i < 400 && before.find("secret ") == std::string::npos; ++i) {

@@ -204,8 +204,7 @@ TEST_F(ReportCliTest, TheReportAndTheEndLinesSayWhatTheSpotChecksGuarantee) {
   for (const char* words : {"at least 0.5 %", "k wrong pixels", "1 - (1 - 0.005)^k",
                             "39.4 % for k = 100", "--verify 100 checks every pixel"}) {
     EXPECT_NE(guarantee.find(words), std::string::npos) << words << " in: " << guarantee;
-    EXPECT_NE(sampled.output.find(words), std::string::npos) << words << " in:\n"
-                                                             << sampled.output;
+    EXPECT_NE(sampled.output.find(words), std::string::npos) << words << " in:\n" << sampled.output;
   }
 
   const Result exact =

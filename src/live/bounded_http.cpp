@@ -12,6 +12,7 @@
 #include <cerrno>
 #include <chrono>
 #include <climits>
+#include <cstdint>
 #include <cstring>
 #include <stdexcept>
 #include <vector>
@@ -24,8 +25,8 @@ namespace {
 using HttpClock = std::chrono::steady_clock;
 
 HttpClock::time_point httpAfter(double seconds) {
-  return HttpClock::now() + std::chrono::duration_cast<HttpClock::duration>(
-                                std::chrono::duration<double>(seconds));
+  return HttpClock::now() +
+         std::chrono::duration_cast<HttpClock::duration>(std::chrono::duration<double>(seconds));
 }
 
 // Waits until `fd` has `events`, `until` passes, or the server stops (`wakeFd` readable):
@@ -121,9 +122,7 @@ class BoundedHttpServer::Stream : public httplib::Stream {
   bool is_readable() const override {
     return pos_ < end_ || awaitSocket(fd_, POLLIN, wake_, readUntil_) == 1;
   }
-  bool is_writable() const override {
-    return awaitSocket(fd_, POLLOUT, wake_, writeUntil()) == 1;
-  }
+  bool is_writable() const override { return awaitSocket(fd_, POLLOUT, wake_, writeUntil()) == 1; }
 
   ssize_t read(char* ptr, size_t size) override {
     if (size == 0) return 0;
@@ -251,8 +250,8 @@ void BoundedHttpServer::acceptLoop() {
     if (ready <= 0 || (fds[0].revents & POLLIN) == 0) continue;
     sockaddr_storage address{};
     socklen_t length = sizeof address;
-    const int fd = ::accept4(listenFd_, reinterpret_cast<sockaddr*>(&address), &length,
-                             SOCK_CLOEXEC);
+    const int fd =
+        ::accept4(listenFd_, reinterpret_cast<sockaddr*>(&address), &length, SOCK_CLOEXEC);
     if (fd < 0) {
       // Out of descriptors or memory: let the connections open now end first.
       if (errno == EMFILE || errno == ENFILE || errno == ENOBUFS || errno == ENOMEM) {

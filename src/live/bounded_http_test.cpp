@@ -18,8 +18,8 @@ namespace {
 using test_clients::SlowHttpClient;
 
 // A server with one route, bound to 127.0.0.1 and serving.
-struct TestServer {
-  explicit TestServer(HttpLimits limits) : server(limits) {
+struct BoundedTestServer {
+  explicit BoundedTestServer(HttpLimits limits) : server(limits) {
     server.Get("/status.json", [](const httplib::Request&, httplib::Response& response) {
       response.set_content("{}", "application/json");
     });
@@ -41,14 +41,14 @@ struct TestServer {
   int port = 0;
 };
 
-double since(std::chrono::steady_clock::time_point start) {
+double boundedSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 TEST(BoundedHttpServer, ASlowClientIsCutOffAtTheRequestDeadline) {
   HttpLimits limits;
   limits.requestSeconds = 1;
-  TestServer t(limits);
+  BoundedTestServer t(limits);
   SlowHttpClient slow(t.port, "127.0.0.1", 0.2, 20);
   ASSERT_TRUE(slow.connected());
   for (int i = 0; i < 100 && !slow.cutAfter(); ++i) {
@@ -72,7 +72,7 @@ TEST(BoundedHttpServer, OneClientCannotTakeEveryConnection) {
   HttpLimits limits;
   limits.perClient = 2;
   limits.total = 8;
-  TestServer t(limits);
+  BoundedTestServer t(limits);
   std::vector<std::unique_ptr<SlowHttpClient>> slow;
   for (int i = 0; i < 5; ++i) {
     slow.push_back(std::make_unique<SlowHttpClient>(t.port, "127.0.0.2", 0.5, 20));
@@ -94,7 +94,7 @@ TEST(BoundedHttpServer, OneClientCannotTakeEveryConnection) {
 
 // stop() ends idle and slow connections at once, and joins every thread.
 TEST(BoundedHttpServer, StopClosesIdleAndSlowConnectionsAtOnce) {
-  TestServer t(HttpLimits{});
+  BoundedTestServer t(HttpLimits{});
   std::vector<std::unique_ptr<SlowHttpClient>> slow;
   for (int i = 0; i < 3; ++i) {
     slow.push_back(std::make_unique<SlowHttpClient>(t.port, "127.0.0.1", 0.5, 20));
@@ -109,7 +109,7 @@ TEST(BoundedHttpServer, StopClosesIdleAndSlowConnectionsAtOnce) {
   EXPECT_EQ(t.server.openConnections(), 4);
   const auto start = std::chrono::steady_clock::now();
   t.server.stop();
-  EXPECT_LT(since(start), 1.0);
+  EXPECT_LT(boundedSince(start), 1.0);
   EXPECT_EQ(t.server.openConnections(), 0);
   for (int i = 0; i < 40; ++i) {
     bool all = true;
@@ -124,7 +124,7 @@ TEST(BoundedHttpServer, StopClosesIdleAndSlowConnectionsAtOnce) {
 TEST(BoundedHttpServer, ARequestPastItsByteLimitIsCutOff) {
   HttpLimits limits;
   limits.requestBytes = 4096;
-  TestServer t(limits);
+  BoundedTestServer t(limits);
   const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
   sockaddr_in server{};
   server.sin_family = AF_INET;
@@ -142,15 +142,16 @@ TEST(BoundedHttpServer, ARequestPastItsByteLimitIsCutOff) {
   }
   std::string reply;
   char buffer[4096];
-  for (ssize_t n; (n = ::recv(fd, buffer, sizeof buffer, 0)) > 0;) reply.append(buffer, static_cast<size_t>(n));
+  for (ssize_t n; (n = ::recv(fd, buffer, sizeof buffer, 0)) > 0;)
+    reply.append(buffer, static_cast<size_t>(n));
   ::close(fd);
-  EXPECT_LT(since(start), 3.0);
+  EXPECT_LT(boundedSince(start), 3.0);
   EXPECT_EQ(reply.find("200 OK"), std::string::npos) << reply;
   EXPECT_EQ(t.get(), 200);
 }
 
 TEST(BoundedHttpServer, ServesManyRequestsOnAKeptAliveConnection) {
-  TestServer t(HttpLimits{});
+  BoundedTestServer t(HttpLimits{});
   httplib::Client client("127.0.0.1", t.port);
   client.set_keep_alive(true);
   for (int i = 0; i < 5; ++i) {

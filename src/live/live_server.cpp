@@ -215,7 +215,9 @@ LiveServer::LiveServer(ProgressBoard& board, const ServeAddress& address)
   s.start();
 }
 
-LiveServer::~LiveServer() { impl_->server.stop(); }
+LiveServer::~LiveServer() {
+  impl_->server.stop();
+}
 
 std::string LiveServer::url() const {
   const std::string host = host_.find(':') != std::string::npos ? "[" + host_ + "]" : host_;

@@ -3,10 +3,9 @@
 #include <gtest/gtest.h>
 #include <httplib.h>
 
-#include <nlohmann/json.hpp>
-
 #include <chrono>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <thread>
 #include <vector>
 
@@ -151,7 +150,8 @@ TEST(LiveServer, SlowClientsHoldNeitherThePageNorItsEnd) {
   LiveServer server(boardWithWorkers(board), parseServeAddress("127.0.0.1:0"));
   std::vector<std::unique_ptr<test_clients::SlowHttpClient>> slow;
   for (int i = 0; i < 2; ++i) {
-    slow.push_back(std::make_unique<test_clients::SlowHttpClient>(server.port(), "127.0.0.1", 1.0, 30.0));
+    slow.push_back(
+        std::make_unique<test_clients::SlowHttpClient>(server.port(), "127.0.0.1", 1.0, 30.0));
     ASSERT_TRUE(slow.back()->connected());
   }
   std::this_thread::sleep_for(std::chrono::milliseconds(300));

@@ -32,8 +32,7 @@ class SlowHttpClient {
     server.sin_family = AF_INET;
     server.sin_port = htons(static_cast<uint16_t>(port));
     ::inet_pton(AF_INET, "127.0.0.1", &server.sin_addr);
-    connected_ = fd_ >= 0 &&
-                 ::bind(fd_, reinterpret_cast<sockaddr*>(&local), sizeof local) == 0 &&
+    connected_ = fd_ >= 0 && ::bind(fd_, reinterpret_cast<sockaddr*>(&local), sizeof local) == 0 &&
                  ::connect(fd_, reinterpret_cast<sockaddr*>(&server), sizeof server) == 0;
     if (!connected_) return;
     thread_ = std::thread([this, interval, lifetime] { trickle(interval, lifetime); });

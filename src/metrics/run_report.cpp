@@ -500,9 +500,9 @@ std::string RunReport::toTable() const {
     out += "a joining job was refused: " + why + "\n";
   }
   if (info.faults.verifyPercent > 0) {
-    std::snprintf(line, sizeof line, "spot checks: %llu pixels verified bit for bit (--verify %g): ",
-                  static_cast<unsigned long long>(info.faults.verifiedPixels),
-                  info.faults.verifyPercent);
+    std::snprintf(
+        line, sizeof line, "spot checks: %llu pixels verified bit for bit (--verify %g): ",
+        static_cast<unsigned long long>(info.faults.verifiedPixels), info.faults.verifyPercent);
     out += line + spotCheckGuarantee(info.faults) + "\n";
   }
   for (int w : info.faults.missingSummaries) {

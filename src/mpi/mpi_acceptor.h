@@ -3,9 +3,10 @@
 //
 // MpiAcceptor: the master's door for workers that join a running render. It opens an MPI port
 // (MPI_Open_port), writes the port's name to a file (net/port_file.h: a joiner never reads
-// half a name; never through a link; refused while another render holds it), and accepts connections (MPI_Comm_accept, collective over the joining job) on a thread
-// of its own, so the master's loop never blocks: each accepted intercommunicator waits in a
-// queue until the loop takes it (take()).
+// half a name; never through a link; refused while another render holds it), and accepts
+// connections (MPI_Comm_accept, collective over the joining job) on a thread of its own, so the
+// master's loop never blocks: each accepted intercommunicator waits in a queue until the loop takes
+// it (take()).
 //
 // Ending: MPI_Comm_accept cannot be cancelled, and a process that connects to its own port
 // deadlocks in Open MPI 4.1, so another process must connect once to wake the thread: the

@@ -17,7 +17,9 @@
 namespace prt {
 namespace {
 
-std::string portFileErrno(int err) { return std::generic_category().message(err); }
+std::string portFileErrno(int err) {
+  return std::generic_category().message(err);
+}
 
 [[noreturn]] void refusePortFile(const std::string& path, const std::string& why) {
   throw InputError("--accept-workers: the port file '" + path + "' " + why);
@@ -28,7 +30,9 @@ std::string portFileErrno(int err) { return std::generic_category().message(err)
 }
 
 // Whether the lock cannot be had on this file system (as opposed to being held by another).
-bool noLocksHere(int err) { return err == ENOLCK || err == EOPNOTSUPP || err == EINVAL; }
+bool noLocksHere(int err) {
+  return err == ENOLCK || err == EOPNOTSUPP || err == EINVAL;
+}
 
 bool writeAll(int fd, const std::string& text) {
   size_t done = 0;
@@ -50,8 +54,9 @@ bool staleAt(const std::string& path) {
     const int err = errno;
     if (err == ENOENT) return false;
     if (err == ELOOP) {
-      refusePortFile(path, "is a symbolic link: refused (the port file is written where it is "
-                           "named, never through a link)");
+      refusePortFile(path,
+                     "is a symbolic link: refused (the port file is written where it is "
+                     "named, never through a link)");
     }
     cannotWritePortFile(path, err);
   }
@@ -64,8 +69,9 @@ bool staleAt(const std::string& path) {
     refusePortFile(path, "exists and is not a file: refused rather than replaced");
   }
   if (::flock(fd, LOCK_EX | LOCK_NB) != 0 && !noLocksHere(errno)) {
-    refusePortFile(path, "belongs to a render that is running (it holds the file): give this "
-                         "render another path, or end that one first");
+    refusePortFile(path,
+                   "belongs to a render that is running (it holds the file): give this "
+                   "render another path, or end that one first");
   }
   std::string text;
   char buffer[4096];
@@ -91,8 +97,9 @@ bool staleAt(const std::string& path) {
 PortFileClaim::PortFileClaim(const std::string& path, const std::string& text) : path_(path) {
   struct stat st {};
   if (::lstat(path.c_str(), &st) == 0 && S_ISLNK(st.st_mode)) {
-    refusePortFile(path, "is a symbolic link: refused (the port file is written where it is "
-                         "named, never through a link)");
+    refusePortFile(path,
+                   "is a symbolic link: refused (the port file is written where it is "
+                   "named, never through a link)");
   }
   // The temporary file: never an existing one, never through a link, private from the start.
   static std::atomic<unsigned> counter{0};
@@ -142,7 +149,9 @@ PortFileClaim::PortFileClaim(const std::string& path, const std::string& text) :
   inode_ = st.st_ino;
 }
 
-PortFileClaim::~PortFileClaim() { release(); }
+PortFileClaim::~PortFileClaim() {
+  release();
+}
 
 PortFileClaim::PortFileClaim(PortFileClaim&& other) noexcept
     : path_(std::move(other.path_)),
