@@ -40,6 +40,19 @@ inline Result run(const std::string& args, const std::string& environment = "") 
   return r;
 }
 
+// Runs `command` through the shell, capturing its stdout and stderr together.
+inline Result runShell(const std::string& command) {
+  Result r;
+  FILE* pipe = popen(("{ " + command + "; } 2>&1").c_str(), "r");
+  if (!pipe) return r;
+  std::array<char, 4096> buffer{};
+  size_t n = 0;
+  while ((n = fread(buffer.data(), 1, buffer.size(), pipe)) > 0) r.output.append(buffer.data(), n);
+  const int status = pclose(pipe);
+  r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
 // Starts `command` under /bin/sh in a process group of its own, without waiting: the pid,
 // which is also the group's (kill(-pid, SIG) signals the command and all it started), or -1.
 inline pid_t spawnShellGroup(const std::string& command) {

@@ -191,5 +191,39 @@ TEST_F(ReportCliTest, ExperimentIndexGathersEverySummaryInTheFolder) {
   EXPECT_EQ(index.find("http"), std::string::npos) << "nothing fetched from the network";
 }
 
+// The spot checks are a sample: the report and the run's last lines say what they guarantee
+// (each pixel checked with at least some probability, and so the chance a worker returning k
+// wrong pixels was caught) and how to make them exact.
+TEST_F(ReportCliTest, TheReportAndTheEndLinesSayWhatTheSpotChecksGuarantee) {
+  const std::string render = "render " + kReportScene + " --width 24 --height 16 --workers 2 ";
+  const Result sampled = run(render + "--report " + path("r.json") + " -o " + path("r.png"));
+  ASSERT_EQ(sampled.exitCode, 0) << sampled.output;
+  const nlohmann::json report = nlohmann::json::parse(readWholeFile(path("r.json")));
+  EXPECT_EQ(report.value("verify_lowest_percent", -1.0), 0.5) << report.dump();
+  const std::string guarantee = report.value("verify_guarantee", std::string());
+  for (const char* words : {"at least 0.5 %", "k wrong pixels", "1 - (1 - 0.005)^k",
+                            "39.4 % for k = 100", "--verify 100 checks every pixel"}) {
+    EXPECT_NE(guarantee.find(words), std::string::npos) << words << " in: " << guarantee;
+    EXPECT_NE(sampled.output.find(words), std::string::npos) << words << " in:\n" << sampled.output;
+  }
+
+  const Result exact =
+      run(render + "--verify 100 --report " + path("x.json") + " -o " + path("x.png"));
+  ASSERT_EQ(exact.exitCode, 0) << exact.output;
+  const nlohmann::json all = nlohmann::json::parse(readWholeFile(path("x.json")));
+  EXPECT_EQ(all.value("verify_lowest_percent", -1.0), 100.0);
+  EXPECT_NE(all.value("verify_guarantee", std::string()).find("any wrong pixel was caught"),
+            std::string::npos)
+      << all.dump();
+  EXPECT_NE(exact.output.find("any wrong pixel was caught"), std::string::npos) << exact.output;
+
+  const Result off = run(render + "--verify 0 --report " + path("o.json") + " -o " + path("o.png"));
+  ASSERT_EQ(off.exitCode, 0) << off.output;
+  EXPECT_NE(nlohmann::json::parse(readWholeFile(path("o.json")))
+                .value("verify_guarantee", std::string())
+                .find("would not be noticed"),
+            std::string::npos);
+}
+
 }  // namespace
 }  // namespace prt

@@ -150,7 +150,9 @@ void addParallelOptions(CLI::App& cmd, RenderOptions& o) {
                  "Spot checks: PERCENT of each worker's pixels (4 times as many for a new "
                  "worker, half once it passed 32 checks) are rendered again by another worker, "
                  "or by the master, and compared bit for bit; a worker that fails one is "
-                 "rejected and its pixels rendered again. 100: every pixel; 0: no checks")
+                 "rejected and its pixels rendered again. A sample: the report's verify_guarantee "
+                 "says the odds of catching k wrong pixels; 100: every pixel (exact); 0: no "
+                 "checks")
       ->check(finiteIn(0, 100))
       ->capture_default_str()
       ->group(parallel);

@@ -59,7 +59,7 @@ double SpotChecks::rateFor(int worker) const {
   if (rate >= 1) return 1;  // --verify 100: every pixel, trusted or not
   const int passed = passes_[static_cast<size_t>(worker)];
   if (passed < kNewPasses) return std::min(1.0, 4 * rate);
-  if (passed >= kTrustedPasses) return rate / 2;
+  if (passed >= kTrustedPasses) return lowestRate(options_.percent);
   return rate;
 }
 

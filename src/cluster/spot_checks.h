@@ -86,6 +86,9 @@ class SpotChecks {
   int passes(int worker) const { return passes_[static_cast<size_t>(worker)]; }
   // The rate at which `worker`'s pixels are sampled now (0..1).
   double rateFor(int worker) const;
+  // The lowest rate any worker's pixels are sampled at, a trusted worker's (0..1): each pixel
+  // a worker delivers is checked with at least this probability.
+  static double lowestRate(double percent) { return percent >= 100 ? 1 : percent / 200; }
 
  private:
   struct Open {

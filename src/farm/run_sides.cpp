@@ -247,6 +247,7 @@ ParallelRun runMasterSide(Transport& net, const RunRequest& request, const std::
                       loop.leaseSeconds, loop.heartbeatSeconds,
                       [&](int w) { return options.slowdownOf(w); }});
   info.faults.verifyPercent = master.spotChecks().enabled() ? options.verifyPercent : 0;
+  info.faults.verifyLowestPercent = 100 * master.spotChecks().lowestRate(info.faults.verifyPercent);
   info.faults.verifySeed = seed;
   info.master = result.load;
   info.master->checkpoints = checkpoints;

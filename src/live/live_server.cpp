@@ -1,7 +1,5 @@
 #include "live/live_server.h"
 
-#include <httplib.h>
-
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -9,11 +7,12 @@
 #include <mutex>
 #include <nlohmann/json.hpp>
 #include <random>
+#include <thread>
 
-#include "core/thread_start.h"
 #include "core/input_error.h"
 #include "farm/parallel_run.h"
 #include "image/image_io.h"
+#include "live/bounded_http.h"
 #include "live/live_page.h"
 #include "live/progress_text.h"
 
@@ -60,10 +59,6 @@ Image markedImage(const PartialImage& p) {
 
 }  // namespace
 
-bool isLoopbackHost(const std::string& host) {
-  return host == "localhost" || host == "::1" || host.rfind("127.", 0) == 0;
-}
-
 ServeAddress parseServeAddress(const std::string& text) {
   ServeAddress a;
   std::string port = text;
@@ -94,7 +89,7 @@ ServeAddress parseServeAddress(const std::string& text) {
 
 struct LiveServer::Impl {
   ProgressBoard& board;
-  httplib::Server server;
+  BoundedHttpServer server;
   std::mutex cacheMutex;
   // One cached PNG per image, keyed by the image's version.
   uint64_t imageVersion = UINT64_MAX, ownershipVersion = UINT64_MAX;
@@ -166,19 +161,19 @@ struct LiveServer::Impl {
 LiveServer::LiveServer(ProgressBoard& board, const ServeAddress& address)
     : impl_(std::make_unique<Impl>(board)), host_(address.host) {
   board.watch();  // the page shows the image: the render copies it for the page
-  if (!isLoopbackHost(address.host)) token_ = randomToken();
-  httplib::Server& s = impl_->server;
-  s.new_task_queue = [] { return new httplib::ThreadPool(2); };
-  s.set_keep_alive_max_count(20);
-  s.set_read_timeout(5);
-  s.set_write_timeout(5);
+  BoundedHttpServer& s = impl_->server;
+  // Loopback, and no token, only when every address the name resolves to is a loopback one
+  // (the bound one included): "127.example.test" may well resolve to 0.0.0.0.
+  bool loopback = false;
+  std::string why;
+  port_ = s.bindAndListen(address.host, address.port, loopback, why);
+  if (port_ < 0) {
+    throw InputError("--serve: cannot listen on " + address.host + ":" +
+                     std::to_string(address.port) + " (" + why +
+                     "); choose another, or PORT 0 for any free one");
+  }
+  if (!loopback) token_ = randomToken();
   s.set_payload_max_length(1024);
-  // SO_REUSEADDR only: httplib's default adds SO_REUSEPORT, which would let a second render
-  // share the port silently.
-  s.set_socket_options([](socket_t sock) {
-    int yes = 1;
-    setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
-  });
   const std::string token = token_;
   s.set_pre_routing_handler([token](const httplib::Request& request, httplib::Response& response) {
     if (request.method != "GET" && request.method != "HEAD") {
@@ -217,26 +212,11 @@ LiveServer::LiveServer(ProgressBoard& board, const ServeAddress& address)
   };
   s.Get("/image.png", image(false));
   s.Get("/ownership.png", image(true));
-
-  if (address.port == 0) {
-    port_ = s.bind_to_any_port(address.host);
-  } else {
-    port_ = s.bind_to_port(address.host, address.port) ? address.port : -1;
-  }
-  if (port_ < 0) {
-    throw InputError("--serve: cannot listen on " + address.host + ":" +
-                     std::to_string(address.port) +
-                     " (the port is taken, or the address is not this machine's); choose "
-                     "another, or PORT 0 for any free one");
-  }
-  thread_ = startThread([impl] { impl->server.listen_after_bind(); });
-  // stop() is only heard once the server runs: wait for that, so stopping never misses it.
-  while (!impl_->server.is_running()) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  s.start();
 }
 
 LiveServer::~LiveServer() {
   impl_->server.stop();
-  if (thread_.joinable()) thread_.join();
 }
 
 std::string LiveServer::url() const {
@@ -262,8 +242,8 @@ void LiveServer::finish(double maxSeconds) {
   }
   // Then its last fetch of the images.
   if (waited || recent()) std::this_thread::sleep_until(std::min(deadline, Clock::now() + std::chrono::seconds(1)));
+  // Every connection ends now, an idle or slow client's included.
   impl_->server.stop();
-  if (thread_.joinable()) thread_.join();
 }
 
 }  // namespace prt

@@ -8,15 +8,17 @@
 //   /status.json  the snapshot: pixels_done, pixels_total, elapsed_s, eta_s, workers, ...
 //   /image.png    the image so far, pixels not yet rendered shown as a grey checkerboard
 //   /ownership.png  each finished pixel in the colour of the worker that rendered it
-// Every other path is 404, every method but GET and HEAD is 405. Loopback addresses serve
-// anyone on this machine; any other HOST needs the access token printed at the start (the
-// page's address carries it as ?token=). Memory is bounded: two server threads, small
-// request limits, one cached PNG per image.
+// Every other path is 404, every method but GET and HEAD is 405. A HOST whose every address is
+// a loopback one serves anyone on this machine; any other HOST (decided from the addresses it
+// resolves to, not from its text) needs the access token printed at the start (the page's
+// address carries it as ?token=). No client can hold the page or its end (live/bounded_http.h:
+// a few connections per client, a request whole within 5 s, stopping closes every connection
+// at once). Memory is bounded: at most 16 connections, small request limits, one cached PNG
+// per image.
 
 #include <cstdint>
 #include <memory>
 #include <string>
-#include <thread>
 
 #include "farm/progress_board.h"
 
@@ -28,7 +30,6 @@ struct ServeAddress {
 };
 // "8080", ":8080", "127.0.0.1:8080", "0.0.0.0:0", "[::1]:8080". Throws InputError.
 ServeAddress parseServeAddress(const std::string& text);
-bool isLoopbackHost(const std::string& host);
 
 class LiveServer {
  public:
@@ -52,7 +53,6 @@ class LiveServer {
   std::string host_;
   std::string token_;
   int port_ = 0;
-  std::thread thread_;
 };
 
 }  // namespace prt

@@ -3,9 +3,15 @@
 #include <gtest/gtest.h>
 #include <httplib.h>
 
+#include <chrono>
+#include <memory>
 #include <nlohmann/json.hpp>
+#include <thread>
+#include <vector>
 
 #include "core/input_error.h"
+#include "live/bounded_http.h"
+#include "live/slow_http_client.h"
 
 namespace prt {
 namespace {
@@ -19,9 +25,17 @@ TEST(ServeAddress, ParsesPortHostAndIpv6) {
   for (const char* bad : {"", "x", "-1", "65536", "host:", ":", "[::1]9", "1e3", "123456"}) {
     EXPECT_THROW(parseServeAddress(bad), InputError) << bad;
   }
-  EXPECT_TRUE(isLoopbackHost("127.0.0.1"));
-  EXPECT_TRUE(isLoopbackHost("localhost"));
-  EXPECT_FALSE(isLoopbackHost("0.0.0.0"));
+}
+
+// Loopback is decided from the addresses a name resolves to, never from its text.
+TEST(ServeAddress, LoopbackOnlyWhenEveryAddressIsLoopback) {
+  for (const char* loopback : {"127.0.0.1", "127.0.0.5", "localhost", "::1", "::ffff:127.0.0.1"}) {
+    EXPECT_TRUE(resolvesToLoopbackOnly(loopback)) << loopback;
+  }
+  for (const char* other : {"0.0.0.0", "::", "10.1.2.3", "192.168.0.1", "::ffff:10.0.0.1",
+                            "name.that.does.not.resolve.invalid"}) {
+    EXPECT_FALSE(resolvesToLoopbackOnly(other)) << other;
+  }
 }
 
 ProgressBoard& boardWithWorkers(ProgressBoard& board) {
@@ -127,6 +141,35 @@ TEST(LiveServer, FinishReturnsAtOnceWithoutAPage) {
   const auto start = std::chrono::steady_clock::now();
   server.finish(3);
   EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(1));
+}
+
+// Two "slowloris" clients (a header line a second, the headers never ended) hold neither the
+// page, which keeps answering, nor its end: finish() stops the server within its 3 s.
+TEST(LiveServer, SlowClientsHoldNeitherThePageNorItsEnd) {
+  ProgressBoard board;
+  LiveServer server(boardWithWorkers(board), parseServeAddress("127.0.0.1:0"));
+  std::vector<std::unique_ptr<test_clients::SlowHttpClient>> slow;
+  for (int i = 0; i < 2; ++i) {
+    slow.push_back(
+        std::make_unique<test_clients::SlowHttpClient>(server.port(), "127.0.0.1", 1.0, 30.0));
+    ASSERT_TRUE(slow.back()->connected());
+  }
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  int answered = 0, probes = 0;
+  for (; probes < 6; ++probes) {
+    httplib::Client client("127.0.0.1", server.port());
+    client.set_connection_timeout(2);
+    client.set_read_timeout(2);
+    const auto r = client.Get("/status.json");
+    if (r && r->status == 200) ++answered;
+    std::this_thread::sleep_for(std::chrono::milliseconds(250));
+  }
+  EXPECT_EQ(answered, probes) << "the page did not answer while two slow clients were connected";
+  const auto start = std::chrono::steady_clock::now();
+  server.finish(3);
+  const double took =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_LT(took, 4.0) << "finish() waited for the slow clients";
 }
 
 }  // namespace

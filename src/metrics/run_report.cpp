@@ -15,6 +15,35 @@ double maximumAchievableSpeedup(double serialSpeedIndex, const std::vector<doubl
   return masu;
 }
 
+std::string spotCheckGuarantee(const FaultInfo& f) {
+  char text[512];
+  if (f.verifyPercent <= 0) {
+    return "no spot checks (--verify 0): wrong pixels from a worker would not be noticed";
+  }
+  const double p = f.verifyLowestPercent / 100;
+  if (p >= 1) {
+    std::snprintf(text, sizeof text,
+                  "every pixel a worker delivered was rendered again by another and compared "
+                  "bit for bit (--verify %g): any wrong pixel was caught",
+                  f.verifyPercent);
+    return text;
+  }
+  const auto caught = [p](double k) {
+    const double chance = 1 - std::pow(1 - p, k);
+    char out[32];
+    if (chance > 0.999) return std::string("over 99.9 %");
+    std::snprintf(out, sizeof out, "%.3g %%", 100 * chance);
+    return std::string(out);
+  };
+  std::snprintf(text, sizeof text,
+                "each pixel a worker delivered was checked with probability at least %g %% "
+                "(--verify %g, halved for a trusted worker): a worker that returned k wrong "
+                "pixels would have been caught with probability at least 1 - (1 - %g)^k (%s for "
+                "k = 10, %s for k = 100); --verify 100 checks every pixel",
+                100 * p, f.verifyPercent, p, caught(10).c_str(), caught(100).c_str());
+  return text;
+}
+
 std::optional<double> balancedFinishSeconds(const std::vector<double>& rates,
                                             const std::vector<double>& arrivals, double pixels,
                                             const std::vector<double>& departures) {
@@ -282,6 +311,8 @@ std::string RunReport::toJson() const {
   j["refused_joiners"] = refused;
   j["verify_percent"] = f.verifyPercent;
   j["verify_seed"] = f.verifySeed;
+  j["verify_lowest_percent"] = f.verifyLowestPercent;
+  j["verify_guarantee"] = spotCheckGuarantee(f);
   j["verified_pixels"] = f.verifiedPixels;
   j["referee_checks"] = f.refereeChecks;
   j["reissued_tasks"] = f.reissuedTasks;
@@ -469,10 +500,10 @@ std::string RunReport::toTable() const {
     out += "a joining job was refused: " + why + "\n";
   }
   if (info.faults.verifyPercent > 0) {
-    std::snprintf(line, sizeof line, "spot checks: %llu pixels verified bit for bit (--verify %g)\n",
-                  static_cast<unsigned long long>(info.faults.verifiedPixels),
-                  info.faults.verifyPercent);
-    out += line;
+    std::snprintf(
+        line, sizeof line, "spot checks: %llu pixels verified bit for bit (--verify %g): ",
+        static_cast<unsigned long long>(info.faults.verifiedPixels), info.faults.verifyPercent);
+    out += line + spotCheckGuarantee(info.faults) + "\n";
   }
   for (int w : info.faults.missingSummaries) {
     out += "worker " + std::to_string(w) + " sent no summary: its times are missing\n";

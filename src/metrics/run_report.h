@@ -83,6 +83,7 @@ struct FaultInfo {
   std::vector<RejectedWorkerInfo> rejectedWorkers;
   std::vector<std::string> refusedJoiners;  // why each joining job was turned away
   double verifyPercent = 0;        // --verify: the spot checks' base rate (0: off)
+  double verifyLowestPercent = 0;  // the lowest rate a worker's pixels were sampled at
   uint64_t verifySeed = 0;         // which pixels were checked (--verify-seed repeats it)
   uint64_t verifiedPixels = 0;     // spot checks that matched
   uint64_t refereeChecks = 0;      // spot checks the master rendered itself
@@ -179,6 +180,12 @@ RunReport makeReport(const RunInfo& info, const std::vector<Event>& events, doub
 std::optional<double> balancedFinishSeconds(const std::vector<double>& rates,
                                             const std::vector<double>& arrivals, double pixels,
                                             const std::vector<double>& departures = {});
+
+// What the spot checks of a run guarantee, in words: the lowest probability with which each
+// pixel a worker delivered was checked, p, and so the chance 1 - (1 - p)^k that a worker that
+// returned k wrong pixels was caught; how to make the check exact (--verify 100). The report's
+// verify_guarantee and the terminal's spot-check line.
+std::string spotCheckGuarantee(const FaultInfo& faults);
 
 // Maximum achievable speed-up: sum of speedIndexSerial / speedIndex_i.
 double maximumAchievableSpeedup(double serialSpeedIndex, const std::vector<double>& speedIndices);

@@ -26,7 +26,7 @@ MpiAcceptor::MpiAcceptor(const std::string& portFile, const Secret& secret,
   state_->port = name;
   state_->secret = secret;
   try {
-    writePortFile(file_, state_->port, state_->secret, tcpAddresses);
+    claim_.emplace(file_, portFileText(state_->port, state_->secret, tcpAddresses));
   } catch (...) {
     MPI_Close_port(name);
     throw;
@@ -175,7 +175,7 @@ std::optional<MPI_Comm> MpiAcceptor::take() {
 void MpiAcceptor::beginStop() {
   if (begun_) return;
   begun_ = true;
-  std::remove(file_.c_str());
+  if (claim_) claim_->release();
   state_->stopping = true;
 }
 

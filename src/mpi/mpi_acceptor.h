@@ -2,10 +2,11 @@
 // Internal to src/mpi (it includes <mpi.h>).
 //
 // MpiAcceptor: the master's door for workers that join a running render. It opens an MPI port
-// (MPI_Open_port), writes the port's name to a file (atomically: a joiner never reads half a
-// name), and accepts connections (MPI_Comm_accept, collective over the joining job) on a thread
-// of its own, so the master's loop never blocks: each accepted intercommunicator waits in a
-// queue until the loop takes it (take()).
+// (MPI_Open_port), writes the port's name to a file (net/port_file.h: a joiner never reads
+// half a name; never through a link; refused while another render holds it), and accepts
+// connections (MPI_Comm_accept, collective over the joining job) on a thread of its own, so the
+// master's loop never blocks: each accepted intercommunicator waits in a queue until the loop takes
+// it (take()).
 //
 // Ending: MPI_Comm_accept cannot be cancelled, and a process that connects to its own port
 // deadlocks in Open MPI 4.1, so another process must connect once to wake the thread: the
@@ -37,6 +38,7 @@
 #include <vector>
 
 #include "net/invitation.h"
+#include "net/port_file.h"
 
 namespace prt::mpi_detail {
 
@@ -84,6 +86,7 @@ class MpiAcceptor {
   static std::string admit(const State& state, MPI_Comm inter);
 
   std::string file_;
+  std::optional<PortFileClaim> claim_;  // the port file, held while joiners may come
   std::shared_ptr<State> state_ = std::make_shared<State>();
   std::thread thread_;
   bool begun_ = false;

@@ -5,16 +5,10 @@
 #include <openssl/hmac.h>
 #include <openssl/rand.h>
 
-#include <sys/stat.h>
-
-#include <cerrno>
-#include <cstdio>
 #include <cstring>
 #include <stdexcept>
 
-#include "core/input_error.h"
 #include "farm/build_info.h"
-#include "image/atomic_file.h"
 
 namespace prt {
 namespace {
@@ -85,17 +79,6 @@ std::string portFileText(const std::string& port, const Secret& secret,
   std::string text = port + "\nsecret " + secretHex(secret) + "\n";
   for (const std::string& address : tcp) text += "tcp " + address + "\n";
   return text;
-}
-
-void writePortFile(const std::string& path, const std::string& port, const Secret& secret,
-                   const std::vector<std::string>& tcp) {
-  writeFileAtomically(path, [&](std::FILE* f) {
-    if (::fchmod(::fileno(f), 0600) != 0) {
-      throw InputError("cannot make the port file '" + path + "' private: " +
-                       std::strerror(errno));
-    }
-    std::fputs(portFileText(port, secret, tcp).c_str(), f);
-  });
 }
 
 PortFile parsePortFile(const std::string& text) {

@@ -34,10 +34,7 @@ struct PortFile {
   std::vector<std::string> tcp;  // the TCP door's addresses (none: an MPI port only)
 };
 PortFile parsePortFile(const std::string& text);
-// Writes the port file atomically, readable by its owner only (whoever reads it can join): the
-// mode is set on the temporary file before anything is written. Throws InputError.
-void writePortFile(const std::string& path, const std::string& port, const Secret& secret,
-                   const std::vector<std::string>& tcp);
+// The file itself is written by net/port_file.h's PortFileClaim.
 
 // A joiner's answer: 32 bytes of HMAC of (challenge, build, host), then its build
 // description (farm/build_info.h), a zero byte and its machine's name.

@@ -1,7 +1,5 @@
 #include "net/local_door.h"
 
-#include <filesystem>
-
 #include "core/input_error.h"
 #include "drive/mailbox.h"
 #include "net/invitation.h"
@@ -12,7 +10,7 @@ namespace prt {
 
 LocalDoorTransport::LocalDoorTransport(Transport& master, LocalNetwork& network,
                                        std::unique_ptr<TcpDoor> door, Bytes welcome,
-                                       std::string portFile,
+                                       PortFileClaim portFile,
                                        std::shared_ptr<std::vector<std::string>> refused)
     : master_(master),
       network_(network),
@@ -31,8 +29,7 @@ LocalDoorTransport::LocalDoorTransport(Transport& master, LocalNetwork& network,
 LocalDoorTransport::~LocalDoorTransport() {
   network_.setRelay({});
   door_->stopAdmitting();
-  std::error_code ignored;
-  std::filesystem::remove(portFile_, ignored);  // no more joiners
+  portFile_.release();  // no more joiners
   if (refused_) *refused_ = door_->refused();
   door_->flush(2.0);
   door_->closeAll();
@@ -87,10 +84,11 @@ std::function<std::unique_ptr<Transport>(Transport&, LocalNetwork&)> localDoor(
     } catch (const std::exception& e) {
       throw InputError(std::string("--accept-workers: ") + e.what());
     }
-    writePortFile(portFile, "", secret, door->addresses());  // no MPI port: an empty line
+    // No MPI port: an empty first line.
+    PortFileClaim claim(portFile, portFileText("", secret, door->addresses()));
     if (opened) opened(*door);
     return std::unique_ptr<Transport>(std::make_unique<LocalDoorTransport>(
-        master, network, std::move(door), welcome, portFile, refused));
+        master, network, std::move(door), welcome, std::move(claim), refused));
   };
 }
 

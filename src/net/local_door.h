@@ -14,6 +14,7 @@
 #include "drive/local_transport.h"
 #include "farm/parallel_options.h"
 #include "drive/transport.h"
+#include "net/port_file.h"
 #include "net/tcp_door.h"
 #include "net/tcp_joiners.h"
 
@@ -22,9 +23,9 @@ namespace prt {
 class LocalDoorTransport final : public Transport {
  public:
   // `door` is owned; `welcome` is encodeWelcome(the run's options). When it goes (the run is
-  // over), `portFile` is removed and `refused` gets why each turned-away joiner was.
+  // over), `portFile` is released (removed) and `refused` gets why each turned-away joiner was.
   LocalDoorTransport(Transport& master, LocalNetwork& network, std::unique_ptr<TcpDoor> door,
-                     Bytes welcome, std::string portFile,
+                     Bytes welcome, PortFileClaim portFile,
                      std::shared_ptr<std::vector<std::string>> refused);
   ~LocalDoorTransport() override;
 
@@ -41,12 +42,13 @@ class LocalDoorTransport final : public Transport {
   LocalNetwork& network_;
   std::unique_ptr<TcpDoor> door_;
   TcpJoiners joiners_;
-  std::string portFile_;
+  PortFileClaim portFile_;
   std::shared_ptr<std::vector<std::string>> refused_;
 };
 
 // The door of a local render's --accept-workers FILE: listens, writes FILE (private to its
-// owner, atomically) with the invitation's secret and the addresses, and returns the
+// owner, never through a link, refused while another render holds it: net/port_file.h) with
+// the invitation's secret and the addresses, and returns the
 // transport wrapper for RunRequest::wrapLocalMaster. `opened` hears of the door once it is
 // open (for the blocklist); when the wrapper goes, FILE is removed and `refused` receives why
 // each turned-away joiner was. Throws InputError when it cannot listen or write FILE.

@@ -121,7 +121,9 @@ std::string rejectedWorkers(const json& r) {
   if (percent > 0) {
     s += "<li>Spot checks (--verify " + genericValue(json(percent)) + "): " +
          formatCount(r.value("verified_pixels", uint64_t{0})) +
-         " pixels rendered again elsewhere came out bit for bit the same.</li>";
+         " pixels rendered again elsewhere came out bit for bit the same";
+    const std::string guarantee = r.value("verify_guarantee", std::string());
+    s += guarantee.empty() ? std::string(".</li>") : ": " + escapeHtml(guarantee) + ".</li>";
   }
   return s;
 }
@@ -225,7 +227,9 @@ const std::set<std::string> kKnownKeys = {"driver",
                                           "workers",
                                           "context",
                                           "timeline",
-                                          "ownership_map"};
+                                          "ownership_map",
+                                          "verify_guarantee",  // both said in words at a glance
+                                          "verify_lowest_percent"};
 
 std::string measures(const json& r) {
   const bool simulated = text(r, "driver") == "simulated";
@@ -314,6 +318,7 @@ std::string measures(const json& r) {
       return formatSeconds(value.get<double>());
     }
     if (key == "scene_bytes" && value.is_number()) return formatBytes(value.get<uint64_t>());
+
     if (key == "master_busy_share" && value.is_number()) {
       char b[32];
       std::snprintf(b, sizeof b, "%.1f %%", 100 * value.get<double>());

@@ -1,11 +1,14 @@
 #!/bin/sh
 # A render across three hosts (network namespaces on a bridge, scripts/netns-cluster.sh) over
 # TCP; mid-render one host's link goes down. The run must finish with the serial image, or
-# leave a checkpoint from which --resume gives it. Needs root; skipped (exit 77) otherwise.
-#   netns_test.sh PRT MPIEXEC SCENE WORKDIR CLUSTER_SCRIPT
+# leave a checkpoint from which --resume gives it; and, run by scripts/prt-mpirun, the whole
+# job must end within its bound after the image is written (PRT_MPIRUN_GRACE, 5 s here, after
+# rank 0's last word, plus 2 s), although mpirun itself waits for the cut-off host's daemon for
+# ever. Needs root; skipped (exit 77) otherwise.
+#   netns_test.sh PRT MPIEXEC SCENE WORKDIR CLUSTER_SCRIPT WRAPPER
 set -eu
 
-prt=$1 mpiexec=$2 scene=$3 work=$4 cluster=$5
+prt=$1 mpiexec=$2 scene=$3 work=$4 cluster=$5 wrapper=$6
 skip() { echo "SKIP: $*"; exit 77; }
 fail() { echo "FAIL: $*" >&2; exit 1; }
 [ "$(id -u)" -eq 0 ] || skip "making network namespaces needs root"
@@ -49,7 +52,8 @@ step="rendering across the hosts"
 start_run() {
   rm -f ck out.pfm report.json
   # shellcheck disable=SC2086,SC2046
-  "$mpiexec" $(cat "$hosts/mpirun-flags") --enable-recovery --hostfile "$hosts/hostfile" -np 3 \
+  MPIRUN=$mpiexec PRT_MPIRUN_GRACE=5 sh "$wrapper" $(cat "$hosts/mpirun-flags") --enable-recovery \
+    --hostfile "$hosts/hostfile" -np 3 \
     "$prt" render "$scene" $geometry -q --strategy scatter --speed-index none \
     --slowdown 60,1000 --batch 8 --worker-timeout 2 \
     -o out.pfm --checkpoint ck --checkpoint-every 0.1 --report report.json >out.txt 2>err.txt &
@@ -75,13 +79,25 @@ step="cutting prt-h2 off"
 bash "$cluster" link-down 2  # worker rank 2 (worker 1) is on prt-h2
 step="waiting for the image without prt-h2"
 echo "link of prt-h2 down"
-# The master finishes the image with the hosts it can reach; mpirun itself may wait for the
-# cut-off host's daemon long after, which is not the image's concern.
+# The master finishes the image with the hosts it can reach; mpirun itself waits for the
+# cut-off host's daemon, and scripts/prt-mpirun ends it within its bound.
 for i in $(seq 1 600); do
   [ -f out.pfm ] && break
   kill -0 "$job" 2>/dev/null || break
   sleep 0.1
 done
+image_at=$(date +%s.%N)
+step="waiting for the job to end after the image"
+ended=
+if [ -f out.pfm ]; then
+  for i in $(seq 1 600); do
+    if ! kill -0 "$job" 2>/dev/null; then
+      ended=$(date +%s.%N)
+      break
+    fi
+    sleep 0.1
+  done
+fi
 grep -v "PMIX ERROR" err.txt >&2 || true
 step="checking the outcome"
 if [ -f out.pfm ]; then
@@ -98,6 +114,13 @@ r = json.load(open("report.json"))
 assert [l["worker"] for l in r["lost_workers"]] == [1], r["lost_workers"]
 print("finished without the cut-off host; lost:", r["lost_workers"])
 PY
+  [ -n "$ended" ] || fail "the job had not ended 60 s after its image was written"
+  after=$(awk "BEGIN { printf \"%.1f\", $ended - $image_at }")
+  echo "the job ended $after s after its image was written"
+  wait "$job" && code=0 || code=$?
+  job=
+  [ "$code" -eq 0 ] || fail "prt-mpirun exited $code after a complete image"
+  awk "BEGIN { exit !($after < 20) }" || fail "the job ended $after s after its image (bound 5 s + 2 s after rank 0's last word)"
 else
   [ -f ck ] || fail "neither an image nor a checkpoint"
   # shellcheck disable=SC2086

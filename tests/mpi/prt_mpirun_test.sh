@@ -3,7 +3,9 @@
 #   - an mpirun that hangs after its ranks have ended (only zombies under it, as Open MPI
 #     4.1's mpirun does when a rank is killed at start-up) is ended after PRT_MPIRUN_GRACE
 #     seconds, with the exit code rank 0 wrote, else 1;
-#   - an mpirun with a live rank is not ended however long it runs;
+#   - an mpirun with a live rank is not ended however long it runs, until rank 0 has recorded
+#     its code; then it is ended PRT_MPIRUN_GRACE seconds later with what it started (the
+#     daemon of a host whose link was cut keeps mpirun waiting for ever), exit rank 0's code;
 #   - mpirun's own non-zero status wins; else rank 0's recorded code; else 1;
 #   - a master killed without a record, whose checkpoint exists, gets its resume command said
 #     (the arguments given, with --resume); not when the checkpoint is gone or the master
@@ -25,6 +27,8 @@ fail() { echo "FAIL: $*" >&2; exit 1; }
 #   killed 1|0     rank 0 names its checkpoint ck.ckpt (1: and writes it), then mpirun exits
 #                  137, as when it kills the master after another rank died
 #   spoke CODE     rank 0 names ck.ckpt, writes it, records CODE; mpirun exits 0
+#   unreachable CODE  rank 0 records CODE and exits; a daemon (its pid in daemon.pid) lives on
+#                  and mpirun waits for it for ever, as for the daemon of a host cut off
 cat >fake-mpirun <<'PY'
 #!/usr/bin/env python3
 import os, sys, time
@@ -43,6 +47,21 @@ if mode in ("killed", "spoke"):
         record(value)
         sys.exit(0)
     sys.exit(137)
+if mode == "unreachable":
+    daemon = os.fork()
+    if daemon == 0:
+        while True:
+            time.sleep(60)
+    with open("daemon.pid", "w") as f:
+        f.write(f"{daemon}\n")
+    rank = os.fork()
+    if rank == 0:
+        time.sleep(1)
+        record(value)
+        os._exit(0)
+    os.waitpid(rank, 0)
+    os.waitpid(daemon, 0)
+    sys.exit(0)
 pid = os.fork()
 if pid == 0:
     if mode == "live":
@@ -80,6 +99,16 @@ run hang -1
 run live 5
 [ "$status" -eq 0 ] || fail "an mpirun with a rank alive for 5 s (grace 2 s): exit $status"
 grep -q "has not ended" err.txt && fail "an mpirun with a live rank was ended"
+run unreachable 3
+[ "$status" -eq 3 ] || fail "mpirun waiting for an unreachable daemon, rank 0's code 3: exit $status"
+[ "$elapsed" -lt 12 ] || fail "mpirun waiting for an unreachable daemon was ended after $elapsed s"
+grep -q "after rank 0 finished" err.txt || fail "no word about ending mpirun: $(cat err.txt)"
+daemon=$(cat daemon.pid)
+sleep 0.2
+if kill -0 "$daemon" 2>/dev/null && ! grep -q '^State:.*Z' "/proc/$daemon/status" 2>/dev/null; then
+  kill -9 "$daemon"
+  fail "the daemon mpirun started was left running"
+fi
 run exit 7
 [ "$status" -eq 7 ] || fail "mpirun's own status 7: exit $status"
 run record 2
