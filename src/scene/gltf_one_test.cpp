@@ -136,6 +136,13 @@ TEST_F(HostileGltfOne, GltfOneFilesOfEveryKindAreRead) {
   batch.read(write("number.gltf", gltfOne({R"("version":"1.0")", R"("version":1)"})), objects(1));
   batch.read(write("unversioned.gltf", gltfOne({R"("asset":{"version":"1.0"},)", ""})), objects(1));
   batch.read(write("one.glb", glbOne(gltfOne())), objects(1));
+  // A 2.0 file (arrays) that says 1.0 is read as what it is, by the glTF 2.0 reader.
+  std::string mislabelled = Gltf().json();
+  mislabelled.replace(mislabelled.find(R"("version":"2.0")"), 15, R"("version":"1.0")");
+  batch.read(write("mislabelled.gltf", mislabelled), [](const Outcome& o) {
+    EXPECT_EQ(o.kind, Kind::returned) << o;
+    EXPECT_EQ(o.message, "objects 1, lights 0, cameras 0, textures 0 (glTF 2.0)") << o;
+  }, {}, [](const ImportedModel& m) { return counts(m) + " (" + m.format + ")"; });
   // Without an extension, known by its magic: assimp tells a binary glTF 1.0 by its name
   // alone, so this one is refused, naming the file and what it is.
   const std::string unnamed = write("binary-one", glbOne(gltfOne()));
@@ -169,7 +176,7 @@ TEST_F(HostileGltfOne, MalformedGltfOneFilesAreRefusedNamingTheFile) {
       {"indices-past-buffer.gltf", gltfOne({R"("count":3,"type":"SCALAR")", R"("count":3000000000,"type":"SCALAR")"})},
       {"missing-buffer.gltf", gltfOne({R"("uri":"data:)", R"("uri":"missing.bin","x":"data:)"})},
       {"node-cycle.gltf", gltfOne({R"("n":{"meshes":["m"]})", R"("n":{"meshes":["m"],"children":["n"]})"})},
-      {"wrong-types.gltf", R"({"asset":{"version":"1.0"},"accessors":[1,2,3],"meshes":7})"},
+      {"wrong-types.gltf", R"({"asset":{"version":"1.0"},"accessors":{"a":7},"meshes":7})"},
       {"unversioned-broken.gltf", R"({"meshes":{"m":{"primitives":[{"attributes":{"POSITION":"p"}}]}}})"},
   };
   Batch batch;
@@ -180,9 +187,17 @@ TEST_F(HostileGltfOne, MalformedGltfOneFilesAreRefusedNamingTheFile) {
       EXPECT_TRUE(contains(o.message, "(glTF 1.0, read with assimp)")) << o;
     });
   }
-  // Cut short, the JSON says nothing of its version: refused as glTF.
-  const std::string cut = write("cut.gltf", gltfOne().substr(0, 300));
-  batch.read(cut, [cut](const Outcome& o) { EXPECT_REFUSED(o, cut); });
+  // Cut short, the JSON says nothing of its version; with 2.0's arrays it is 2.0 whatever its
+  // version says: both refused as glTF 2.0 files.
+  for (const auto& [name, text] :
+       {std::pair<std::string, std::string>{"cut.gltf", gltfOne().substr(0, 300)},
+        {"arrays.gltf", R"({"asset":{"version":"1.0"},"accessors":[1,2,3],"meshes":7})"}}) {
+    const std::string path = write(name, text);
+    batch.read(path, [path](const Outcome& o) {
+      EXPECT_REFUSED(o, path);
+      EXPECT_TRUE(contains(o.message, "could not be read as glTF")) << o;
+    });
+  }
   batch.run(60);
 }
 

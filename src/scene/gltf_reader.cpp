@@ -4,8 +4,9 @@
 // textures with their samplers and KHR_texture_transform, cameras and KHR_lights_punctual,
 // and, when the file's animations move any of those, the node tree they hang from as a ModelRig
 // (its channels read by gltf_animation.h). glTF 1.0, which tinygltf does not read (a binary
-// glTF of version 1, or JSON whose asset.version says 1, or that has no version and 1.0's
-// collections keyed by id), is handed to assimp's reader, contained (readAssimpFileContained).
+// glTF of version 1; JSON whose asset.version says 1 and whose collections are not 2.0's
+// arrays; JSON with no version and 1.0's collections keyed by id), is handed to assimp's
+// reader, contained (readAssimpFileContained).
 //
 // tinygltf parses the JSON and loads buffers and images; every index and byte range it
 // leaves unchecked is checked here before it is read, and every file it reads goes through
@@ -293,15 +294,23 @@ bool versionOne(const std::string& version) {
   return version == "1" || version.rfind("1.", 0) == 0;
 }
 
-// Throws GltfVersionOne when the JSON text of a glTF file declares glTF 1.0: its asset.version
-// says so (a string, or the number 1 as some 1.0 exporters wrote it), or, with no version, it
-// writes its collections as 1.0 does, objects keyed by id rather than 2.0's arrays. assimp
-// reads 1.0 only with its version written: an unversioned file is given to it with
-// "asset":{"version":"1.0"} added. The text has been checked against deep nesting
-// (nestsDeeperThan) before it is parsed.
+// Throws GltfVersionOne when the JSON text of a glTF file is glTF 1.0: its asset.version says
+// so (a string, or the number 1 as some 1.0 exporters wrote it) and its collections are not
+// 2.0's arrays (a 2.0 file that says 1.0 is read as what it is), or, with no version, its
+// collections are 1.0's objects keyed by id. assimp reads 1.0 only with its version written:
+// an unversioned file is given to it with "asset":{"version":"1.0"} added. The text has been
+// checked against deep nesting (nestsDeeperThan) before it is parsed.
 void throwIfVersionOne(std::string_view text) {
   nlohmann::json json = nlohmann::json::parse(text, nullptr, false);
   if (!json.is_object()) return;
+  bool keyed = false, listed = false;
+  for (const char* key : {"accessors", "bufferViews", "buffers", "meshes", "nodes", "materials", "scenes"}) {
+    const auto found = json.find(key);
+    if (found == json.end()) continue;
+    keyed = keyed || found->is_object();
+    listed = listed || found->is_array();
+  }
+  if (listed && !keyed) return;
   const auto asset = json.find("asset");
   if (asset != json.end() && asset->is_object()) {
     const auto version = asset->find("version");
@@ -314,13 +323,10 @@ void throwIfVersionOne(std::string_view text) {
       return;
     }
   }
-  for (const char* key : {"accessors", "bufferViews", "buffers", "meshes", "nodes", "materials", "scenes"}) {
-    const auto found = json.find(key);
-    if (found != json.end() && found->is_object()) {
-      if (!json["asset"].is_object()) json["asset"] = nlohmann::json::object();
-      json["asset"]["version"] = "1.0";
-      throw GltfVersionOne{json.dump()};
-    }
+  if (keyed) {
+    if (!json["asset"].is_object()) json["asset"] = nlohmann::json::object();
+    json["asset"]["version"] = "1.0";
+    throw GltfVersionOne{json.dump()};
   }
 }
 
@@ -453,8 +459,7 @@ class GltfReader {
         "KHR_lights_punctual",       "KHR_materials_emissive_strength", "KHR_materials_ior",
         "KHR_materials_transmission", "KHR_materials_unlit",            "KHR_materials_volume",
         "KHR_texture_transform",     "KHR_mesh_quantization",           "KHR_materials_pbrSpecularGlossiness"};
-    if (ok && versionOne(model_.asset.version)) throw GltfVersionOne{};
-    if (!ok && !binary) throwIfVersionOne(jsonText(head, binary));
+    if (!binary && (!ok || versionOne(model_.asset.version))) throwIfVersionOne(jsonText(head, binary));
     if (!ok) {
       // A file that needs an extension PRT does not read (Draco's compressed meshes, whose
       // accessors have no buffer views) fails in tinygltf first: name the extension.
