@@ -391,11 +391,12 @@ class PovWriter {
     const bool textured = m.colorTexture.texture >= 0 && !mesh.uvs.empty();
     const bool perVertex = !mesh.colors.empty();
     MeshExtras extras;
-    if (textured) extras.uv = &m.colorTexture.uv;
+    const UvTransform uv = textured ? povUv(m.colorTexture) : UvTransform();
+    if (textured) extras.uv = &uv;
     if (perVertex) extras.vertexColors = &m;
     std::string key = std::to_string(reinterpret_cast<uintptr_t>(&mesh));
     if (textured) {
-      for (const double v : m.colorTexture.uv.m) key += " " + num(v);
+      for (const double v : uv.m) key += " " + num(v);
     }
     if (perVertex) key += " material " + std::to_string(declared_.size());  // its own each time
     auto [at, added] = declared_.try_emplace(key, "PRT_mesh_" + std::to_string(declared_.size()));
@@ -420,8 +421,22 @@ class PovWriter {
     line(out, 0, "}");
   }
 
+  // POV-Ray's image maps repeat, and it has no mirrored repeat: a texture mirrored along u
+  // (v) is written with its mirror image beside (below) it, twice as wide (high), and its
+  // coordinates are halved along that axis, which repeats as the mirrored texture does.
+  UvTransform povUv(const TextureRef& ref) const {
+    const Texture& texture = scene_.textures[static_cast<size_t>(ref.texture)];
+    UvTransform uv = ref.uv;
+    for (int i = 0; i < 3; ++i) {
+      if (texture.wrapU == TextureWrap::mirror) uv.m[static_cast<size_t>(i)] *= 0.5;
+      if (texture.wrapV == TextureWrap::mirror) uv.m[static_cast<size_t>(3 + i)] *= 0.5;
+    }
+    return uv;
+  }
+
   // The material's texture times its colour as an image map: POV-Ray's pigments cannot be
-  // multiplied by a colour, so the product is written as the image.
+  // multiplied by a colour, so the product is written as the image (with its mirror images
+  // for a mirrored texture, povUv).
   std::string imagePigment(const Material& m) {
     const Texture& texture = scene_.textures[static_cast<size_t>(m.colorTexture.texture)];
     std::string key = std::to_string(m.colorTexture.texture) + " " + vec(m.color);
@@ -429,15 +444,20 @@ class PovWriter {
     if (added) {
       at->second = stem_ + "_texture" + std::to_string(images_.size()) + ".png";
       const TextureImage& source = *texture.image;
-      Image image(source.width, source.height);
-      for (int y = 0; y < source.height; ++y) {
-        for (int x = 0; x < source.width; ++x) {
-          const size_t i = static_cast<size_t>(y) * static_cast<size_t>(source.width) + static_cast<size_t>(x);
+      const bool mirrorU = texture.wrapU == TextureWrap::mirror;
+      const bool mirrorV = texture.wrapV == TextureWrap::mirror;
+      const int width = source.width, height = source.height;
+      Image image(mirrorU ? 2 * width : width, mirrorV ? 2 * height : height);
+      for (int y = 0; y < image.height(); ++y) {
+        for (int x = 0; x < image.width(); ++x) {
+          const int sx = x < width ? x : 2 * width - 1 - x;
+          const int sy = y < height ? y : 2 * height - 1 - y;
+          const size_t i = static_cast<size_t>(sy) * static_cast<size_t>(width) + static_cast<size_t>(sx);
           const uint8_t* p = source.texels.data() + i * static_cast<size_t>(source.channels);
           const Color c = source.channels >= 3
                               ? Color(srgbToLinear(p[0]), srgbToLinear(p[1]), srgbToLinear(p[2]))
                               : Color(srgbToLinear(p[0]));
-          image.set(i, c * m.color);
+          image.set(x, y, c * m.color);
         }
       }
       images_.push_back({at->second, std::move(image)});
@@ -448,8 +468,8 @@ class PovWriter {
     std::string map = "pigment { uv_mapping image_map { png \"" + at->second + "\" interpolate 2";
     if (transmit > 0) map += " transmit all " + num(transmit);
     map += " } }";
-    if (texture.wrapU != TextureWrap::repeat || texture.wrapV != TextureWrap::repeat) {
-      map += "  // PRT clamps or mirrors this texture; POV-Ray repeats it";
+    if (texture.wrapU == TextureWrap::clamp || texture.wrapV == TextureWrap::clamp) {
+      map += "  // PRT clamps this texture; POV-Ray repeats it";
     }
     return map;
   }

@@ -270,3 +270,52 @@ TEST(PovExporter, MeshesAreMesh2) {
 
 }  // namespace
 }  // namespace prt
+
+namespace prt {
+namespace {
+
+// POV-Ray's image maps only repeat. A texture mirrored along u (glTF's MIRRORED_REPEAT, which
+// Khronos's BoxTextured uses to show its logo the right way round on every face) is written
+// with its mirror image beside it and u halved: texel (x, y) of the mirrored texture at u in
+// [1, 2) is texel (2w - 1 - x, y) of the written image at u / 2, as PRT samples it.
+TEST(PovExporter, MirroredTextureIsWrittenWithItsMirrorImage) {
+  Scene scene = testScene();
+  auto image = std::make_shared<TextureImage>();
+  image->width = 2;
+  image->height = 1;
+  image->channels = 3;
+  image->texels = {255, 0, 0, 0, 0, 255};  // red, blue
+  Texture texture;
+  texture.image = image;
+  texture.wrapU = TextureWrap::mirror;
+  scene.textures.push_back(texture);
+  auto mesh = std::make_shared<TriangleMesh>();
+  mesh->vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  mesh->triangles = {{0, 1, 2}};
+  mesh->uvs = {{{1.5f, 0.25f}}, {{2.0f, 0.25f}}, {{1.0f, 0.75f}}};
+  Material m;
+  m.color = {1, 1, 1};
+  m.colorTexture.texture = 0;
+  scene.objects.push_back({InstanceShape{mesh, Transform::identity()}, m});
+  const PovExport out = exportPovray(scene, {});
+  ASSERT_EQ(out.images.size(), 1u);
+  const Image& written = out.images[0].image;
+  ASSERT_EQ(written.width(), 4);
+  ASSERT_EQ(written.height(), 1);
+  EXPECT_EQ(written.at(0, 0), Color(1, 0, 0));
+  EXPECT_EQ(written.at(1, 0), Color(0, 0, 1));
+  EXPECT_EQ(written.at(2, 0), Color(0, 0, 1));
+  EXPECT_EQ(written.at(3, 0), Color(1, 0, 0));
+  // u halved; v turned to POV-Ray's v up.
+  EXPECT_TRUE(contains(out.text, "<0.75, 0.75>, <1, 0.75>, <0.5, 0.25>")) << out.text;
+  EXPECT_FALSE(contains(out.text, "POV-Ray repeats it")) << out.text;
+  // A clamped texture is written as it is, with a note that POV-Ray repeats it.
+  scene.textures[0].wrapU = TextureWrap::clamp;
+  const PovExport clamped = exportPovray(scene, {});
+  EXPECT_EQ(clamped.images[0].image.width(), 2);
+  EXPECT_TRUE(contains(clamped.text, "<1.5, 0.75>, <2, 0.75>, <1, 0.25>")) << clamped.text;
+  EXPECT_TRUE(contains(clamped.text, "PRT clamps this texture; POV-Ray repeats it")) << clamped.text;
+}
+
+}  // namespace
+}  // namespace prt

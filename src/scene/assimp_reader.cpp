@@ -1,8 +1,8 @@
-// readAssimpFile: OBJ+MTL, FBX, COLLADA, PLY, STL, 3DS and the other formats assimp reads,
-// translated: assimp's node tree with its transforms (a mesh referenced by several nodes is one
-// TriangleMesh, placed by each), materials by mapPbrMaterial when the file has physically
-// based keys and by mapCommonMaterial otherwise, diffuse and emissive textures (files found
-// by findTextureFile, or embedded ones), cameras and lights.
+// readAssimpFile: OBJ+MTL, FBX, COLLADA, PLY, STL, 3DS, glTF 1.0 and the other formats assimp
+// reads, translated: assimp's node tree with its transforms (a mesh referenced by several
+// nodes is one TriangleMesh, placed by each), materials by mapPbrMaterial when the file has
+// physically based keys and by mapCommonMaterial otherwise, diffuse and emissive textures
+// (files found by findTextureFile, or embedded ones), cameras and lights.
 //
 // Only the post-processing steps PRT needs are asked for (triangulation, sorting primitives
 // by type, and assimp's own validation of what it built); node transforms are applied here,
@@ -14,6 +14,7 @@
 #include <assimp/scene.h>
 
 #include <assimp/DefaultIOSystem.h>
+#include <assimp/MemoryIOWrapper.h>
 #include <assimp/ObjMaterial.h>
 #include <assimp/Importer.hpp>
 #include <algorithm>
@@ -57,11 +58,15 @@ Color color(const aiColor3D& c) { return {c.r, c.g, c.b}; }
 // The files assimp opens itself (the model, an OBJ's MTL, the parts of multi-file formats),
 // checked as PRT checks every file it reads: a regular file of at most 2 GiB. A FIFO would
 // block assimp for ever, a device might never end. What is turned away (or missing) is
-// remembered for the warnings.
+// remembered for the warnings. The model itself is read from `text` when that is given.
 class BoundedFiles : public Assimp::DefaultIOSystem {
  public:
+  BoundedFiles(const std::string& model, const std::string& text) : model_(model), text_(text) {}
   bool Exists(const char* file) const override { return !resolved(file).empty(); }
   Assimp::IOStream* Open(const char* file, const char* mode = "rb") override {
+    if (!text_.empty() && fs::path(file).lexically_normal() == fs::path(model_).lexically_normal()) {
+      return new Assimp::MemoryIOStream(reinterpret_cast<const uint8_t*>(text_.data()), text_.size());
+    }
     const std::string path = resolved(file);
     if (path.empty()) {
       turnedAway.insert(file);
@@ -72,6 +77,8 @@ class BoundedFiles : public Assimp::DefaultIOSystem {
   std::set<std::string> turnedAway;
 
  private:
+  const std::string& model_;
+  const std::string& text_;  // empty: the model's own bytes
   // The file, or an absolute path that assimp joined onto the model's folder (an OBJ's
   // "mtllib /abs/path.mtl" asked for as "folder//abs/path.mtl"); empty when neither is usable.
   static std::string resolved(const char* file) {
@@ -93,8 +100,8 @@ class BoundedFiles : public Assimp::DefaultIOSystem {
 
 class AssimpReader {
  public:
-  AssimpReader(const std::string& path, const ModelReadOptions& options)
-      : path_(path), directory_(fs::path(path).parent_path()), budget_(options.textureBudgetBytes) {
+  AssimpReader(const std::string& path, const ModelReadOptions& options, const std::string& text)
+      : path_(path), text_(text), directory_(fs::path(path).parent_path()), budget_(options.textureBudgetBytes) {
     notes_.file = path;
     notes_.strict = options.strict;
   }
@@ -105,7 +112,7 @@ class AssimpReader {
       throw ModelFileError("model file \"" + path_ + "\" is not a regular file");
     }
     Assimp::Importer importer;
-    auto* files = new BoundedFiles;  // the importer owns it
+    auto* files = new BoundedFiles(path_, text_);  // the importer owns it
     importer.SetIOHandler(files);
     // Points and lines come out as meshes of their own, which are skipped and counted.
     scene_ = importer.ReadFile(path_, aiProcess_Triangulate | aiProcess_SortByPType |
@@ -257,8 +264,12 @@ class AssimpReader {
       result = mapPbrMaterial(in);
     } else {
       CommonMaterialInputs in;
-      if (m.Get(AI_MATKEY_COLOR_DIFFUSE, c) == AI_SUCCESS) in.diffuse = color(c);
+      const bool hasDiffuse = m.Get(AI_MATKEY_COLOR_DIFFUSE, c) == AI_SUCCESS;
+      if (hasDiffuse) in.diffuse = color(c);
       in.diffuseTexture = textureRef(m, aiTextureType_DIFFUSE, name);
+      // A texture with no colour beside it is the colour: glTF 1.0's common materials give the
+      // diffuse as a colour or as a texture, and assimp then sets no colour.
+      if (!hasDiffuse && in.diffuseTexture.texture >= 0) in.diffuse = {1, 1, 1};
       if (m.Get(AI_MATKEY_COLOR_SPECULAR, c) == AI_SUCCESS) in.specular = color(c);
       float strength = 1;
       if (m.Get(AI_MATKEY_SHININESS_STRENGTH, strength) == AI_SUCCESS && strength >= 0) {
@@ -478,6 +489,7 @@ class AssimpReader {
   }
 
   const std::string path_;
+  const std::string& text_;
   const fs::path directory_;
   size_t budget_;
   const aiScene* scene_ = nullptr;
@@ -493,8 +505,9 @@ class AssimpReader {
 
 }  // namespace
 
-ImportedModel readAssimpFile(const std::string& path, const ModelReadOptions& options) {
-  return AssimpReader(path, options).read();
+ImportedModel readAssimpFile(const std::string& path, const ModelReadOptions& options,
+                             const std::string& text) {
+  return AssimpReader(path, options, text).read();
 }
 
 }  // namespace prt

@@ -169,12 +169,13 @@ LoadedMesh loadMeshFileContained(const MeshSource& source) {
   }
 }
 
-ImportedModel readAssimpFileContained(const std::string& path, const ModelReadOptions& options) {
+ImportedModel readAssimpFileContained(const std::string& path, const ModelReadOptions& options,
+                                      const std::string& text) {
   std::vector<uint8_t> bytes;
   try {
     bytes = runContained(
         [&] {
-          const ImportedModel model = readAssimpFile(path, options);
+          const ImportedModel model = readAssimpFile(path, options, text);
           Scene scene;
           scene.objects = model.objects;
           scene.textures = model.textures;

@@ -33,6 +33,7 @@ uint64_t foreignReaderMemoryBytes(uint64_t fileBytes, uint64_t textureBudgetByte
 
 // loadMeshFileHere and readAssimpFile in a child process.
 LoadedMesh loadMeshFileContained(const MeshSource& source);
-ImportedModel readAssimpFileContained(const std::string& path, const ModelReadOptions& options);
+ImportedModel readAssimpFileContained(const std::string& path, const ModelReadOptions& options,
+                                      const std::string& text = {});
 
 }  // namespace prt

@@ -3,7 +3,10 @@
 // primitive a TriangleMesh shared by every node that uses it, materials by mapPbrMaterial,
 // textures with their samplers and KHR_texture_transform, cameras and KHR_lights_punctual,
 // and, when the file's animations move any of those, the node tree they hang from as a ModelRig
-// (its channels read by gltf_animation.h).
+// (its channels read by gltf_animation.h). glTF 1.0, which tinygltf does not read (a binary
+// glTF of version 1; JSON whose asset.version says 1 and whose collections are not 2.0's
+// arrays; JSON with no version and 1.0's collections keyed by id), is handed to assimp's
+// reader, contained (readAssimpFileContained).
 //
 // tinygltf parses the JSON and loads buffers and images; every index and byte range it
 // leaves unchecked is checked here before it is read, and every file it reads goes through
@@ -27,6 +30,7 @@
 #include <string_view>
 #include <tuple>
 
+#include "scene/contained_readers.h"
 #include "scene/gltf_accessor.h"
 #include "scene/gltf_animation.h"
 #include "scene/material_mapping.h"
@@ -160,6 +164,27 @@ std::string glbProblem(const std::vector<unsigned char>& b) {
   return {};
 }
 
+// Why the bytes of a binary glTF 1.0 (KHR_binary_glTF: a 20-byte header of magic, version 1,
+// length, content length and content format 0 for JSON, then the JSON, then the binary body)
+// are not one, or empty. assimp, which reads these, says only that no reader suits a file
+// whose header lies.
+std::string glbOneProblem(const std::vector<unsigned char>& b) {
+  auto u32 = [&](size_t at) {
+    uint32_t v;
+    std::memcpy(&v, b.data() + at, 4);
+    return v;
+  };
+  if (b.size() < 20) return "it is shorter than a binary glTF 1.0 header";
+  if (u32(8) != b.size()) {
+    return "its header says " + std::to_string(u32(8)) + " bytes, the file has " + std::to_string(b.size());
+  }
+  if (u32(12) > b.size() - 20) return "its JSON reaches past the end of the file";
+  // The body starts at the next multiple of 4 (the JSON padded with spaces to it).
+  if ((uint64_t{u32(12)} + 3) / 4 * 4 > b.size() - 20) return "its JSON is not padded to a multiple of 4 bytes";
+  if (u32(16) != 0) return "its content is not JSON (format " + std::to_string(u32(16)) + ")";
+  return {};
+}
+
 // The JSON text of a glTF file: the whole of a .gltf, the first chunk of a .glb (whose header
 // glbProblem has checked).
 std::string_view jsonText(const std::vector<unsigned char>& bytes, bool binary) {
@@ -258,6 +283,53 @@ bool nestsDeeperThan(const unsigned char* text, size_t size, int limit) {
   return false;
 }
 
+// Thrown by GltfReader when the file is glTF 1.0, which tinygltf does not read: readGltfFile
+// then reads it with assimp, from `text` when that is not empty.
+struct GltfVersionOne {
+  std::string text;
+};
+
+// Whether an asset.version names glTF 1.0: "1", "1.0", "1.0.1" and the like.
+bool versionOne(const std::string& version) {
+  return version == "1" || version.rfind("1.", 0) == 0;
+}
+
+// Throws GltfVersionOne when the JSON text of a glTF file is glTF 1.0: its asset.version says
+// so (a string, or the number 1 as some 1.0 exporters wrote it) and its collections are not
+// 2.0's arrays (a 2.0 file that says 1.0 is read as what it is), or, with no version, its
+// collections are 1.0's objects keyed by id. assimp reads 1.0 only with its version written:
+// an unversioned file is given to it with "asset":{"version":"1.0"} added. The text has been
+// checked against deep nesting (nestsDeeperThan) before it is parsed.
+void throwIfVersionOne(std::string_view text) {
+  nlohmann::json json = nlohmann::json::parse(text, nullptr, false);
+  if (!json.is_object()) return;
+  bool keyed = false, listed = false;
+  for (const char* key : {"accessors", "bufferViews", "buffers", "meshes", "nodes", "materials", "scenes"}) {
+    const auto found = json.find(key);
+    if (found == json.end()) continue;
+    keyed = keyed || found->is_object();
+    listed = listed || found->is_array();
+  }
+  if (listed && !keyed) return;
+  const auto asset = json.find("asset");
+  if (asset != json.end() && asset->is_object()) {
+    const auto version = asset->find("version");
+    if (version != asset->end()) {
+      if (version->is_string() ? versionOne(version->get<std::string>())
+                               : version->is_number() && version->get<double>() >= 1 &&
+                                     version->get<double>() < 2) {
+        throw GltfVersionOne{};
+      }
+      return;
+    }
+  }
+  if (keyed) {
+    if (!json["asset"].is_object()) json["asset"] = nlohmann::json::object();
+    json["asset"]["version"] = "1.0";
+    throw GltfVersionOne{json.dump()};
+  }
+}
+
 // --- the reader ------------------------------------------------------------------------------
 
 double number(const tinygltf::Value& v, const std::string& key, double fallback) {
@@ -335,6 +407,13 @@ class GltfReader {
       throw ModelFileError("model file " + headError.substr(0, headError.size() - 1));
     }
     const bool binary = head.size() >= 4 && std::memcmp(head.data(), "glTF", 4) == 0;
+    // A binary glTF 1.0 (KHR_binary_glTF) says version 1 after its magic.
+    if (binary && head.size() >= 8 && head[4] == 1 && head[5] == 0 && head[6] == 0 && head[7] == 0) {
+      if (const std::string why = glbOneProblem(head); !why.empty()) {
+        throw ModelFileError("model file \"" + path_ + "\" is not a binary glTF 1.0 file: " + why);
+      }
+      throw GltfVersionOne{};
+    }
     if (binary) {
       if (const std::string why = glbProblem(head); !why.empty()) {
         throw ModelFileError("model file \"" + path_ + "\" is not a binary glTF file: " + why);
@@ -380,6 +459,7 @@ class GltfReader {
         "KHR_lights_punctual",       "KHR_materials_emissive_strength", "KHR_materials_ior",
         "KHR_materials_transmission", "KHR_materials_unlit",            "KHR_materials_volume",
         "KHR_texture_transform",     "KHR_mesh_quantization",           "KHR_materials_pbrSpecularGlossiness"};
+    if (!binary && (!ok || versionOne(model_.asset.version))) throwIfVersionOne(jsonText(head, binary));
     if (!ok) {
       // A file that needs an extension PRT does not read (Draco's compressed meshes, whose
       // accessors have no buffer views) fails in tinygltf first: name the extension.
@@ -1097,7 +1177,23 @@ class GltfReader {
 }  // namespace
 
 ImportedModel readGltfFile(const std::string& path, const ModelReadOptions& options) {
-  return GltfReader(path, options).read();
+  std::string text;
+  try {
+    return GltfReader(path, options).read();
+  } catch (GltfVersionOne& one) {
+    text = std::move(one.text);
+  }
+  // glTF 1.0, which tinygltf does not read: assimp's reader, contained as for every other
+  // format it reads, with what failed said to be glTF 1.0.
+  try {
+    ImportedModel model = readAssimpFileContained(path, options, text);
+    model.format = "glTF 1.0 (assimp)";
+    return model;
+  } catch (const ModelFileError& e) {
+    const std::string named = "model file \"" + path + "\" ", what = e.what();
+    if (what.rfind(named, 0) != 0) throw ModelFileError(what + " (" + path + ": glTF 1.0, read with assimp)");
+    throw ModelFileError(named + "(glTF 1.0, read with assimp) " + what.substr(named.size()));
+  }
 }
 
 }  // namespace prt

@@ -252,12 +252,12 @@ Report readReport(const std::string& path, const ModelReadOptions& options, cons
   }
 }
 
-Outcome readIsolated(const std::string& path, const ModelReadOptions& options = {},
+[[maybe_unused]] Outcome readIsolated(const std::string& path, const ModelReadOptions& options = {},
                      const Facts& facts = nullptr, int seconds = 20) {
   return isolated([&] { return readReport(path, options, facts); }, seconds);
 }
 
-Outcome loadIsolated(const std::string& scenePath, int seconds = 20) {
+[[maybe_unused]] Outcome loadIsolated(const std::string& scenePath, int seconds = 20) {
   return isolated(
       [&]() -> Report {
         try {
@@ -277,7 +277,7 @@ Outcome loadIsolated(const std::string& scenePath, int seconds = 20) {
 bool contains(const std::string& text, const std::string& part) {
   return text.find(part) != std::string::npos;
 }
-bool anyContains(const std::vector<std::string>& lines, const std::string& part) {
+[[maybe_unused]] bool anyContains(const std::vector<std::string>& lines, const std::string& part) {
   for (const std::string& l : lines) {
     if (contains(l, part)) return true;
   }
@@ -295,7 +295,7 @@ bool anyContains(const std::vector<std::string>& lines, const std::string& part)
 }
 
 // The file was read, with a warning naming it that contains `fragment`.
-::testing::AssertionResult readWithWarning(const Outcome& o, const std::string& path,
+[[maybe_unused]] ::testing::AssertionResult readWithWarning(const Outcome& o, const std::string& path,
                                            const std::string& fragment) {
   std::ostringstream why;
   if (o.kind != Kind::returned) why << "not read; ";

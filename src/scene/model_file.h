@@ -1,6 +1,6 @@
 #pragma once
-// Model files: whole scenes made by other tools (glTF 2.0 read with tinygltf; OBJ+MTL, FBX,
-// COLLADA, PLY, STL and the other formats assimp knows, read with assimp) translated into
+// Model files: whole scenes made by other tools (glTF 2.0 read with tinygltf; glTF 1.0, OBJ+MTL,
+// FBX, COLLADA, PLY, STL and the other formats assimp knows, read with assimp) translated into
 // PRT's own terms — objects placing meshes by their node transforms (instances: a mesh used by
 // several nodes is one TriangleMesh), materials mapped onto the Hall model
 // (material_mapping.h), textures decoded (texture_file.h), lights and cameras. Everything
@@ -81,8 +81,12 @@ bool looksLikeModelFile(const std::string& path);
 
 ImportedModel readModelFile(const std::string& path, const ModelReadOptions& options = {});
 
-// The readers behind readModelFile, one per library.
+// The readers behind readModelFile, one per library. readGltfFile hands glTF 1.0 to assimp.
+// `text`, when not empty, is what readAssimpFile reads in place of the file's own bytes (a
+// glTF 1.0 file's JSON given the version it leaves out), the files it names found as the
+// file's own would be.
 ImportedModel readGltfFile(const std::string& path, const ModelReadOptions& options);
-ImportedModel readAssimpFile(const std::string& path, const ModelReadOptions& options);
+ImportedModel readAssimpFile(const std::string& path, const ModelReadOptions& options,
+                             const std::string& text = {});
 
 }  // namespace prt

@@ -5,7 +5,8 @@
 // a crash, an out-of-bounds read, a hang, a huge allocation, a leak or another exception); a
 // file that is read must give what the rest of PRT relies on: meshes with indices in range and
 // finite vertices, usable transforms, texture references in range, finite lights and cameras,
-// and warnings that name the file.
+// and warnings that name the file. An input that declares glTF 1.0 is read by assimp in a
+// contained child (readAssimpFileContained), whose failures end in that ModelFileError too.
 
 #include <unistd.h>
 
