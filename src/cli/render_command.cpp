@@ -24,6 +24,7 @@
 #include "farm/frame_renderer.h"
 #include "farm/parallel_options.h"
 #include "scene/animation.h"
+#include "scene/environment_file.h"
 #include "scene/number_text.h"
 #include "scene/scene_file.h"
 #include "sim/cost_map_file.h"
@@ -67,6 +68,18 @@ RenderSettings resolveSettings(const RenderOptions& o, Scene& scene) {
   if (!o.integrator.empty()) {
     scene.environment.integrator = o.integrator == "path" ? Integrator::path : Integrator::hall;
   }
+  EnvironmentMap& map = scene.environment.map;
+  if (!o.environment.empty()) {
+    map.file = std::filesystem::absolute(o.environment).lexically_normal().string();
+    map.image = readEnvironmentMap(o.environment);
+  }
+  if ((o.environmentStrength || o.environmentRotate) && !map.image) {
+    throw InputError("--environment-strength and --environment-rotate apply to an environment "
+                     "map: give one with --environment FILE (or the scene's environment { map "
+                     "\"FILE\" })");
+  }
+  if (o.environmentStrength) map.strength = *o.environmentStrength;
+  if (o.environmentRotate) map.rotateDegrees = *o.environmentRotate;
   applyImageSize(scene, o.width, o.height);
   if (!o.output.empty()) scene.image.output = o.output;
   const uint64_t pixels = static_cast<uint64_t>(scene.image.width) * scene.image.height;
@@ -429,6 +442,19 @@ Action addRenderCommand(CLI::App& app, const std::string& commandLine) {
                   "{ integrator ... }): path for a model file rendered directly, hall for a "
                   ".scene file that does not say")
       ->check(CLI::IsMember({"hall", "path"}));
+  cmd->add_option("--environment", o->environment,
+                  "An HDR environment map around the scene, in place of its world colour: an "
+                  "equirectangular image of linear radiance, Radiance .hdr or OpenEXR .exr "
+                  "(Blender's layout: the centre looks along +x, y is up). Lights both "
+                  "integrators; the path tracer also samples it by its brightness");
+  cmd->add_option("--environment-strength", o->environmentStrength,
+                  "Multiplies the environment map's radiance (default 1, or the scene's "
+                  "map_strength)")
+      ->check(CLI::Range(0.0, 1e6));
+  cmd->add_option("--environment-rotate", o->environmentRotate,
+                  "Turns the environment map about the up axis by this many degrees (what it "
+                  "showed at azimuth a, from +x towards +z, it shows at a + DEG)")
+      ->check(CLI::Range(-1e6, 1e6));
   cmd->add_option("--case", o->testCase,
                   "The paper's test cases: A (DRT 1, SS 8), B (1, 16), C (2, 8), D (2, 16); "
                   "--spp and --drt override")

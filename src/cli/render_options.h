@@ -30,6 +30,8 @@ struct RenderOptions : RunPlanFlags {
   std::optional<int> spp;     // SS: samples per pixel
   std::optional<int> drt;     // DRT rate
   std::string integrator;     // "hall" or "path"; empty: the scene's
+  std::string environment;    // an HDR environment map (.hdr, .exr); empty: the scene's
+  std::optional<double> environmentStrength, environmentRotate;  // over the scene's
   std::string testCase;       // A|B|C|D: sets DRT and SS as in the paper's Table III
   int threads = 0;            // serial: render threads (0: all cores); parallel: per worker
   bool quiet = false;

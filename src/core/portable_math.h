@@ -110,6 +110,60 @@ inline double tanRadians(double x) {
   return s / c;
 }
 
+// The arc tangent of any x, in (-pi/2, pi/2): the argument reduced to |t| <= 7/16 about one of
+// four points (atan 1/2, atan 1, atan 3/2, pi/2) and an odd minimax polynomial of degree 23
+// there (the coefficients and split constants of fdlibm's s_atan.c). NaN gives NaN.
+inline double atanOf(double x) {
+  constexpr double kHigh[] = {4.63647609000806093515e-01, 7.85398163397448278999e-01,
+                              9.82793723247329054082e-01, 1.57079632679489655800e+00};
+  constexpr double kLow[] = {2.26987774529616870924e-17, 3.06161699786838301793e-17,
+                             1.39033110312309984516e-17, 6.12323399573676603587e-17};
+  constexpr double kEven[] = {3.33333333333329318027e-01, 1.42857142725034663711e-01,
+                              9.09088713343650656196e-02, 6.66107313738753120669e-02,
+                              4.97687799461593236017e-02, 1.62858201153657823623e-02};
+  constexpr double kOdd[] = {-1.99999999998764832476e-01, -1.11111104054623557880e-01,
+                             -7.69187620504482999495e-02, -5.83357013379057348645e-02,
+                             -3.65315727442169155270e-02};
+  if (!(x == x)) return x;
+  const bool negative = x < 0;
+  double t = negative ? -x : x;
+  int part = -1;
+  if (t >= 0.4375) {
+    if (t < 0.6875) {
+      part = 0, t = (2.0 * t - 1.0) / (2.0 + t);
+    } else if (t < 1.1875) {
+      part = 1, t = (t - 1.0) / (t + 1.0);
+    } else if (t < 2.4375) {
+      part = 2, t = (t - 1.5) / (1.0 + 1.5 * t);
+    } else {
+      part = 3, t = -1.0 / t;
+    }
+  }
+  const double z = t * t;
+  const double w = z * z;
+  const double s1 = z * portable_math_detail::horner(w, kEven);
+  const double s2 = w * portable_math_detail::horner(w, kOdd);
+  double r;
+  if (part < 0) {
+    r = t - t * (s1 + s2);
+  } else {
+    r = kHigh[part] - ((t * (s1 + s2) - kLow[part]) - t);
+  }
+  return negative ? -r : r;
+}
+
+// The angle of the point (x, y) from the +x axis, in [-pi, pi] (atan2's conventions for the
+// axes; (0, 0) gives 0).
+inline double atan2Of(double y, double x) {
+  constexpr double kPi = 3.141592653589793, kHalfPi = 1.5707963267948966;
+  if (x == 0) return y > 0 ? kHalfPi : (y < 0 ? -kHalfPi : 0.0);
+  const double ax = std::fabs(x), ay = std::fabs(y);
+  // The smaller over the larger keeps the quotient within [0, 1].
+  double a = ay <= ax ? atanOf(ay / ax) : kHalfPi - atanOf(ax / ay);
+  if (x < 0) a = kPi - a;
+  return y < 0 ? -a : a;
+}
+
 // Natural logarithm of a positive finite x (x = m 2^e, m in [sqrt(1/2), sqrt(2)); ln m by the
 // series of atanh((m - 1) / (m + 1)), to the 23rd power). Returns -inf for 0.
 inline double logPositive(double x) {

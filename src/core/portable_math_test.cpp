@@ -115,4 +115,23 @@ TEST(PortableMathTest, PowerOfTheKindsPhongUses) {
 }
 
 }  // namespace
+TEST(PortableMathTest, ArcTangentsMatchTheLibraryWithinTwoUlps) {
+  double worst = 0;
+  for (int i = -20000; i <= 20000; ++i) {
+    const double x = std::ldexp(static_cast<double>(i), -9) * (1 + 1e-7 * (i % 7));
+    worst = std::max(worst, ulps(atanOf(x), std::atan(x)));
+    for (const double scale : {1e-3, 1.0, 7.0, 1e6}) {
+      const double y = std::sin(0.37 * i) * scale, x2 = std::cos(0.53 * i) * scale;
+      worst = std::max(worst, ulps(atan2Of(y, x2), std::atan2(y, x2)));
+    }
+  }
+  EXPECT_LE(worst, 2.0);
+  EXPECT_EQ(atan2Of(0, -1), std::numbers::pi);
+  EXPECT_EQ(atan2Of(0, 0), 0.0);
+  EXPECT_EQ(atan2Of(1, 0), std::numbers::pi / 2);
+  EXPECT_EQ(atan2Of(-1, 0), -std::numbers::pi / 2);
+  EXPECT_TRUE(std::isnan(atanOf(std::nan(""))));
+  EXPECT_EQ(atanOf(INFINITY), std::numbers::pi / 2);
+}
+
 }  // namespace prt

@@ -11,6 +11,7 @@
 #include <ImfThreading.h>
 #include <half.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <limits>
@@ -95,6 +96,10 @@ void writeExr(const Image& image, std::FILE* file, const std::string& path,
 }
 
 Image readExr(std::span<const unsigned char> bytes, const std::string& path) {
+  return readExr(bytes, path, kMaxReadPixels);
+}
+
+Image readExr(std::span<const unsigned char> bytes, const std::string& path, size_t maxPixels) {
   try {
     MemoryStream stream(bytes, path);
     Imf::InputFile in(stream, /*threads*/ 0);
@@ -102,9 +107,12 @@ Image readExr(std::span<const unsigned char> bytes, const std::string& path) {
     const int64_t w = int64_t{window.max.x} - window.min.x + 1;
     const int64_t h = int64_t{window.max.y} - window.min.y + 1;
     if (w <= 0 || h <= 0 || w > std::numeric_limits<int>::max() ||
-        h > std::numeric_limits<int>::max() || static_cast<uint64_t>(w * h) > kMaxReadPixels) {
+        h > std::numeric_limits<int>::max() ||
+        static_cast<uint64_t>(w * h) > std::min<uint64_t>(maxPixels, kMaxReadPixels)) {
       throw InputError("'" + path + "': an OpenEXR image of " + std::to_string(w) + "x" +
-                       std::to_string(h) + " pixels is empty or too large");
+                       std::to_string(h) + " pixels is empty or too large (at most " +
+                       std::to_string(std::min<uint64_t>(maxPixels, kMaxReadPixels)) +
+                       " pixels are read)");
     }
     Image image(static_cast<int>(w), static_cast<int>(h));
     const Imf::ChannelList& channels = in.header().channels();

@@ -49,6 +49,8 @@ Image readPfm(std::span<const unsigned char> bytes, const std::string& path);
 void writeExr(const Image& image, std::FILE* file, const std::string& path,
               const ImageWriteOptions& options);
 Image readExr(std::span<const unsigned char> bytes, const std::string& path);
+// The same, refusing (before decoding) an image of more than maxPixels pixels.
+Image readExr(std::span<const unsigned char> bytes, const std::string& path, size_t maxPixels);
 
 // JPEG: 8-bit sRGB, baseline, options.jpegQuality (1-100). Reads grey and colour files.
 void writeJpeg(const Image& image, std::FILE* file, const std::string& path,

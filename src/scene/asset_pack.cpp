@@ -7,13 +7,14 @@
 #include <string>
 
 #include "core/byte_codec.h"
+#include "image/image.h"
 #include "scene/rig_pack.h"
 
 namespace prt {
 namespace {
 
 constexpr uint32_t kTag = 0x41545250;  // "PRTA"
-constexpr uint32_t kVersion = 3;  // 2: the rig; 3: the path tracer's surface
+constexpr uint32_t kVersion = 4;  // 2: the rig; 3: the path tracer's surface; 4: the map
 
 bool isShippedMeshBlock(const Object& object) {
   const auto* m = std::get_if<MeshShape>(&object.shape);
@@ -117,7 +118,9 @@ class Reader {
 }  // namespace
 
 std::vector<uint8_t> packAssets(const Scene& scene) {
-  if (scene.imports.empty() && std::none_of(scene.objects.begin(), scene.objects.end(), isShippedMeshBlock)) {
+  const Image* map = scene.environment.map.image.get();
+  if (scene.imports.empty() && map == nullptr &&
+      std::none_of(scene.objects.begin(), scene.objects.end(), isShippedMeshBlock)) {
     return {};  // nothing to ship
   }
   ByteWriter w;
@@ -191,6 +194,10 @@ std::vector<uint8_t> packAssets(const Scene& scene) {
     }
   }
   putRig(w, scene.animation ? *scene.animation : SceneAnimation{});
+  // The environment map: its size (0 x 0: none), then its linear RGB floats.
+  w.pod(static_cast<int32_t>(map != nullptr ? map->width() : 0));
+  w.pod(static_cast<int32_t>(map != nullptr ? map->height() : 0));
+  if (map != nullptr) w.raw(map->data().data(), map->data().size() * sizeof(float));
   return std::move(w.out);
 }
 
@@ -296,6 +303,20 @@ ShippedAssets unpackAssets(const std::vector<uint8_t>& bytes) {
     out.imports.push_back(std::move(import));
   }
   out.rig = getRig(raw, out.imports.size());
+  const auto mapWidth = raw.pod<int32_t>(), mapHeight = raw.pod<int32_t>();
+  if (mapWidth < 0 || mapHeight < 0 || (mapWidth == 0) != (mapHeight == 0)) {
+    raw.fail("an environment map of no sensible size");
+  }
+  if (mapWidth > 0) {
+    const uint64_t floats = 3 * static_cast<uint64_t>(mapWidth) * static_cast<uint64_t>(mapHeight);
+    raw.needItems(floats, sizeof(float));
+    auto map = std::make_shared<Image>(mapWidth, mapHeight);
+    raw.raw(map->data().data(), map->data().size() * sizeof(float));
+    for (const float v : map->data()) {
+      if (!(v >= 0) || !std::isfinite(v)) raw.fail("an environment map of negative or infinite radiance");
+    }
+    out.environmentMap = std::move(map);
+  }
   raw.finish();
   return out;
 }

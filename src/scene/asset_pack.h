@@ -12,7 +12,8 @@
 // then per import its textures (image index, wrap modes, filter) and its objects (mesh index,
 // transform, material with texture references local to the import), then the rig part of the
 // scene's animation (rig_pack.h): what its imports' model files animate, which only the files
-// hold (the scene's own `key` entries travel in the text).
+// hold (the scene's own `key` entries travel in the text); last, the environment map's size and
+// linear RGB floats (0 x 0 without one).
 // Pure functions; thread-safe.
 
 #include <cstdint>
@@ -34,6 +35,7 @@ struct ShippedAssets {
   std::vector<ShippedImport> imports;                           // one per `import` block
   // The rigs of the scene's animation (no fields), its indices the scene's (addRig).
   SceneAnimation rig;
+  std::shared_ptr<const Image> environmentMap;  // the environment's map, if it has one
 };
 
 // Empty for a scene with nothing to ship.

@@ -10,6 +10,7 @@
 
 #include "image/image_io.h"
 #include "scene/block_reader.h"
+#include "scene/environment_file.h"
 #include "scene/key_frames.h"
 #include "scene/keywords.h"
 #include "scene/mesh_block.h"
@@ -53,6 +54,7 @@ class SceneParser {
   SceneParser(const SourceText& source, const ShippedAssets* shipped,
               const SceneReadOptions& options)
       : in_(source),
+        shipped_(shipped),
         meshes_{in_, materials_, scene_.warnings,
                 std::filesystem::path(source.fileName()).parent_path(), shipped},
         options_(options),
@@ -297,13 +299,21 @@ class SceneParser {
     once(keyword, environment_);
     Environment& environment = scene_.environment;
     BlockReader block(in_, keyword, "environment",
-                      {"background", "ambient", "max_depth", "integrator", "max_bounces"});
+                      {"background", "ambient", "max_depth", "integrator", "max_bounces", "map",
+                       "map_strength", "map_rotate"});
     while (const Token* param = block.next()) {
       const std::string& name = param->text;
       if (name == "background") environment.background = readColor(in_, name);
       if (name == "ambient") environment.ambient = readColor(in_, name);
       if (name == "max_depth") environment.maxDepth = readInteger(in_, name, 0, 64);
       if (name == "max_bounces") environment.maxBounces = readInteger(in_, name, 0, 1024);
+      if (name == "map") environmentMap(*param);
+      if (name == "map_strength") {
+        environment.map.strength = readNumber(in_, name, Range::closed(0, 1e6));
+      }
+      if (name == "map_rotate") {
+        environment.map.rotateDegrees = readNumber(in_, name, Range::closed(-1e6, 1e6));
+      }
       if (name == "integrator") {
         const Token& value = in_.next();
         if (value.kind == TokenKind::Word && value.text == "hall") {
@@ -315,6 +325,28 @@ class SceneParser {
                           "physically based path tracer), found " + describe(value));
         }
       }
+    }
+  }
+
+  // An environment map: read from its file (relative to the scene's), or taken from what the
+  // master sent.
+  void environmentMap(const Token& param) {
+    const Token& value = in_.peek();
+    std::string file = readString(in_, param.text);
+    EnvironmentMap& map = scene_.environment.map;
+    if (shipped_ != nullptr) {
+      if (!shipped_->environmentMap) in_.fail(value, "no environment map was sent with the scene");
+      map.image = shipped_->environmentMap;
+      map.file = file;
+      return;
+    }
+    std::filesystem::path path(file);
+    if (path.is_relative()) path = imports_.directory / path;
+    map.file = std::filesystem::absolute(path).lexically_normal().string();
+    try {
+      map.image = readEnvironmentMap(map.file);
+    } catch (const InputError& e) {
+      in_.fail(value, e.what());
     }
   }
 
@@ -590,6 +622,7 @@ class SceneParser {
   }
 
   TokenStream in_;
+  const ShippedAssets* shipped_;  // what the master sent in place of files, or null
   Scene scene_;
   MaterialTable materials_;
   MeshBlocks meshes_;

@@ -241,6 +241,11 @@ std::string writeScene(const Scene& scene) {
   if (scene.environment.maxBounces != Environment{}.maxBounces) {
     out.integer("max_bounces", scene.environment.maxBounces);
   }
+  if (const EnvironmentMap& map = scene.environment.map; map.image) {
+    out.string("map", map.file);
+    if (map.strength != 1) out.number("map_strength", map.strength);
+    if (map.rotateDegrees != 0) out.number("map_rotate", map.rotateDegrees);
+  }
   out.close();
 
   out.open("sampling");

@@ -98,6 +98,7 @@ Color PathTracer::radiance(const Ray& cameraRay, const std::span<const uint32_t>
   const Scene& scene = world_.scene();
   constexpr double kInfinity = std::numeric_limits<double>::infinity();
   const size_t lightCount = emitters_.lightCount();
+  const EnvironmentLight& environment = world_.environment();
   Color sum;
   Color throughput(1);
   Ray ray = cameraRay;
@@ -112,7 +113,12 @@ Color PathTracer::radiance(const Ray& cameraRay, const std::span<const uint32_t>
                            ? world_.intersectAmong(*candidates, ray, 0.0, kInfinity, hit)
                            : world_.intersect(ray, 0.0, kInfinity, hit);
     if (!found) {
-      sum += throughput * scene.environment.background;
+      double weight = 1;
+      if (!lastDelta && environment.sampled()) {
+        const double lightPdf = environment.pdf(ray.direction);
+        if (lightPdf > 0) weight = lastPdf * lastPdf / (lastPdf * lastPdf + lightPdf * lightPdf);
+      }
+      sum += weight * (throughput * environment.radiance(ray.direction));
       break;
     }
     Rng draws = rng.child(vertex);
@@ -174,6 +180,16 @@ Color PathTracer::radiance(const Ray& cameraRay, const std::span<const uint32_t>
       }
       const double t0 = draws.uniform(), t1 = draws.uniform(), t2 = draws.uniform();
       if (emitters_.sampleTriangle(hit.point, t0, t1, t2, light)) aim(light);
+      if (environment.sampled()) {
+        // A stream of its own, after the lights' (a scene without a map draws as before).
+        Rng own = draws.child(lightCount);
+        const double e1 = own.uniform(), e2 = own.uniform();
+        if (environment.sample(e1, e2, light.direction, light.radiance, light.pdf)) {
+          light.distance = kInfinity;
+          light.delta = false;
+          aim(light);
+        }
+      }
     } else {
       draws.skip(3);
     }

@@ -5,7 +5,8 @@
 // chosen (trace/emitters.h) and a shadow ray sent to it (next-event estimation). Where both
 // could have found the same light — an emissive triangle, met by a bounce or aimed at — the two
 // estimates are weighed by multiple importance sampling with the power heuristic (Veach 1997).
-// Rays that leave the scene take the environment's colour as radiance. After three bounces a
+// Rays that leave the scene take the environment's radiance (trace/environment_light.h: the
+// world colour, or an HDR map, which next-event estimation also aims at, weighed by MIS). After three bounces a
 // path whose throughput has fallen below 1 survives with that probability (Russian roulette,
 // its survivors weighted up to keep the mean); every path ends after the environment's
 // max_bounces.

@@ -10,6 +10,7 @@
 
 #include "core/transform.h"
 #include "core/vec3.h"
+#include "image/image.h"
 #include "trace/texture.h"
 #include "trace/triangle_mesh.h"
 
@@ -36,12 +37,26 @@ struct ImageSpec {
 // or the physically based path tracer (trace/path_tracer.h).
 enum class Integrator : uint8_t { hall, path };
 
+// An HDR environment map (trace/environment_light.h): an equirectangular image of linear
+// radiance that surrounds the scene.
+struct EnvironmentMap {
+  std::shared_ptr<const Image> image;  // null: none (the background colour is the world)
+  std::string file;                    // where it was read from, for the scene's text
+  double strength = 1;                 // multiplies the image's radiance, in [0, 1e6]
+  double rotateDegrees = 0;              // about the up axis, in [-1e6, 1e6]
+  bool operator==(const EnvironmentMap& o) const {
+    return file == o.file && strength == o.strength && rotateDegrees == o.rotateDegrees &&
+           (image == o.image || (image && o.image && *image == *o.image));
+  }
+};
+
 struct Environment {
   Color background{0, 0, 0};   // colour of rays that hit nothing (the path tracer: radiance)
   Color ambient{0.1, 0.1, 0.1};  // ambient light colour (Hall's I_a)
   int maxDepth = 5;            // maximum recursion depth of reflection/transmission rays
   Integrator integrator = Integrator::hall;
   int maxBounces = 12;  // the path tracer's longest path, in bounces (Cycles' default)
+  EnvironmentMap map{};  // when given, the world in place of `background`
 };
 
 // Default sampling of the scene; the command line overrides it.

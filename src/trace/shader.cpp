@@ -257,7 +257,7 @@ Color Shader::traceWith(Intersect&& intersect, const Ray& ray, PathState path, R
                         uint64_t& rays) const {
   ++rays;
   Hit hit;
-  if (!intersect(hit)) return world_.scene().environment.background;
+  if (!intersect(hit)) return world_.environment().radiance(ray.direction);
   return shade(ray, hit, path, rng, rays);
 }
 

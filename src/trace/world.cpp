@@ -114,6 +114,9 @@ const MeshBvh& World::treeFor(const std::shared_ptr<const TriangleMesh>& mesh,
 }
 
 World::World(Scene scene, const World* reuse) : scene_(std::move(scene)) {
+  environment_ = reuse != nullptr && reuse->environment_->sameAs(scene_.environment)
+                     ? reuse->environment_
+                     : std::make_shared<const EnvironmentLight>(scene_.environment);
   for (uint32_t i = 0; i < scene_.objects.size(); ++i) {
     const Object& o = scene_.objects[i];
     const double transmissivity = o.material.transmissivity;

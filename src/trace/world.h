@@ -16,6 +16,7 @@
 #include <span>
 #include <vector>
 
+#include "trace/environment_light.h"
 #include "trace/mesh_bvh.h"
 #include "trace/quad_bvh.h"
 #include "trace/scene.h"
@@ -49,6 +50,8 @@ class World {
 
   const Scene& scene() const { return scene_; }
   const Material& material(uint32_t object) const { return scene_.objects[object].material; }
+  // What rays that meet nothing see: the world colour or the environment map.
+  const EnvironmentLight& environment() const { return *environment_; }
 
   // Nearest crossing within (tMin, tMax); false if none.
   bool intersect(const Ray& ray, double tMin, double tMax, Hit& hit) const;
@@ -116,6 +119,7 @@ class World {
                                                      Candidates&& candidates) const;
 
   Scene scene_;
+  std::shared_ptr<const EnvironmentLight> environment_;  // shared with the frames that reuse it
   QuadBvh bvh_;
   ShadowShafts shafts_;
   std::vector<Item> items_;
