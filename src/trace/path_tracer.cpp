@@ -69,11 +69,16 @@ PathTracer::PathTracer(const World& world)
     const bool textured = m.colorTexture.texture >= 0 || m.emissionTexture.texture >= 0;
     s.attributes = mesh != nullptr && (!mesh->colors.empty() || (textured && !mesh->uvs.empty()));
     surfaces_.push_back(s);
+    allOpaque_ = allOpaque_ && s.coverage >= 1;
   }
 }
 
 double PathTracer::visibility(const Vec3& origin, const Vec3& direction, double distance,
                               uint64_t& rays) const {
+  if (allOpaque_) {
+    ++rays;
+    return world_.occluded(Ray{origin, direction}, 0.0, distance) ? 0.0 : 1.0;
+  }
   double through = 1;
   Vec3 from = origin;
   double left = distance;

@@ -63,6 +63,7 @@ class PathTracer {
   Emitters emitters_;
   std::vector<Surface> surfaces_;  // per object
   int maxBounces_;
+  bool allOpaque_ = true;  // no surface lets light straight through: shadow rays stop at any
 };
 
 }  // namespace prt

@@ -349,6 +349,34 @@ double World::transmittance(const Ray& ray, double tMin, double distance,
   return opaque ? 0.0 : attenuators.apply(passed);
 }
 
+bool World::occluded(const Ray& ray, double tMin, double distance) const {
+  for (const Plane& p : planes_) {
+    const double t = planeDistance(p.point, p.normal, ray);
+    if (t > tMin && t < distance) return true;
+  }
+  const Item* const items = items_.data();
+  bool blocked = false;
+  bvh_.traverse<false>(ray, tMin, distance, [&](uint32_t index) {
+    const Item& item = items[index];
+    const int crossings = visitItemKind(item.kind, [&]<typename Kind>(Kind) {
+      if constexpr (std::is_same_v<Kind, MeshItem>) {
+        if (MeshItem::passesBy(item, ray, tMin, distance)) return 0;
+        return item.mesh->crossings(MeshItem::local(item, ray), tMin, distance, true);
+      } else {
+        const int c = Kind::crossings(item, ray, tMin, distance);
+        if constexpr (Kind::kBoxTested) {
+          if (c != 0 && !hitsBounds(item.box, RayQuery(ray), tMin, distance)) return 0;
+        }
+        return c;
+      }
+    });
+    if (crossings == 0) return distance;
+    blocked = true;
+    return -1.0;
+  });
+  return blocked;
+}
+
 double World::transmittance(const Ray& ray, double tMin, double distance) const {
   return transmittance(ray, tMin, distance,
                        [&](auto&& visit) { bvh_.traverse<false>(ray, tMin, distance, visit); });

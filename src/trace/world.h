@@ -83,6 +83,10 @@ class World {
   };
   const MeshStats& meshStats() const { return meshStats_; }
 
+  // Whether any surface lies within (tMin, distance) along the ray, whatever it is made of:
+  // the path tracer's shadow ray in a scene where every surface is opaque. Stops at the first
+  // surface found, so it is cheaper than intersect().
+  bool occluded(const Ray& ray, double tMin, double distance) const;
   // Fraction of light that survives from ray.origin to distance `distance` along the ray: the
   // product of the transmissivities of every surface crossed (0 as soon as one is opaque).
   double transmittance(const Ray& ray, double tMin, double distance) const;
