@@ -43,6 +43,9 @@ if "bool" not in vars(np):
 
 import bpy  # noqa: E402
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import compare  # noqa: E402  (the atomic write; standard library only)
+
 
 def fail(message):
     print("render_cycles: " + message, file=sys.stderr)
@@ -192,20 +195,7 @@ def configure(scene, a):
 def write_pfm(path, pixels, width, height):
     """pixels: Blender's RGBA floats, bottom row first, which is PFM's order too."""
     rgb = pixels.reshape(height, width, 4)[:, :, :3].astype("<f4")
-    header = b"PF\n%d %d\n-1.0\n" % (width, height)
-    directory = os.path.dirname(os.path.abspath(path))
-    fd, tmp = tempfile.mkstemp(prefix=".render_cycles.", suffix=".pfm", dir=directory)
-    try:
-        with os.fdopen(fd, "wb") as f:
-            f.write(header)
-            f.write(rgb.tobytes())
-        umask = os.umask(0)
-        os.umask(umask)
-        os.chmod(tmp, 0o666 & ~umask)
-        os.replace(tmp, path)
-    except BaseException:
-        os.unlink(tmp)
-        raise
+    compare.atomic_write(path, b"PF\n%d %d\n-1.0\n" % (width, height) + rgb.tobytes())
 
 
 def main():
