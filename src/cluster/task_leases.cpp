@@ -20,7 +20,8 @@ void TaskLeases::setSpeedIndex(int worker, double seconds) {
 
 double TaskLeases::leaseOf(int worker) const {
   const Lease& l = workers_[static_cast<size_t>(worker)];
-  const double expected = std::max(l.lastBatch, slowestPerSpeed_ * l.speedIndex);
+  const double scaled = std::min(slowestPerSpeed_ * l.speedIndex, kSpeedSpread * longestBatch_);
+  const double expected = std::max(l.lastBatch, scaled);
   if (!(expected > 0)) return std::numeric_limits<double>::infinity();
   return std::max(options_.minSeconds, options_.batches * expected);
 }
@@ -53,6 +54,7 @@ void TaskLeases::returned(int worker, double now, double computeSeconds, bool fr
     const double measured = std::min(computeSeconds, now - l.previous);
     if (measured > 0) {
       l.lastBatch = measured;
+      longestBatch_ = std::max(longestBatch_, measured);
       if (l.speedIndex > 0) slowestPerSpeed_ = std::max(slowestPerSpeed_, measured / l.speedIndex);
     }
   }

@@ -9,7 +9,10 @@
 //
 // where the expected batch time is the longer of its own last batch (as it measured it, and
 // never more than the master waited for it) and the slowest batch any worker has returned,
-// per second of its speed index, times this worker's speed index. The lease runs from the
+// per second of its speed index, times this worker's speed index — the latter never more than
+// kSpeedSpread times the longest batch any worker has returned: a speed index is the worker's
+// own word, and a joiner that claims to be very slow (or one that claims to be very fast and
+// then takes its time) must not buy a lease without end. The lease runs from the
 // worker's last fresh result, or from when it was given tasks while it held none. Until any
 // batch has been measured there is no estimate, and no worker's task lease runs out.
 //
@@ -28,6 +31,10 @@
 #include "cluster/leases.h"
 
 namespace prt {
+
+// How much longer than the longest batch returned so far a worker's batch may be expected to
+// take from its speed index alone (its own measured batches count in full).
+inline constexpr double kSpeedSpread = 10;
 
 struct TaskLeaseOptions {
   double batches = 0;  // 0: no task leases (the simulator's default); drivers: kTaskLeaseBatches
@@ -80,6 +87,7 @@ class TaskLeases {
   std::vector<Lease> workers_;
   std::set<std::pair<double, int>> byDue_;
   double slowestPerSpeed_ = 0;  // the longest batch per second of its worker's speed index
+  double longestBatch_ = 0;     // the longest batch any worker has returned (seconds)
 };
 
 }  // namespace prt

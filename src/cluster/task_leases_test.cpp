@@ -83,5 +83,22 @@ TEST(TaskLeases, AClaimedBatchTimeIsCappedByTheWait) {
   EXPECT_DOUBLE_EQ(leases.leaseOf(1), 1.0);
 }
 
+// A speed index is the worker's word: one that claims to be a million times slower gets no
+// lease without end, nor does a claim of great speed followed by a slow batch lengthen the
+// others' leases past kSpeedSpread times the longest batch returned.
+TEST(TaskLeases, AClaimedSpeedIndexBuysAtMostTenTimesTheLongestBatch) {
+  TaskLeases leases({10, 1}, 3);
+  leases.setSpeedIndex(0, 1);
+  leases.setSpeedIndex(1, 1e6);   // claims to be very slow
+  leases.setSpeedIndex(2, 1e-6);  // claims to be very fast
+  for (int w = 0; w < 3; ++w) leases.given(w, 0, true);
+  leases.returned(0, 0.5, 0.5, true);
+  EXPECT_DOUBLE_EQ(leases.leaseOf(1), 50.0) << "10 batches of at most 10 x 0.5 s";
+  leases.returned(2, 1.0, 1.0, true);  // 1 s for a worker of speed index 1e-6
+  EXPECT_DOUBLE_EQ(leases.leaseOf(0), 100.0) << "10 batches of at most 10 x 1 s, not 10^7 s";
+  EXPECT_DOUBLE_EQ(leases.leaseOf(2), 10.0) << "its own batch counts in full";
+  EXPECT_EQ(leases.expired(1.0 + 100.0), std::vector<int>({0, 1, 2}));
+}
+
 }  // namespace
 }  // namespace prt

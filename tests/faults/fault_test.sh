@@ -26,7 +26,8 @@
 #                  ends a lease after its last pixel, and at once on SIGTERM, image written
 #   hostile-hoard  a joiner takes tasks and returns none, heartbeating: its task lease runs
 #                  out, its tasks are rendered by the others (adaptive, stealing, and
-#                  adaptive with --endgame on)
+#                  adaptive with --endgame on); also when it claims a speed index of 10^6 s
+#                  (stealing)
 #   (the hostile modes take the hostile joiner's path as a fifth argument)
 set -eu
 
@@ -370,7 +371,7 @@ PY
       rm -f port out.pfm r.json ck out.pfm.ckpt
       # shellcheck disable=SC2086
       timeout -k 2 "$limit" "$prt" render "$scene" -q $size --workers 1 --speed-index none \
-        --slowdown 300 --batch 16 --accept-workers "$work/port" -o out.pfm --report r.json \
+        --slowdown 300 --batch "${batch:-16}" --accept-workers "$work/port" -o out.pfm --report r.json \
         "$@" 2>render-err.txt &
       render=$!
       for _ in $(seq 100); do [ -s port ] && return 0; sleep 0.05; done
@@ -461,6 +462,25 @@ lost = r["lost_workers"]
 assert [l["worker"] for l in lost] == [1] and "task lease" in lost[0]["reason"], lost
 PY
           echo "ok: $strategy"
+        done
+        # One that claims to be a million times slower buys no lease without end: at most ten
+        # batches of ten times the longest batch returned (batches of 4 pixels: about 5 s on a
+        # quiet machine, 25 s on a busy one).
+        limit=90 batch=4
+        for strategy in stealing; do
+          start_render --strategy "$strategy" --worker-timeout 2
+          "$hostile" port hoard-slow $pixels 60 >joiner-out.txt 2>&1 &
+          joiner=$!
+          end_render "$strategy, a joiner that keeps its tasks and claims to be slow"
+          kill "$joiner" 2>/dev/null || true
+          wait "$joiner" 2>/dev/null || true
+          python3 - <<'PY' || fail "$strategy: the slow-claiming hoarder is not lost by its task lease"
+import json
+r = json.load(open("r.json"))
+lost = r["lost_workers"]
+assert [l["worker"] for l in lost] == [1] and "task lease" in lost[0]["reason"], lost
+PY
+          echo "ok: $strategy, claiming to be slow"
         done
         ;;
     esac

@@ -11,6 +11,7 @@
 //   linger        never measures (so is given nothing), and heartbeats through and after the
 //                 Stop, never saying goodbye; prints "stopped" when the Stop comes
 //   hoard         measures fast, takes every task it is given and returns none, heartbeating
+//   hoard-slow    as hoard, but claims a speed index of 10^6 s (a million times slower)
 // Modes that stay connected leave after SECONDS (default 60) or when the master closes the
 // connection. Exits 0 when it did what its mode says, 1 when it was not admitted.
 
@@ -116,7 +117,8 @@ int main(int argc, char** argv) {
       continue;
     }
     if (std::holds_alternative<SceneMsg>(m) && mode != "linger") {
-      sendMessage(socket, SpeedIndexMsg{0.01, {buildDescription(), "hostile"}});
+      const double seconds = mode == "hoard-slow" ? 1e6 : 0.01;
+      sendMessage(socket, SpeedIndexMsg{seconds, {buildDescription(), "hostile"}});
     } else if (std::holds_alternative<StopMsg>(m)) {
       std::printf("stopped\n");
       std::fflush(stdout);
