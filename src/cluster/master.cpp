@@ -637,6 +637,18 @@ Outbox Master::expireLeases(double now, double leaseSeconds) {
     if (!isLive(w) || stopped_) continue;
     const uint64_t held = ledger_.unfinishedCount(w);
     if (held == 0) continue;  // nothing left to wait for: the lease starts with its next tasks
+    // Only when another live worker shows the time was there to work (it returned a fresh
+    // result since this lease started, or holds nothing and waits): a machine too busy for
+    // every worker (a load spike) costs time, never the last workers of a run.
+    bool others = false;
+    for (int v = 0; v < workerCount() && !others; ++v) {
+      others = v != w && isLive(v) && !untrusted_[static_cast<size_t>(v)] &&
+               (taskLeases_.lastFresh(v) > taskLeases_.since(w) || !ledger_.holdsWork(v));
+    }
+    if (!others) {
+      taskLeases_.postpone(w, now);
+      continue;
+    }
     char reason[160];
     std::snprintf(reason, sizeof reason,
                   "returned no result for %.1f s while holding %llu unfinished tasks "

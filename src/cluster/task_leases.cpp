@@ -59,7 +59,18 @@ void TaskLeases::returned(int worker, double now, double computeSeconds, bool fr
     }
   }
   l.previous = now;
-  if (fresh) arm(worker, now);
+  if (fresh) {
+    l.lastFresh = now;
+    arm(worker, now);
+  }
+}
+
+void TaskLeases::postpone(int worker, double now) {
+  Lease& l = workers_[static_cast<size_t>(worker)];
+  if (l.armed) byDue_.erase({l.due, worker});
+  l.armed = true;
+  l.due = now + options_.minSeconds;
+  byDue_.emplace(l.due, worker);
 }
 
 void TaskLeases::renew(int worker, double now) {

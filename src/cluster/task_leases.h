@@ -60,6 +60,11 @@ class TaskLeases {
   void renew(int worker, double now);
   // The worker is gone: no lease any more.
   void drop(int worker);
+  // An expired lease not acted on (no other worker shows the time was there to work): looked
+  // at again a least lease from `now`, from the same start.
+  void postpone(int worker, double now);
+  // When `worker` last returned a fresh result (-inf: never).
+  double lastFresh(int worker) const { return workers_[static_cast<size_t>(worker)].lastFresh; }
 
   // The workers whose task lease has run out at `now`, taken off the index; each is checked
   // by the caller (does it still hold unfinished tasks?). O(k log W) for k of them.
@@ -80,6 +85,7 @@ class TaskLeases {
     double speedIndex = 0;
     double lastBatch = 0;  // seconds of its last measured batch (0: none)
     double previous = -1;  // when it last returned results, or was given tasks idle (-1: never)
+    double lastFresh = -std::numeric_limits<double>::infinity();
   };
   void arm(int worker, double since);
 

@@ -100,5 +100,21 @@ TEST(TaskLeases, AClaimedSpeedIndexBuysAtMostTenTimesTheLongestBatch) {
   EXPECT_EQ(leases.expired(1.0 + 100.0), std::vector<int>({0, 1, 2}));
 }
 
+// A lease the master does not act on is looked at again a least lease later, from the same
+// start; a fresh result is remembered for the master to compare.
+TEST(TaskLeases, APostponedLeaseIsLookedAtAgainFromTheSameStart) {
+  TaskLeases leases({10, 1}, 1);
+  leases.setSpeedIndex(0, 1);
+  leases.given(0, 0, true);
+  EXPECT_EQ(leases.lastFresh(0), -std::numeric_limits<double>::infinity());
+  leases.returned(0, 0.1, 0.1, true);
+  EXPECT_DOUBLE_EQ(leases.lastFresh(0), 0.1);
+  EXPECT_EQ(leases.expired(1.2), std::vector<int>({0}));
+  leases.postpone(0, 1.2);
+  EXPECT_DOUBLE_EQ(leases.nextExpiry(), 2.2);
+  EXPECT_DOUBLE_EQ(leases.since(0), 0.1);
+  EXPECT_EQ(leases.expired(2.2), std::vector<int>({0}));
+}
+
 }  // namespace
 }  // namespace prt
