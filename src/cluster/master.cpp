@@ -637,16 +637,20 @@ Outbox Master::expireLeases(double now, double leaseSeconds) {
     if (!isLive(w) || stopped_) continue;
     const uint64_t held = ledger_.unfinishedCount(w);
     if (held == 0) continue;  // nothing left to wait for: the lease starts with its next tasks
-    // Only when another live worker shows the time was there to work (it returned a fresh
-    // result since this lease started, or holds nothing and waits): a machine too busy for
-    // every worker (a load spike) costs time, never the last workers of a run.
+    // Only when another live worker shows the time was there to work — it returned a fresh
+    // result in the last half of this lease, or holds nothing and waits — so that a machine
+    // too busy for every worker (a load spike) costs time, never the workers of a run. Not
+    // acted on, the lease is looked at again half a lease later: those windows tile the time,
+    // so another worker's next fresh result is seen within half a lease.
+    const double half = taskLeases_.leaseOf(w) / 2;
+    const double recent = std::max(now - half, taskLeases_.since(w));
     bool others = false;
     for (int v = 0; v < workerCount() && !others; ++v) {
       others = v != w && isLive(v) && !untrusted_[static_cast<size_t>(v)] &&
-               (taskLeases_.lastFresh(v) > taskLeases_.since(w) || !ledger_.holdsWork(v));
+               (taskLeases_.lastFresh(v) > recent || !ledger_.holdsWork(v));
     }
     if (!others) {
-      taskLeases_.postpone(w, now);
+      taskLeases_.postpone(w, now, half);
       continue;
     }
     char reason[160];

@@ -31,7 +31,8 @@ struct HostileOutcome {
 // hostile one heartbeats, and leases (`leaseSeconds`) are judged.
 HostileOutcome runWithHostile(const std::string& strategy, int honest, uint64_t pixels,
                               const Script& script, MasterOptions options = {},
-                              double leaseSeconds = 1e9) {
+                              double leaseSeconds = 1e9,
+                              std::pair<double, double> honestPause = {-1, -1}) {
   HostileOutcome result;
   result.values.assign(pixels, -1);
   const int hostile = honest;
@@ -74,7 +75,8 @@ HostileOutcome runWithHostile(const std::string& strategy, int honest, uint64_t 
         post(e.to, ws[static_cast<size_t>(e.to)].onMessage(from, e.message));
       }
     }
-    for (int w = 0; w < honest; ++w) {
+    const bool paused = now >= honestPause.first && now < honestPause.second;
+    for (int w = 0; w < honest && !paused; ++w) {
       Worker& worker = ws[static_cast<size_t>(w)];
       if (worker.needsSetup()) {
         post(w, worker.setupDone(0.1));
@@ -205,6 +207,25 @@ TEST(MasterHostile, TasksKeptBehindHeartbeatsAreReissuedWhenTheTaskLeaseRunsOut)
     EXPECT_EQ(o.losses[0].worker, 2) << strategy;
     EXPECT_NE(o.losses[0].reason.find("task lease"), std::string::npos) << o.losses[0].reason;
     EXPECT_GT(o.losses[0].unfinished, 0u) << strategy;
+  }
+}
+
+// A machine too busy for every honest worker at once (a pause of 2 s, heartbeats going on,
+// far past their task leases) loses none of them: no other worker shows the time was there
+// to work. Only the one that keeps its tasks is lost, once the others work again.
+TEST(MasterHostile, APauseOfEveryWorkerAtOnceLosesNone) {
+  for (const std::string strategy : {"adaptive", "stealing", "self"}) {
+    MasterOptions options;
+    options.taskLease = {kTaskLeaseBatches, 0.2};
+    const HostileOutcome o = runWithHostile(
+        strategy, 2, 3000, participant([](const TaskSet&, Outbox&, bool&) {}), options, 1e9,
+        {0.3, 2.3});
+    expectEveryPixel(o, strategy);
+    for (const LostWorker& l : o.losses) {
+      EXPECT_EQ(l.worker, 2) << strategy << ": worker " << l.worker << " at " << l.atSeconds << " " << l.reason;
+    }
+    ASSERT_EQ(o.losses.size(), 1u) << strategy;
+    EXPECT_EQ(o.losses[0].worker, 2) << strategy;
   }
 }
 

@@ -65,11 +65,11 @@ void TaskLeases::returned(int worker, double now, double computeSeconds, bool fr
   }
 }
 
-void TaskLeases::postpone(int worker, double now) {
+void TaskLeases::postpone(int worker, double now, double seconds) {
   Lease& l = workers_[static_cast<size_t>(worker)];
   if (l.armed) byDue_.erase({l.due, worker});
   l.armed = true;
-  l.due = now + options_.minSeconds;
+  l.due = now + (std::isfinite(seconds) && seconds > 0 ? seconds : options_.minSeconds);
   byDue_.emplace(l.due, worker);
 }
 

@@ -46,6 +46,7 @@ class TaskLeases {
   TaskLeases(TaskLeaseOptions options, int workerCount);
 
   bool enabled() const { return options_.batches > 0; }
+  double minSeconds() const { return options_.minSeconds; }
   void addWorker();
   // The worker's speed index (seconds; larger is slower).
   void setSpeedIndex(int worker, double seconds);
@@ -61,8 +62,8 @@ class TaskLeases {
   // The worker is gone: no lease any more.
   void drop(int worker);
   // An expired lease not acted on (no other worker shows the time was there to work): looked
-  // at again a least lease from `now`, from the same start.
-  void postpone(int worker, double now);
+  // at again `seconds` from `now`, from the same start.
+  void postpone(int worker, double now, double seconds);
   // When `worker` last returned a fresh result (-inf: never).
   double lastFresh(int worker) const { return workers_[static_cast<size_t>(worker)].lastFresh; }
 

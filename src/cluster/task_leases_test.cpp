@@ -100,8 +100,8 @@ TEST(TaskLeases, AClaimedSpeedIndexBuysAtMostTenTimesTheLongestBatch) {
   EXPECT_EQ(leases.expired(1.0 + 100.0), std::vector<int>({0, 1, 2}));
 }
 
-// A lease the master does not act on is looked at again a least lease later, from the same
-// start; a fresh result is remembered for the master to compare.
+// A lease the master does not act on is looked at again when it says, from the same start;
+// a fresh result is remembered for the master to compare.
 TEST(TaskLeases, APostponedLeaseIsLookedAtAgainFromTheSameStart) {
   TaskLeases leases({10, 1}, 1);
   leases.setSpeedIndex(0, 1);
@@ -110,7 +110,7 @@ TEST(TaskLeases, APostponedLeaseIsLookedAtAgainFromTheSameStart) {
   leases.returned(0, 0.1, 0.1, true);
   EXPECT_DOUBLE_EQ(leases.lastFresh(0), 0.1);
   EXPECT_EQ(leases.expired(1.2), std::vector<int>({0}));
-  leases.postpone(0, 1.2);
+  leases.postpone(0, 1.2, 1.0);
   EXPECT_DOUBLE_EQ(leases.nextExpiry(), 2.2);
   EXPECT_DOUBLE_EQ(leases.since(0), 0.1);
   EXPECT_EQ(leases.expired(2.2), std::vector<int>({0}));
