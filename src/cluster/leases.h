@@ -11,6 +11,12 @@ namespace prt {
 // for a worker, the master) is taken to be gone.
 inline constexpr double kDefaultLeaseSeconds = 5;
 
+// The task lease (cluster/task_leases.h): a worker that holds tasks and returns no result for
+// this many of its expected batches, and at least the lease, is lost and its tasks reissued.
+// Ten: a batch may take several times longer than the last one (a costlier part of the
+// image, a busy machine) without its worker being taken for one that keeps tasks.
+inline constexpr double kTaskLeaseBatches = 10;
+
 // The heartbeat interval for a lease: kBeatsPerLease beats fit in one lease (one a second for
 // the default lease), at most a hundred a second.
 inline constexpr double kBeatsPerLease = 5;

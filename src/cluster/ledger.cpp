@@ -9,6 +9,23 @@
 namespace prt {
 namespace {
 
+// Adds `sign` to counts[i] for every time distinct[i] (ascending, each once) occurs in `set`.
+void countIn(const TaskSet& set, const std::vector<uint64_t>& distinct,
+             std::vector<int64_t>& counts, int64_t sign) {
+  if (distinct.empty()) return;
+  for (const TaskRun& r : set.runs()) {
+    if (r.count == 0) continue;
+    const uint64_t last = r.stride == 0 ? r.first : r.last();
+    auto it = std::lower_bound(distinct.begin(), distinct.end(), r.first);
+    for (; it != distinct.end() && *it <= last; ++it) {
+      if (r.stride == 0 ? *it == r.first : (*it - r.first) % r.stride == 0) {
+        counts[static_cast<size_t>(it - distinct.begin())] +=
+            sign * (r.stride == 0 ? static_cast<int64_t>(r.count) : 1);
+      }
+    }
+  }
+}
+
 // Whether a task a worker was given is still owed by it: not done, and given to it more often
 // than it sent it on to a peer. A task can come back to a worker it left: stolen from it, then
 // returned to the strategy when the thief was lost, and handed to it again. Moved tasks are
@@ -27,16 +44,7 @@ class StillOwed {
       net_.push_back(-static_cast<int64_t>(j - i));
       i = j;
     }
-    for (const TaskRun& r : given.runs()) {
-      if (r.count == 0) continue;
-      auto it = std::lower_bound(distinct_.begin(), distinct_.end(), r.first);
-      for (; it != distinct_.end() && *it <= r.last(); ++it) {
-        if (r.stride == 0 ? *it == r.first : (*it - r.first) % r.stride == 0) {
-          net_[static_cast<size_t>(it - distinct_.begin())] +=
-              r.stride == 0 ? static_cast<int64_t>(r.count) : 1;
-        }
-      }
-    }
+    countIn(given, distinct_, net_, 1);
   }
   bool operator()(uint64_t t) const {
     if (owner_[t] != Ledger::kNotDone) return false;
@@ -150,6 +158,29 @@ bool Ledger::allHandedOut(const TaskSet& tasks) const {
 
 void Ledger::movedOut(int from, const TaskSet& tasks) {
   workers_[index(from)].moved.append(tasks);
+}
+
+uint64_t Ledger::notHeld(int worker, const TaskSet& tasks) const {
+  const Holding& h = workers_[index(worker)];
+  std::vector<uint64_t> wanted = tasks.toVector();
+  std::sort(wanted.begin(), wanted.end());
+  std::vector<uint64_t> distinct;
+  std::vector<int64_t> need;
+  for (size_t i = 0; i < wanted.size();) {
+    size_t j = i;
+    while (j < wanted.size() && wanted[j] == wanted[i]) ++j;
+    distinct.push_back(wanted[i]);
+    need.push_back(static_cast<int64_t>(j - i));
+    i = j;
+  }
+  std::vector<int64_t> held(distinct.size(), 0);
+  countIn(h.given, distinct, held, 1);
+  countIn(h.moved, distinct, held, -1);
+  uint64_t missing = 0;
+  for (size_t i = 0; i < distinct.size(); ++i) {
+    missing += static_cast<uint64_t>(std::max<int64_t>(0, need[i] - std::max<int64_t>(0, held[i])));
+  }
+  return missing;
 }
 
 TaskSet Ledger::accept(int worker, const TaskSet& tasks) {

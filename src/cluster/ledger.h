@@ -66,6 +66,10 @@ class Ledger {
     return task < taskCount() && (handedOut_[task] || owner_[task] == kResumed);
   }
   void movedOut(int from, const TaskSet& tasks);  // `from` sent them to a peer (diffusion)
+  // How many of `tasks` (each copy counted) `worker` does not hold: not given to it, or sent
+  // on already, as many times as it would send them now. What a transfer notice may move.
+  // O(n log n + runs) for n tasks; `tasks` must be of a size the caller has bounded.
+  uint64_t notHeld(int worker, const TaskSet& tasks) const;
   // Records results from `worker` (live or lost) and returns the tasks of `tasks` that were
   // not done before, in order; a task already done is dropped.
   TaskSet accept(int worker, const TaskSet& tasks);

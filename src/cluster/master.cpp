@@ -21,13 +21,18 @@ Master::Master(std::unique_ptr<Strategy> strategy, int workerCount, uint64_t pix
                                         : TaskMap(pixelCount, options_.resumedDone)),
       speedIndices_(static_cast<size_t>(workerCount), 0.0),
       speedIndicesMissing_(workerCount),
+      startingMissing_(workerCount),
+      startingWorkers_(workerCount),
       answered_(static_cast<size_t>(workerCount), false),
       queueLengths_(static_cast<size_t>(workerCount), 0),
       untrusted_(static_cast<size_t>(workerCount), false),
       endgameServed_(static_cast<size_t>(workerCount), false),
       // Checks compare colours: none without them (the simulator) or without a referee.
       checks_(sink_ && options_.referee ? options_.checks : SpotCheckOptions{0, 0}, workerCount),
-      identities_(static_cast<size_t>(workerCount)) {
+      identities_(static_cast<size_t>(workerCount)),
+      taskLeases_(options_.taskLease, workerCount),
+      openOrders_(static_cast<size_t>(workerCount)),
+      inbound_(static_cast<size_t>(workerCount), 0) {
   PRT_CHECK(strategy_ != nullptr);
   ledger_.seedDone(options_.resumedDone);
   resumed_ = ledger_.doneCount();
@@ -39,6 +44,7 @@ Master::Master(std::unique_ptr<Strategy> strategy, int workerCount, uint64_t pix
 }
 
 Outbox Master::start(double now) {
+  now_ = now;
   ledger_.startLeases(now);
   Outbox out;
   sendToAll(scene_, out);
@@ -53,6 +59,7 @@ void Master::sendToAll(const Message& m, Outbox& out) {
 
 void Master::assign(int worker, const TaskSet& pixels, Outbox& out) {
   if (pixels.empty()) return;
+  taskLeases_.given(worker, now_, !ledger_.holdsWork(worker));
   ledger_.gave(worker, pixels);
   if (options_.endgame) endgameOrder_.gave(worker, pixels.size());
   out.push_back({worker, TasksMsg{pixels}});
@@ -85,7 +92,10 @@ void Master::apply(const Decisions& decisions, Outbox& out) {
     } else if (const auto* t = std::get_if<Transfer>(&d)) {
       // A transfer from or to a lost worker is moot: its tasks come back through
       // onWorkerLost, and a sender simply keeps what it would have sent.
-      if (isLive(t->from) && isLive(t->to)) {
+      // A worker refuses an order to send to itself, and would leave it unanswered.
+      if (isLive(t->from) && isLive(t->to) && t->from != t->to) {
+        openOrders_[static_cast<size_t>(t->from)].push_back({t->to, t->count});
+        inbound_[static_cast<size_t>(t->to)] += t->count;
         out.push_back({t->from, TransferOrderMsg{t->to, t->count}});
       }
     } else if (const auto* n = std::get_if<NoMoreWork>(&d)) {
@@ -131,16 +141,39 @@ double Master::slowestSpeedIndex() const {
   return slowest;
 }
 
-void Master::startStrategy(Outbox& out) {
+// The strategy starts once every worker there has reported its speed index (or is lost),
+// joiners that arrived before the start included. Once the starting workers have (`force`,
+// a lease later: expireLeases), it starts without the joiners still measuring, which are
+// introduced when they report (introduceJoiners): a joiner that never reports cannot hold the
+// start up. Only when no starting worker is left does the start wait for joiners.
+void Master::startIfReady(Outbox& out, bool force) {
+  if (started_ || (force ? startingMissing_ : speedIndicesMissing_) > 0) return;
+  int known = startingWorkers_;
+  while (known < workerCount() &&
+         (!isLive(known) || speedIndices_[static_cast<size_t>(known)] > 0)) {
+    ++known;
+  }
+  bool live = false;
+  for (int w = 0; w < known && !live; ++w) live = isLive(w);
+  if (live) startStrategy(known, out);
+}
+
+// A worker there before the start has reported its speed index, or is lost before it did.
+void Master::measured(int worker, double now) {
+  --speedIndicesMissing_;
+  if (worker < startingWorkers_ && --startingMissing_ == 0) startingReadyAt_ = now;
+}
+
+void Master::startStrategy(int known, Outbox& out) {
   started_ = true;
-  // The strategy sees every worker; one lost before the start gets the slowest live speed so
-  // its arithmetic stays finite, and is reported lost straight away.
-  std::vector<double> speeds = speedIndices_;
+  // The strategy sees workers 0 .. known-1; one lost before the start gets the slowest live
+  // speed so its arithmetic stays finite, and is reported lost straight away.
+  std::vector<double> speeds(speedIndices_.begin(), speedIndices_.begin() + known);
   const double slowest = slowestSpeedIndex();
-  for (int w = 0; w < workerCount(); ++w) {
+  for (int w = 0; w < known; ++w) {
     if (!isLive(w)) speeds[static_cast<size_t>(w)] = slowest;
   }
-  strategyWorkers_ = workerCount();
+  strategyWorkers_ = known;
   StartInfo info{map_.taskCount(), speeds};
   // A sequence's frames, as the strategy's tasks hold them (a resumed run's frames are
   // shorter by what was done; their boundaries are then approximate, which only affects the
@@ -148,16 +181,16 @@ void Master::startStrategy(Outbox& out) {
   const uint64_t frames = scene_.frames.count();
   if (frames > 1) info.frameTasks = std::max<uint64_t>(1, map_.taskCount() / frames);
   apply(strategy_->start(info), out);
-  for (int w = 0; w < workerCount(); ++w) {
+  for (int w = 0; w < known; ++w) {
     if (!isLive(w)) apply(strategy_->onWorkerLost(w, TaskSet{}), out);
   }
   // A worker given nothing at the start has, in the paper's words, finished its assigned
   // tasks: it asks for more. Entering that request here means every idle worker is known to
   // the strategy, so tasks that come back from a lost worker always find a taker.
-  for (int w = 0; w < workerCount(); ++w) {
+  for (int w = 0; w < known; ++w) {
     if (isLive(w)) checks_.setEligible(w, true);
   }
-  for (int w = 0; w < workerCount() && !ledger_.complete(); ++w) {
+  for (int w = 0; w < known && !ledger_.complete(); ++w) {
     if (isLive(w) && !ledger_.holdsWork(w)) apply(strategy_->onRequest(w), out);
   }
   finishIfComplete(out);  // an image with no tasks left
@@ -195,7 +228,11 @@ std::vector<uint64_t> Master::strategyQueueLengths() const {
 Outbox Master::onWorkerJoined(int worker, double now) {
   PRT_CHECK(worker == workerCount());
   Outbox out;
+  now_ = now;
   ledger_.addWorker(now);
+  taskLeases_.addWorker();
+  openOrders_.emplace_back();
+  inbound_.push_back(0);
   speedIndices_.push_back(0.0);
   answered_.push_back(true);  // not asked by a query already open
   queueLengths_.push_back(0);
@@ -208,7 +245,7 @@ Outbox Master::onWorkerJoined(int worker, double now) {
     out.push_back({worker, StopMsg{}});
     return out;
   }
-  if (!started_) ++speedIndicesMissing_;  // one of the starting workers, then
+  if (!started_) ++speedIndicesMissing_;  // one of the workers the start waits for, then
   out.push_back({worker, scene_});
   return out;
 }
@@ -287,6 +324,30 @@ bool Master::plausible(const Message& message) const {
   return true;
 }
 
+// Why a live worker's transfer notice cannot be true, or "" when it can: it must answer the
+// oldest order the master sent it (workers act on orders in the order they arrive, and answer
+// each), and move only tasks it holds. A peer ordered to send it tasks may have done so
+// before the master has that peer's notice: that many tasks it may move unrecorded.
+std::string Master::unordered(int from, const TransferNoticeMsg& notice) {
+  std::vector<TransferOrderMsg>& open = openOrders_[static_cast<size_t>(from)];
+  const std::string moves = "a transfer notice of " + std::to_string(notice.tasks.size()) +
+                            " tasks to worker " + std::to_string(notice.to);
+  if (open.empty()) return "it sent " + moves + " that no order asked for";
+  const TransferOrderMsg order = open.front();
+  if (notice.to != order.to || notice.tasks.size() > order.count) {
+    return "it sent " + moves + " for an order of at most " + std::to_string(order.count) +
+           " to worker " + std::to_string(order.to);
+  }
+  open.erase(open.begin());
+  uint64_t& coming = inbound_[static_cast<size_t>(order.to)];
+  coming -= std::min(coming, order.count);
+  const uint64_t missing = ledger_.notHeld(from, notice.tasks);
+  if (missing > inbound_[static_cast<size_t>(from)]) {
+    return "it sent " + moves + ", " + std::to_string(missing) + " of which it does not hold";
+  }
+  return "";
+}
+
 ResultsMsg Master::onlyHandedOut(const ResultsMsg& r) const {
   ResultsMsg out;
   out.computeSeconds = r.computeSeconds;
@@ -309,6 +370,7 @@ Outbox Master::onMessage(int from, const Message& message, double now) {
   PRT_CHECK(from >= 0 && from < workerCount());
   const auto w = static_cast<size_t>(from);
   if (untrusted_[w]) return out;  // nothing from it counts any more, late results included
+  now_ = now;
   ledger_.heard(from, now);
   if (!plausible(message)) {
     // What it delivered before is as doubtful: rejected, as by a failed spot check.
@@ -325,6 +387,7 @@ Outbox Master::onMessage(int from, const Message& message, double now) {
     const ResultsMsg* r = filtered ? &*filtered : given;
     // Results count from anyone, lost or not: the first copy of a pixel wins.
     const TaskSet fresh = ledger_.accept(from, r->tasks);
+    if (isLive(from)) taskLeases_.returned(from, now, r->computeSeconds, !fresh.empty());
     // Adaptive strategies learn the worker's rate from every batch it rendered, copies
     // included (it spent the time on them); a lost worker's batches teach nothing useful.
     if (started_ && !stopped_ && isLive(from)) {
@@ -379,10 +442,11 @@ Outbox Master::onMessage(int from, const Message& message, double now) {
     }
     const bool first = speedIndices_[w] == 0.0;
     speedIndices_[w] = s->seconds;
+    taskLeases_.setSpeedIndex(from, s->seconds);
     if (options_.endgame) endgameOrder_.setWeight(from, s->seconds);
     if (!started_) {
-      if (first) --speedIndicesMissing_;
-      if (speedIndicesMissing_ == 0) startStrategy(out);
+      if (first) measured(from, now);
+      startIfReady(out, false);
     }
     introduceJoiners(out);
   } else if (std::holds_alternative<RequestMsg>(message)) {
@@ -394,8 +458,14 @@ Outbox Master::onMessage(int from, const Message& message, double now) {
       answerQueryIfComplete(out);
     }
   } else if (const auto* n = std::get_if<TransferNoticeMsg>(&message)) {
+    if (const std::string why = unordered(from, *n); !why.empty()) {
+      reject(from, now, why, out);
+      finishIfComplete(out);
+      return out;
+    }
     ledger_.movedOut(from, n->tasks);
     if (isLive(n->to)) {
+      taskLeases_.given(n->to, now, !ledger_.holdsWork(n->to));
       ledger_.gave(n->to, n->tasks);
       if (options_.endgame) endgameOrder_.gave(n->to, n->tasks.size());
     } else {
@@ -408,6 +478,7 @@ Outbox Master::onMessage(int from, const Message& message, double now) {
       if (!stopped_) returnToStrategy(n->to, map_.toTasks(left), out);
     }
   } else if (const auto* c = std::get_if<CheckResultsMsg>(&message)) {
+    taskLeases_.renew(from, now);
     settle(checks_.results(from, c->tasks, c->rgb), now, out);
   }
   // HeartbeatMsg: the lease is renewed above. Whatever it was, the sender is between batches:
@@ -513,13 +584,16 @@ void Master::reject(int worker, double now, const std::string& reason, Outbox& o
 void Master::lose(int worker, double now, const std::string& reason, Outbox& out) {
   const auto w = static_cast<size_t>(worker);
   const TaskSet unfinished = ledger_.markLost(worker, now, reason);
+  taskLeases_.drop(worker);
+  // Its open orders die with it; what peers were ordered to send it stays allowed for: their
+  // tasks may be on the way.
+  openOrders_[w].clear();
   endgameServed_[w] = false;
   if (options_.endgame) endgameOrder_.setEligible(worker, false);
   if (!started_) {
-    if (speedIndices_[w] == 0.0) --speedIndicesMissing_;
+    if (speedIndices_[w] == 0.0) measured(worker, now);  // it never will now
     speedIndices_[w] = 0.0;
-    // Start without it once everyone else has reported.
-    if (speedIndicesMissing_ == 0 && ledger_.liveCount() > 0) startStrategy(out);
+    startIfReady(out, false);  // without it, once everyone else has reported
     return;
   }
   if (queryOpen_ && !answered_[w]) {
@@ -538,6 +612,7 @@ void Master::lose(int worker, double now, const std::string& reason, Outbox& out
 
 Outbox Master::onWorkerLost(int worker, double now, const std::string& reason) {
   Outbox out;
+  now_ = now;
   if (isLive(worker)) lose(worker, now, reason, out);
   finishIfComplete(out);
   return out;
@@ -546,11 +621,44 @@ Outbox Master::onWorkerLost(int worker, double now, const std::string& reason) {
 Outbox Master::expireLeases(double now, double leaseSeconds) {
   Outbox out;
   if (stopped_) return out;
+  now_ = now;
+  if (!started_ && startingMissing_ == 0 && now - startingReadyAt_ > leaseSeconds) {
+    startIfReady(out, true);  // joiners still measuring a lease after the starting workers
+  }
   // A check unanswered for a lease (its checker there, but silent on it) is the master's.
   if (checks_.expire(now, leaseSeconds) > 0) dispatchChecks(-1, now, out);
   for (int w : ledger_.expired(now, leaseSeconds)) {
     char reason[64];
     std::snprintf(reason, sizeof reason, "silent for %.1f s", ledger_.silentSeconds(w, now));
+    lose(w, now, reason, out);
+  }
+  // Task leases: there, but returning nothing for what it holds.
+  for (int w : taskLeases_.expired(now)) {
+    if (!isLive(w) || stopped_) continue;
+    const uint64_t held = ledger_.unfinishedCount(w);
+    if (held == 0) continue;  // nothing left to wait for: the lease starts with its next tasks
+    // Only when another live worker shows the time was there to work — it returned a fresh
+    // result in the last half of this lease, or holds nothing and waits — so that a machine
+    // too busy for every worker (a load spike) costs time, never the workers of a run. Not
+    // acted on, the lease is looked at again half a lease later: those windows tile the time,
+    // so another worker's next fresh result is seen within half a lease.
+    const double half = taskLeases_.leaseOf(w) / 2;
+    const double recent = std::max(now - half, taskLeases_.since(w));
+    bool others = false;
+    for (int v = 0; v < workerCount() && !others; ++v) {
+      others = v != w && isLive(v) && !untrusted_[static_cast<size_t>(v)] &&
+               (taskLeases_.lastFresh(v) > recent || !ledger_.holdsWork(v));
+    }
+    if (!others) {
+      taskLeases_.postpone(w, now, half);
+      continue;
+    }
+    char reason[160];
+    std::snprintf(reason, sizeof reason,
+                  "returned no result for %.1f s while holding %llu unfinished tasks "
+                  "(its task lease: %.1f s)",
+                  now - taskLeases_.since(w), static_cast<unsigned long long>(held),
+                  taskLeases_.leaseOf(w));
     lose(w, now, reason, out);
   }
   finishIfComplete(out);

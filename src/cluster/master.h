@@ -12,11 +12,22 @@
 // no live worker holds anything, since every worker the strategy gave nothing at the start is
 // entered as having asked. A result is accepted once: a late or duplicate copy is dropped.
 //
+// Task leases (cluster/task_leases.h, on with MasterOptions::taskLease): a worker that holds
+// unfinished tasks and returns no result for its task lease is lost as well, heartbeats or
+// not, and what it holds is reissued.
+//
+// Transfers: a worker's transfer notice must answer the master's oldest open order to it
+// (the same receiver, no more tasks than ordered), and move only tasks it holds (beyond what
+// peers were ordered to send it and may be on the way). A notice that cannot be true rejects
+// its sender, as any implausible message does.
+//
 // Joining: a worker may join the running render (onWorkerJoined), numbered in arrival order
 // after the others. It gets the scene; once its speed index is in, the strategy hears of it
 // (Strategy::onWorkerJoined, in index order) and its request is entered. One that joins
-// before the strategy started counts as one of the starting workers; one that joins after the
-// image is complete is told to stop.
+// before the strategy started counts as one of the starting workers, unless it has not
+// reported its speed index a lease after they all have: the strategy then starts without it
+// (while a starting worker is live), and hears of it as of any joiner once it reports. One
+// that joins after the image is complete is told to stop.
 //
 // Spot checks: with MasterOptions::checks on, a sample of every worker's accepted pixels is
 // rendered again by another worker (or by the referee, the master's own render) and compared
@@ -25,8 +36,10 @@
 // delivered is taken back and reissued. The image is complete only once every check is in.
 // Not thread-safe: one driver thread calls it.
 
+#include <algorithm>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -36,6 +49,7 @@
 #include "cluster/ledger.h"
 #include "cluster/messages.h"
 #include "cluster/spot_checks.h"
+#include "cluster/task_leases.h"
 #include "cluster/task_map.h"
 
 namespace prt {
@@ -73,6 +87,8 @@ struct MasterOptions {
   std::function<std::string(const WorkerIdentity&)> admit;
   // Told of each rejection as it happens (a driver's blocklist for later joiners).
   std::function<void(const RejectedWorker&)> rejected;
+  // Leases on the tasks each worker holds (cluster/task_leases.h); off by default.
+  TaskLeaseOptions taskLease;
 };
 
 
@@ -94,8 +110,16 @@ class Master {
   void renewLease(int worker, double at) {
     if (ledger_.isLive(worker)) ledger_.heard(worker, at);
   }
-  // Declares lost every live worker silent for more than `leaseSeconds`.
+  // Declares lost every live worker silent for more than `leaseSeconds`, and every one whose
+  // task lease ran out.
   Outbox expireLeases(double now, double leaseSeconds);
+  // When the next lease or task lease runs out (a driver's poll deadline).
+  double nextExpiry(double leaseSeconds) const {
+    const double start = !started_ && startingMissing_ == 0
+                             ? startingReadyAt_ + leaseSeconds
+                             : std::numeric_limits<double>::infinity();
+    return std::min({ledger_.nextExpiry(leaseSeconds), taskLeases_.nextExpiry(), start});
+  }
   // A worker joins at `now`; `worker` must be workerCount() (drivers number joiners in
   // arrival order). Its lease starts now.
   Outbox onWorkerJoined(int worker, double now);
@@ -124,7 +148,9 @@ class Master {
   const WorkerIdentity& identity(int worker) const { return identities_[static_cast<size_t>(worker)]; }
 
  private:
-  void startStrategy(Outbox& out);
+  void startIfReady(Outbox& out, bool force);
+  void measured(int worker, double now);
+  void startStrategy(int known, Outbox& out);
   void apply(const Decisions& decisions, Outbox& out);
   void assign(int worker, const TaskSet& pixels, Outbox& out);
   void lose(int worker, double now, const std::string& reason, Outbox& out);
@@ -134,6 +160,7 @@ class Master {
   void endgameCopy(int worker, Outbox& out);
   void introduceJoiners(Outbox& out);
   bool plausible(const Message& message) const;
+  std::string unordered(int from, const TransferNoticeMsg& notice);
   ResultsMsg onlyHandedOut(const ResultsMsg& results) const;
   double slowestSpeedIndex() const;
   void check(int author, const TaskSet& fresh, const std::vector<float>& rgb);
@@ -153,7 +180,10 @@ class Master {
   uint64_t resumed_ = 0;
 
   std::vector<double> speedIndices_;
-  int speedIndicesMissing_;
+  int speedIndicesMissing_;  // of the workers there, joiners before the start included
+  int startingMissing_;      // of the workers the run started with
+  int startingWorkers_;      // the workers the run started with
+  double startingReadyAt_ = 0;  // when the last of those reported (or was lost)
   bool started_ = false;  // strategy started (all speed indices in)
   int strategyWorkers_ = 0;  // workers the strategy knows of: 0 .. strategyWorkers_-1
   TaskSet orphans_;          // lost workers' tasks waiting for a joiner (returnToStrategy)
@@ -171,6 +201,12 @@ class Master {
   std::vector<RejectedWorker> rejections_;
   std::vector<WorkerIdentity> identities_;
   bool dispatching_ = false;
+  TaskLeases taskLeases_;
+  double now_ = 0;  // the time of the input being handled
+  // Per worker: the transfer orders sent to it that it has not answered, oldest first; and
+  // how many tasks peers were ordered to send it (less those their notices gave it).
+  std::vector<std::vector<TransferOrderMsg>> openOrders_;
+  std::vector<uint64_t> inbound_;
 };
 
 }  // namespace prt

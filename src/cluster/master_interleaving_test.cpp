@@ -35,6 +35,7 @@ struct Outcome {
   bool failed = false;
   std::vector<float> values;
   std::string state;  // what was left, when the run did not finish
+  std::vector<RejectedWorker> rejections;
 };
 
 Outcome runShuffled(const Scenario& s, uint32_t seed) {
@@ -125,6 +126,7 @@ Outcome runShuffled(const Scenario& s, uint32_t seed) {
   }
   result.complete = master.complete();
   result.failed = master.failed();
+  result.rejections = master.rejections();
   if (!result.complete) {
     uint64_t missing = 0;
     for (float v : result.values) missing += v < 0;
@@ -142,6 +144,13 @@ void expectEveryPixelRight(const Scenario& s, uint32_t seeds) {
   for (uint32_t seed = 1; seed <= seeds; ++seed) {
     const Outcome o = runShuffled(s, seed);
     ASSERT_TRUE(o.complete) << s.strategy << ", seed " << seed << ": " << o.state;
+    // Only a corrupt worker is rejected: a transfer notice that arrives before the notice of
+    // the transfer it passes on is not taken for a lie.
+    for (const RejectedWorker& r : o.rejections) {
+      const auto w = static_cast<size_t>(r.worker);
+      ASSERT_TRUE(w < s.corrupt.size() && s.corrupt[w])
+          << s.strategy << ", seed " << seed << ": worker " << r.worker << " rejected: " << r.reason;
+    }
     for (uint64_t p = 0; p < s.pixels; ++p) {
       ASSERT_EQ(o.values[p], static_cast<float>(p)) << s.strategy << ", seed " << seed
                                                      << ", pixel " << p;

@@ -67,13 +67,32 @@ void Worker::requestIfIdle(Outbox& out) {
   }
 }
 
+bool Worker::peerTransferFits(const TaskSet& tasks) const {
+  const uint64_t limit = taskLimit_ == UINT64_MAX ? UINT64_MAX / 2 : taskLimit_;
+  if (tasks.size() > limit || queue_.size() > 2 * limit - tasks.size()) return false;
+  for (const TaskRun& r : tasks.runs()) {
+    if (r.stride == 0 && r.count > 1) return false;
+  }
+  return true;
+}
+
 Outbox Worker::onMessage(int from, const Message& message) {
   Outbox out;
   if (stopped_) return out;
   const auto* transfer = std::get_if<TasksMsg>(&message);
   const auto* check = std::get_if<CheckMsg>(&message);
+  const bool peer = from != kMaster;
+  if (peer && std::find(refusedPeers_.begin(), refusedPeers_.end(), from) != refusedPeers_.end()) {
+    ++refused_;
+    return out;
+  }
+  if (peer && transfer != nullptr && setUp_ && !peerTransferFits(transfer->tasks)) {
+    refusedPeers_.push_back(from);
+    ++refused_;
+    return out;
+  }
   const bool refused =
-      (from != kMaster && (transfer == nullptr || !setUp_)) ||
+      (peer && (transfer == nullptr || !setUp_)) ||
       (transfer != nullptr && !transfer->tasks.allBelow(taskLimit_)) ||
       (check != nullptr && !check->tasks.allBelow(taskLimit_)) ||
       (std::holds_alternative<SceneMsg>(message) && scene_.has_value());

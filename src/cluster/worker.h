@@ -53,7 +53,9 @@ class Worker {
   // Acts on the master's messages and on tasks a peer transfers (diffusion). What only the
   // master may send (scene, queries, transfer orders, Stop) from anyone else, a second scene,
   // tasks from a peer before this worker is set up, and tasks beyond limitTasks are dropped
-  // and counted: a message relayed to a worker costs at most itself.
+  // and counted: a message relayed to a worker costs at most itself. A peer's transfer that
+  // cannot be a queue's tail (peerTransferFits) is refused too, and that peer is refused
+  // from then on.
   Outbox onMessage(int from, const Message& message);
   // The render's task count, once the scene is loaded: tasks at or beyond it are refused.
   void limitTasks(uint64_t count) { taskLimit_ = count; }
@@ -84,6 +86,11 @@ class Worker {
   bool stopped() const { return stopped_; }
   uint64_t queueLength() const { return queue_.size(); }
   uint64_t tasksReceived() const { return tasksReceived_; }  // task messages received
+  // Whether a peer's transfer of `tasks` could be the tail of its queue: no more tasks than
+  // the render has, no task repeated within a run (a stride of 0: no queue holds one), and
+  // this worker's queue no longer than twice the render with them. Bounds what a relayed
+  // message can make a worker render to itself, whatever its runs say.
+  bool peerTransferFits(const TaskSet& tasks) const;
 
  private:
   void requestIfIdle(Outbox& out);
@@ -101,6 +108,7 @@ class Worker {
   uint64_t tasksReceived_ = 0;
   uint64_t taskLimit_ = UINT64_MAX;
   uint64_t refused_ = 0;
+  std::vector<int> refusedPeers_;  // peers that sent a transfer that cannot be true
   double pixelsPerSecond_ = 0;  // the last measured batch's rate (0: none yet)
 };
 

@@ -100,6 +100,40 @@ TEST(WorkerSenders, OnlyTheMasterStopsQueriesOrdersAndSendsTheScene) {
   EXPECT_TRUE(w.stopped());
 }
 
+// A peer's transfer that cannot be the tail of a queue (2^40 copies of one pixel, more tasks
+// than the render has, a queue grown past twice the render) is refused without being walked,
+// and so is everything that peer sends after; other peers are still heard.
+TEST(WorkerSenders, APeersTransferThatCannotBeAQueuesTailIsRefusedAndSoIsThatPeer) {
+  Worker w = holding(WorkerOptions{10, 0}, 20);
+  w.limitTasks(100);
+  const TaskSet copies = [] {
+    TaskSet s;
+    s.append(TaskRun{0, uint64_t{1} << 40, 0});
+    return s;
+  }();
+  EXPECT_TRUE(w.onMessage(2, TasksMsg{copies}).empty());
+  EXPECT_EQ(w.queueLength(), 20u) << "2^40 copies of pixel 0 were queued";
+  EXPECT_EQ(w.refusedMessages(), 1u);
+  w.onMessage(2, TasksMsg{TaskSet::range(50, 10)});
+  EXPECT_EQ(w.queueLength(), 20u) << "a refused peer is refused from then on";
+  EXPECT_EQ(w.refusedMessages(), 2u);
+  // Two copies of a pixel in one run (stride 0) are no queue's tail either.
+  w.onMessage(3, TasksMsg{TaskSet::strided(7, 2, 0)});
+  EXPECT_EQ(w.queueLength(), 20u);
+  // Another peer's true transfer is taken; then one more than the render has is not.
+  w.onMessage(4, TasksMsg{TaskSet::range(50, 10)});
+  EXPECT_EQ(w.queueLength(), 30u);
+  w.onMessage(5, TasksMsg{TaskSet::strided(0, 101, 1)});
+  EXPECT_EQ(w.queueLength(), 30u) << "more tasks than the render has";
+  // Within the bounds, a queue at most twice the render.
+  w.onMessage(6, TasksMsg{TaskSet::range(0, 100)});
+  w.onMessage(6, TasksMsg{TaskSet::range(0, 70)});
+  EXPECT_EQ(w.queueLength(), 200u);
+  w.onMessage(7, TasksMsg{TaskSet::range(0, 1)});
+  EXPECT_EQ(w.queueLength(), 200u) << "a queue longer than twice the render";
+  EXPECT_EQ(w.refusedMessages(), 5u);
+}
+
 // A spot check is rendered before the next batch of the worker's own tasks, and goes back as
 // check results, not as results: it is not the worker's task, and asks for nothing.
 TEST(WorkerChecks, AreRenderedFirstAndReturnedApart) {

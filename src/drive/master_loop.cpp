@@ -105,27 +105,33 @@ class MasterPump {
   }
 
   // Every worker got StopMsg with the last results; each live one answers with its summary.
-  // One that joins meanwhile is told to stop at once, and its summary is waited for too.
+  // One that joins meanwhile is told to stop at once, and its summary is waited for too. The
+  // goodbye is bounded: a lease from the Stop (or from its joining) for each worker, whatever
+  // it sends meanwhile — a worker that heartbeats on and never says goodbye cannot hold the
+  // image back — and a stop signal ends it at once. A missing summary is noted, not waited for.
   void collectSummaries() {
     const auto& summaries = reactor_.summaries();
-    std::vector<double> lastHeard;
+    std::vector<double> until;
     std::vector<bool> waiting;
     auto track = [&] {
       for (int w = static_cast<int>(waiting.size()); w < master_.workerCount(); ++w) {
-        lastHeard.push_back(net_.now());
+        until.push_back(net_.now() + options_.leaseSeconds);
         waiting.push_back(master_.isLive(w));
       }
     };
     track();
     auto pending = [&] {
       for (size_t i = 0; i < waiting.size(); ++i) {
-        if (waiting[i] && !summaries[i] && net_.now() - lastHeard[i] <= options_.leaseSeconds) {
-          return true;
-        }
+        if (waiting[i] && !summaries[i] && net_.now() <= until[i]) return true;
       }
       return false;
     };
+    const auto signalled = [&] {
+      if (options_.stopPending) return options_.stopPending();
+      return options_.interrupted && options_.interrupted() != 0;
+    };
     while (pending()) {
+      if (signalled()) break;
       const Incoming in = net_.poll(net_.now() + 0.05);
       if (in.kind == Incoming::Kind::PeerJoined) {
         receive(in);  // too late to help: told to stop
@@ -136,13 +142,13 @@ class MasterPump {
       const auto i = static_cast<size_t>(in.from);
       if (in.kind == Incoming::Kind::PeerLost) {
         waiting[i] = false;
-      } else if (in.kind == Incoming::Kind::Packet) {
-        lastHeard[i] = net_.now();
-        if (in.channel == Channel::Summary) reactor_.onSummary(in.from, in.bytes);
-        // Protocol messages still in flight after the end (a last request) are dropped.
+      } else if (in.kind == Incoming::Kind::Packet && in.channel == Channel::Summary) {
+        reactor_.onSummary(in.from, in.bytes);
       }
+      // Protocol messages still in flight after the end (a last request, heartbeats) are
+      // dropped.
     }
-    net_.flush(options_.leaseSeconds);
+    net_.flush(signalled() ? 0.0 : options_.leaseSeconds);
   }
 
   Transport& net_;

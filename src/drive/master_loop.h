@@ -10,7 +10,8 @@
 //     block the loop.
 //   - It measures the master's CPU time outside its waits (MasterLoad::busySeconds).
 //   - Once the image is complete, the loop collects the live workers' summaries, waiting at
-//     most a lease for each after its last message; a missing one is noted, not waited for.
+//     most a lease for each from the Stop, whatever it sends meanwhile, and not at all once a
+//     stop signal is pending; a missing one is noted, not waited for.
 
 #include <functional>
 #include <optional>
@@ -28,6 +29,9 @@ namespace prt {
 
 struct MasterLoopOptions : MasterReactorOptions {
   std::function<int()> interrupted;   // a pending stop signal (0: none); null: never
+  // Once the image is complete: whether a stop signal is pending, asked without a word (the
+  // image is written, nothing is left to save); null: `interrupted` is asked.
+  std::function<bool()> stopPending;
   std::function<bool()> abandoned;    // true: stop now (the driver reports why); null: never
   // Called after every wait, at most a quarter of a second apart, for progress; null: none.
   std::function<void(double now)> tick;

@@ -12,6 +12,7 @@
 
 #include "cluster/master.h"
 #include "core/cpu_time.h"
+#include "core/stop_signals.h"
 #include "core/thread_start.h"
 #include "farm/build_info.h"
 #include "farm/frame_renderer.h"
@@ -73,6 +74,8 @@ ParallelRun runMasterSide(Transport& net, const RunRequest& request, const std::
   if (options.verifyPercent > 0 && n == 1) ownRenderer().frame(0);
   MasterOptions masterOptions;
   masterOptions.endgame = options.endgame;
+  // A worker that keeps tasks without returning results is lost as one that falls silent.
+  masterOptions.taskLease = {kTaskLeaseBatches, options.workerTimeoutSeconds};
   // Spot checks: the referee is the master's own render, built when first needed (a
   // disagreement, or no other worker to check), on one thread of this machine.
   // The seed is drawn here unless given: no worker can know which of its pixels are checked.
@@ -140,6 +143,8 @@ ParallelRun runMasterSide(Transport& net, const RunRequest& request, const std::
   loop.heartbeatSeconds = options.heartbeatSeconds();
   loop.checkpointEverySeconds = options.checkpointEverySeconds;
   loop.interrupted = request.interrupted;
+  // After the last pixel a signal only cuts the goodbye short: the image is written as usual.
+  if (request.interrupted) loop.stopPending = [] { return pendingStopSignal() != 0; };
   loop.abandoned = std::move(abandoned);
   // The automatic checkpoint: armed once the run is expected to be long.
   bool armed = !options.checkpointAutomatic;

@@ -19,7 +19,7 @@ void MasterReactor::start(double now) {
 }
 
 double MasterReactor::nextDeadline() const {
-  return std::min({nextBeat_, nextCheckpoint_, master_.ledger().nextExpiry(options_.leaseSeconds)});
+  return std::min({nextBeat_, nextCheckpoint_, master_.nextExpiry(options_.leaseSeconds)});
 }
 
 void MasterReactor::take(Outbox out, double now) {

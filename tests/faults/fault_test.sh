@@ -17,9 +17,21 @@
 #                  and late, one and two of them, threaded or not, for several strategies: each
 #                  is rejected (and no other), its pixels are rendered again, and the image is
 #                  the serial one; with --verify 0 the same fault does reach the image
+#   hostile-notice a joiner over TCP (HOSTILE, speaking the wire protocol) sends one transfer
+#                  notice claiming every pixel moved to worker 0, then disconnects: it is
+#                  rejected, and the run ends with the serial image (adaptive, stealing, self)
+#   hostile-tasks  a joiner relays to worker 0 a task message of 2^40 copies of pixel 0: the
+#                  worker refuses it, and the run ends with the serial image
+#   hostile-linger a joiner that heartbeats after the Stop and never says goodbye: the render
+#                  ends a lease after its last pixel, and at once on SIGTERM, image written
+#   hostile-hoard  a joiner takes tasks and returns none, heartbeating: its task lease runs
+#                  out, its tasks are rendered by the others (adaptive, stealing, and
+#                  adaptive with --endgame on); also when it claims a speed index of 10^6 s
+#                  (stealing)
+#   (the hostile modes take the hostile joiner's path as a fifth argument)
 set -eu
 
-prt=$1 scene=$2 work=$3 mode=$4
+prt=$1 scene=$2 work=$3 mode=$4 hostile=${5:-}
 here=$(cd "$(dirname "$0")" && pwd)
 rm -rf "$work"
 mkdir -p "$work"
@@ -346,6 +358,132 @@ PY
     [ -f out.pfm ] && [ ! -f ck ] || fail "a complete checkpoint: no image, or the checkpoint kept"
     ! grep -q '"missing_summaries": [1-9]' r.json || fail "summaries waited for in vain: $(grep missing r.json)"
     [ ! -f "ck.tmp-4194303-0" ] || fail "a dead run's temporary checkpoint was left"
+    ;;
+  hostile-*)
+    # A local render of one worker, slowed to last a few seconds, with a TCP door; then the
+    # hostile joiner (tests/faults/hostile_joiner.cpp) joins it. Every wait is bounded.
+    [ -x "$hostile" ] || fail "no hostile joiner given"
+    size="--width 32 --height 24 --spp 16 --drt 2"
+    pixels=768
+    # shellcheck disable=SC2086
+    "$prt" render "$scene" -q $size -o serial.pfm
+    start_render() {
+      rm -f port out.pfm r.json ck out.pfm.ckpt
+      # shellcheck disable=SC2086
+      timeout -k 2 "$limit" "$prt" render "$scene" -q $size --workers 1 --speed-index none \
+        --slowdown 300 --batch "${batch:-16}" --accept-workers "$work/port" -o out.pfm --report r.json \
+        "$@" 2>render-err.txt &
+      render=$!
+      for _ in $(seq 100); do [ -s port ] && return 0; sleep 0.05; done
+      fail "no port file: $(cat render-err.txt)"
+    }
+    # Waits for the render; fails if it hung (the limit) or failed.
+    end_render() {
+      set +e
+      wait "$render"
+      status=$?
+      set -e
+      [ "$status" -ne 124 ] && [ "$status" -ne 137 ] || fail "$1: the render hung"
+      [ "$status" -eq 0 ] || fail "$1: exit $status: $(cat render-err.txt)"
+      cmp serial.pfm out.pfm || fail "$1: the image differs"
+    }
+    # Waits until the hostile joiner has seen the Stop (at most 30 s).
+    await_stop() {
+      for _ in $(seq 600); do grep -q stopped joiner-out.txt 2>/dev/null && return 0; sleep 0.05; done
+      fail "the joiner never saw the Stop: $(cat render-err.txt)"
+    }
+    limit=40
+    case $mode in
+      hostile-notice)
+        for strategy in adaptive stealing self; do
+          start_render --strategy "$strategy" --worker-timeout 2
+          "$hostile" port forge-notice $pixels 30 >joiner-out.txt 2>&1 || fail "not admitted: $(cat joiner-out.txt)"
+          end_render "$strategy, forged notice"
+          python3 - <<'PY' || fail "$strategy: the forger is not rejected in the report"
+import json
+r = json.load(open("r.json"))
+assert [x["worker"] for x in r["rejected_workers"]] == [1], r["rejected_workers"]
+assert "no order asked for" in r["rejected_workers"][0]["reason"], r["rejected_workers"]
+PY
+          echo "ok: $strategy"
+        done
+        ;;
+      hostile-tasks)
+        for strategy in adaptive stealing; do
+          start_render --strategy "$strategy" --worker-timeout 2
+          "$hostile" port huge-tasks $pixels 30 >joiner-out.txt 2>&1 || fail "not admitted: $(cat joiner-out.txt)"
+          end_render "$strategy, 2^40 copies relayed"
+          python3 - <<'PY' || fail "$strategy: the report counts more pixels than the image"
+import json
+r = json.load(open("r.json"))
+assert sum(w["pixels"] for w in r["workers"]) == 32 * 24, [w["pixels"] for w in r["workers"]]
+PY
+          echo "ok: $strategy"
+        done
+        ;;
+      hostile-linger)
+        # The goodbye lasts at most the lease (2 s) from the Stop, the joiner heartbeating on.
+        start_render --worker-timeout 2
+        "$hostile" port linger $pixels 60 >joiner-out.txt 2>&1 &
+        joiner=$!
+        await_stop
+        for _ in $(seq 200); do kill -0 "$render" 2>/dev/null || break; sleep 0.05; done
+        if kill -0 "$render" 2>/dev/null; then
+          fail "the render still waits for a joiner 10 s after its last pixel"
+        fi
+        end_render "a joiner that never says goodbye"
+        wait "$joiner" || true
+        # A lease of 30 s: SIGTERM in the goodbye ends it at once, with the image.
+        start_render --worker-timeout 30 --checkpoint "$work/ck"
+        "$hostile" port linger $pixels 60 >joiner-out.txt 2>&1 &
+        joiner=$!
+        await_stop
+        kill -TERM "$render"
+        for _ in $(seq 100); do kill -0 "$render" 2>/dev/null || break; sleep 0.05; done
+        if kill -0 "$render" 2>/dev/null; then fail "SIGTERM in the goodbye: still running 5 s later"; fi
+        end_render "SIGTERM in the goodbye"
+        [ ! -f ck ] || fail "SIGTERM in the goodbye: the checkpoint of a finished image was kept"
+        wait "$joiner" || true
+        ;;
+      hostile-hoard)
+        # The joiner stays 60 s; the render must not wait for it (the limit is 40 s).
+        for strategy in adaptive stealing "adaptive --endgame on"; do
+          # shellcheck disable=SC2086
+          start_render --strategy $strategy --worker-timeout 2
+          "$hostile" port hoard $pixels 60 >joiner-out.txt 2>&1 &
+          joiner=$!
+          end_render "$strategy, a joiner that keeps its tasks"
+          kill "$joiner" 2>/dev/null || true
+          wait "$joiner" 2>/dev/null || true
+          python3 - <<'PY' || fail "$strategy: the hoarder is not lost by its task lease"
+import json
+r = json.load(open("r.json"))
+lost = r["lost_workers"]
+assert [l["worker"] for l in lost] == [1] and "task lease" in lost[0]["reason"], lost
+PY
+          echo "ok: $strategy"
+        done
+        # One that claims to be a million times slower buys no lease without end: at most ten
+        # batches of ten times the longest batch returned (batches of 4 pixels: about 5 s on a
+        # quiet machine, 25 s on a busy one).
+        limit=90 batch=4
+        for strategy in stealing; do
+          start_render --strategy "$strategy" --worker-timeout 2
+          "$hostile" port hoard-slow $pixels 60 >joiner-out.txt 2>&1 &
+          joiner=$!
+          end_render "$strategy, a joiner that keeps its tasks and claims to be slow"
+          kill "$joiner" 2>/dev/null || true
+          wait "$joiner" 2>/dev/null || true
+          python3 - <<'PY' || fail "$strategy: the slow-claiming hoarder is not lost by its task lease"
+import json
+r = json.load(open("r.json"))
+lost = r["lost_workers"]
+assert [l["worker"] for l in lost] == [1] and "task lease" in lost[0]["reason"], lost
+PY
+          echo "ok: $strategy, claiming to be slow"
+        done
+        ;;
+    esac
     ;;
   *)
     fail "unknown mode $mode"
