@@ -24,8 +24,9 @@ class Engine {
   virtual uint64_t taskCount() const = 0;  // once loaded: the tasks of every frame
   virtual double measureSpeedIndex() = 0;  // seconds, as the scene's worker renders
   // Renders `batch`: 3 floats per task. `seconds` receives its time, `rays` adds the rays
-  // traced. With one thread, `between` (if set) is called between pieces of the batch, so
-  // the caller can keep sending heartbeats while it renders without a second thread.
+  // traced. `between` (if set) is called all through an emulated slowdown's wait and, with
+  // one thread, between pieces of the batch, so the caller can keep sending heartbeats while
+  // it renders without a second thread.
   virtual std::vector<float> render(const TaskSet& batch, double& seconds, uint64_t& rays,
                                     const std::function<void()>& between = {}) = 0;
 };

@@ -90,12 +90,12 @@ class Throttle {
 
   // A stretch computed by `threads` threads at once: fn returns the CPU seconds all of them
   // used. The emulated machine has as many cores, each k times slower, so the stretch lasts
-  // k times the CPU time per thread, k * cpu / threads.
+  // k times the CPU time per thread, k * cpu / threads. `tick` as for measure().
   template <typename F>
-  Stretch measureParallel(F&& fn, int threads) {
+  Stretch measureParallel(F&& fn, int threads, const std::function<void()>& tick = {}) {
     const auto start = std::chrono::steady_clock::now();
     const double cpu = fn();
-    return finish(start, cpu, std::max(1, threads));
+    return finish(start, cpu, std::max(1, threads), tick);
   }
 
   // measure(fn, tick), returning the wall seconds.

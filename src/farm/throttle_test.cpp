@@ -123,6 +123,16 @@ TEST(Throttle, AMultiThreadedStretchIsPacedByTheCpuTimeOfEveryThread) {
   EXPECT_LT(plain.measureParallel([] { return 0.040; }, 2).wallSeconds, 0.030);
 }
 
+TEST(Throttle, AMultiThreadedStretchTicksThroughItsWait) {
+  // A worker of two threads emulated 1000 times slower: 2 ms of CPU in all make a second of
+  // waiting, through which its heartbeats must go on (a master's lease is a few seconds).
+  Throttle throttle(1000.0);
+  int ticks = 0;
+  const Stretch s = throttle.measureParallel([] { return 0.002; }, 2, [&] { ++ticks; });
+  EXPECT_GE(s.wallSeconds, 0.999);
+  EXPECT_GE(ticks, 10);
+}
+
 TEST(Throttle, TheSlowdownFollowsItsSchedule) {
   const Throttle throttle(2.0, changesOf(parseSpeedChanges("0:1:8,0:0.5:4", "--slowdown-at", 1, 1), 0));
   EXPECT_EQ(throttle.slowdown(), 2.0);

@@ -116,7 +116,7 @@ std::vector<float> WorkerEngine::render(const TaskSet& batch, double& seconds, u
                         rays += frames_->render(batch, threads_, colors, &cpu);
                         return cpu;
                       },
-                      threads_)
+                      threads_, between)
                   .wallSeconds;
   }
   return asFloats(colors);

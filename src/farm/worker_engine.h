@@ -46,8 +46,10 @@ class WorkerEngine final : public Engine {
   // Renders `batch` (tasks of the frame sequence: FrameRenderer) on the worker's threads;
   // returns 3 floats per task. `seconds` receives the wall
   // time including the slowdown wait, `rays` the rays traced.
-  // With one thread, `between` (if set) is called between pieces of the batch on this thread,
-  // so the caller can keep sending heartbeats while it renders without a second thread.
+  // `between` (if set) is called on this thread all through the slowdown's wait and, with one
+  // thread, between pieces of the batch, so the caller can keep sending heartbeats while it
+  // renders without a second thread (a batch of several threads is rendered here when the
+  // last one was short, and a machine emulated 1000 times slower waits seconds after it).
   std::vector<float> render(const TaskSet& batch, double& seconds, uint64_t& rays,
                             const std::function<void()>& between = {}) override;
 
