@@ -464,12 +464,14 @@ PY
           echo "ok: $strategy"
         done
         # One that claims to be a million times slower buys no lease without end: at most ten
-        # batches of ten times the longest batch returned (batches of 4 pixels: about 5 s on a
-        # quiet machine, 25 s on a busy one).
-        limit=90 batch=4
+        # batches of ten times the longest batch returned (batches of 4 pixels: 18-21 s on a
+        # quiet machine; the longest batch, and so the lease, grows with the machine's load,
+        # past 60 s under two busy loops). The joiner stays longer than the render may last,
+        # so that only its task lease can end its part.
+        limit=150 batch=4
         for strategy in stealing; do
           start_render --strategy "$strategy" --worker-timeout 2
-          "$hostile" port hoard-slow $pixels 60 >joiner-out.txt 2>&1 &
+          "$hostile" port hoard-slow $pixels 200 >joiner-out.txt 2>&1 &
           joiner=$!
           end_render "$strategy, a joiner that keeps its tasks and claims to be slow"
           kill "$joiner" 2>/dev/null || true
