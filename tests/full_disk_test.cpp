@@ -106,8 +106,9 @@ TEST_F(FullDiskTest, AParallelSequenceStopsAtTheFrameThatDoesNotFitAndResumes) {
     ASSERT_EQ(resumed.exitCode, 0) << strategy << "\n" << resumed.output;
     for (int f = 0; f <= 29; ++f) {
       const std::string n = (f < 10 ? "0" : "") + std::to_string(f);
-      EXPECT_EQ(fullDiskRead(path("ref_" + n + ".ppm")), fullDiskRead(onDisk("f_" + n + ".ppm")))
-          << strategy << " frame " << f;
+      const bool same =
+          fullDiskRead(path("ref_" + n + ".ppm")) == fullDiskRead(onDisk("f_" + n + ".ppm"));
+      EXPECT_TRUE(same) << strategy << " frame " << f;
     }
     EXPECT_EQ(fullDiskRead(path("r.json")).find("\"resumed_pixels\": 0,"), std::string::npos);
     EXPECT_FALSE(fs::exists(path("ck")));
@@ -140,7 +141,7 @@ TEST_F(FullDiskTest, AStillThatDoesNotFitKeepsEveryPixel) {
     const Result resumed =
         run(command + " --resume" + (parallel ? " --report " + path("r.json") : ""));
     ASSERT_EQ(resumed.exitCode, 0) << driver << "\n" << resumed.output;
-    EXPECT_EQ(fullDiskRead(path("ref.ppm")), fullDiskRead(onDisk("still.ppm"))) << driver;
+    EXPECT_TRUE(fullDiskRead(path("ref.ppm")) == fullDiskRead(onDisk("still.ppm"))) << driver;
     if (parallel) {  // written, not rendered again
       EXPECT_NE(fullDiskRead(path("r.json")).find("\"resumed_pixels\": 4800,"), std::string::npos);
     }
