@@ -193,6 +193,18 @@ TEST_F(AnimationCliTest, AKilledSequenceResumesToTheSameFrames) {
   EXPECT_FALSE(fs::exists(path("ck")));
   const std::string report = readWhole(path("r.json"));
   EXPECT_EQ(report.find("\"resumed_pixels\": 0,"), std::string::npos) << report;
+  // What is left is each frame's own share of pixels: a worker prepares each frame about once,
+  // as in an uninterrupted run (a worker that met frames mixed in its batches once prepared
+  // them for nearly every batch, a resume many times slower than the whole render).
+  int workers = 0;
+  for (size_t at = report.find("\"frames_built\": "); at != std::string::npos;
+       at = report.find("\"frames_built\": ", at + 1)) {
+    ++workers;
+    const long built = std::stol(report.substr(at + 16));
+    EXPECT_GE(built, 1) << report;
+    EXPECT_LE(built, 3 * 8) << "frames prepared by one worker for 8 frames";
+  }
+  EXPECT_EQ(workers, 2) << report;
 }
 
 // The serial render with a checkpoint: killed and resumed the same way.
@@ -350,6 +362,85 @@ TEST_F(AnimationCliTest, CtrlCWhileTheVideoIsMadeLeavesNothingBehind) {
   EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 128 + SIGINT) << status;
   EXPECT_FALSE(fs::exists(path("v.mp4")));
   EXPECT_TRUE(temporariesIn(dir_.string()).empty());
+}
+
+// Whether process `pid` is gone (a zombie waiting for init counts as gone).
+bool processGone(pid_t pid) {
+  std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
+  std::string text;
+  if (!std::getline(stat, text)) return true;
+  const size_t close = text.rfind(')');
+  return close != std::string::npos && close + 2 < text.size() && text[close + 2] == 'Z';
+}
+
+// A stalled ffmpeg behind --video is ended at --video-timeout, with its child: the run fails
+// with exit 1 and says why, the frames stay, no video and no temporary is left.
+TEST_F(AnimationCliTest, AStalledEncoderIsEndedAtItsDeadline) {
+  const std::string ffmpeg = write("ffmpeg-stalled", "#!/bin/sh\nsleep 300 &\necho $! > " +
+                                                         path("child.pid") + "\nwait\n");
+  fs::permissions(ffmpeg, fs::perms::owner_all);
+  const auto start = std::chrono::steady_clock::now();
+  const Result r = run("render " + kKeyframesScene + " --width 16 --height 12 --spp 1 "
+                       "--frames 0-2 --workers 2 -o " + path("f_#.png") + " --video " +
+                       path("v.mp4") + " --video-timeout 2",
+                       "PRT_FFMPEG=" + ffmpeg + " timeout -k 2 40 ");
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_EQ(r.exitCode, 1) << r.output;
+  EXPECT_LT(seconds, 30) << "the encoder's deadline is 2 s";
+  EXPECT_NE(r.output.find("made no progress for 2 s"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("--video-timeout"), std::string::npos) << r.output;
+  for (const char* f : {"f_0.png", "f_1.png", "f_2.png"}) EXPECT_TRUE(fs::exists(path(f))) << f;
+  EXPECT_FALSE(fs::exists(path("v.mp4")));
+  EXPECT_TRUE(temporariesIn(dir_.string()).empty());
+  const pid_t child = static_cast<pid_t>(std::stol(readWhole(path("child.pid"))));
+  EXPECT_TRUE(processGone(child)) << "ffmpeg's child outlived it";
+  if (!processGone(child)) kill(child, SIGKILL);
+}
+
+// SIGTERM to prt alone while a stalled ffmpeg runs ends the run at once (143), serially and in
+// parallel (where the first signal only asks the run to stop): ffmpeg and its child are
+// ended, no temporary is left, the frames stay.
+TEST_F(AnimationCliTest, ASignalEndsAStalledEncoderAtOnce) {
+  const std::string ffmpeg = write("ffmpeg-stalled", "#!/bin/sh\nsleep 300 &\necho $! > " +
+                                                         path("child.pid") + "\nwait\n");
+  fs::permissions(ffmpeg, fs::perms::owner_all);
+  for (const char* driver : {"--workers 2", "--threads 1"}) {
+    fs::remove(path("child.pid"));
+    const std::string command = "PRT_FFMPEG=" + ffmpeg + " exec " + prt::e2e::prtBinary() +
+                                " render " + kKeyframesScene + " --width 16 --height 12 "
+                                "--spp 1 -q --frames 0-2 " + driver + " -o " + path("f_#.png") +
+                                " --video " + path("v.mp4") + " >/dev/null 2>&1";
+    const pid_t prt = prt::e2e::spawnShellGroup(command);
+    ASSERT_GE(prt, 0);
+    for (int i = 0; i < 400 && !fs::exists(path("child.pid")); ++i) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(25));
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));
+    ASSERT_TRUE(fs::exists(path("child.pid"))) << driver;
+    kill(prt, SIGTERM);
+    int status = 0;
+    bool ended = false;
+    for (int i = 0; i < 200 && !ended; ++i) {  // 10 s: "at once", generously
+      ended = waitpid(prt, &status, WNOHANG) == prt;
+      if (!ended) std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    }
+    if (!ended) {
+      kill(-prt, SIGKILL);
+      waitpid(prt, &status, 0);
+    }
+    EXPECT_TRUE(ended) << driver << ": SIGTERM was not acted on";
+    EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 128 + SIGTERM) << driver << status;
+    const pid_t child = static_cast<pid_t>(std::stol(readWhole(path("child.pid"))));
+    for (int i = 0; i < 40 && !processGone(child); ++i) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    }
+    EXPECT_TRUE(processGone(child)) << driver << ": ffmpeg's child outlived the run";
+    if (!processGone(child)) kill(child, SIGKILL);
+    EXPECT_FALSE(fs::exists(path("v.mp4")));
+    EXPECT_TRUE(temporariesIn(dir_.string()).empty()) << driver;
+    for (const char* f : {"f_0.png", "f_1.png", "f_2.png"}) EXPECT_TRUE(fs::exists(path(f))) << f;
+  }
 }
 
 }  // namespace

@@ -45,7 +45,7 @@ AdaptiveFactoringStrategy::AdaptiveFactoringStrategy(uint64_t minChunk) : minChu
 }
 
 TaskSet AdaptiveFactoringStrategy::initialPool(const StartInfo& info) {
-  return interleavedOrder(info.taskCount, info.frameTasks);
+  return interleavedOrder(info);
 }
 
 uint64_t AdaptiveFactoringStrategy::handOutSize(int worker) {

@@ -44,7 +44,7 @@ AdaptiveReservoirStrategy::AdaptiveReservoirStrategy(double firstPercent, double
 }
 
 TaskSet AdaptiveReservoirStrategy::initialPool(const StartInfo& info) {
-  return interleavedOrder(info.taskCount, info.frameTasks);
+  return interleavedOrder(info);
 }
 
 void AdaptiveReservoirStrategy::prepare(const StartInfo& info) {

@@ -37,7 +37,7 @@ AwfStrategy::AwfStrategy(Variant variant, uint64_t minChunk)
 // Each chunk samples the whole image (interleaved_order.h), so a worker's measured time per
 // task does not depend on which band of the image its chunks happened to fall in.
 TaskSet AwfStrategy::initialPool(const StartInfo& info) {
-  return interleavedOrder(info.taskCount, info.frameTasks);
+  return interleavedOrder(info);
 }
 
 void AwfStrategy::prepare(const StartInfo& /*info*/) {

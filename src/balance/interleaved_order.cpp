@@ -28,17 +28,33 @@ uint64_t interleavedStrata(uint64_t taskCount) {
   return std::min(interleavedCells(taskCount) * kCellStrata, taskCount);
 }
 
+TaskSet interleavedOrder(const std::vector<uint64_t>& frameTaskCounts) {
+  TaskSet order;
+  uint64_t start = 0;
+  for (const uint64_t count : frameTaskCounts) {
+    if (count == 0) continue;
+    const TaskSet frame = interleavedOrder(count);
+    for (TaskRun run : frame.runs()) {
+      run.first += start;
+      order.append(run);
+    }
+    start += count;
+  }
+  return order;
+}
+
+TaskSet interleavedOrder(const StartInfo& info) {
+  if (!info.frameTaskCounts.empty()) return interleavedOrder(info.frameTaskCounts);
+  return interleavedOrder(info.taskCount, info.frameTasks);
+}
+
 TaskSet interleavedOrder(uint64_t taskCount, uint64_t frameTasks) {
   if (frameTasks > 0 && frameTasks < taskCount) {
-    TaskSet order;
+    std::vector<uint64_t> counts;
     for (uint64_t start = 0; start < taskCount; start += frameTasks) {
-      const TaskSet frame = interleavedOrder(std::min(frameTasks, taskCount - start));
-      for (TaskRun run : frame.runs()) {
-        run.first += start;
-        order.append(run);
-      }
+      counts.push_back(std::min(frameTasks, taskCount - start));
     }
-    return order;
+    return interleavedOrder(counts);
   }
   const uint64_t strata = interleavedStrata(taskCount);
   if (strata <= 1) return TaskSet::range(0, taskCount);

@@ -22,6 +22,9 @@
 
 #include <cstdint>
 
+#include <vector>
+
+#include "balance/strategy.h"
 #include "core/task_set.h"
 
 namespace prt {
@@ -43,5 +46,14 @@ uint64_t interleavedStrata(uint64_t taskCount);
 // 1,024 simulated workers an ASU of 0.81 against 0.995: the first hand-outs then see unlike
 // parts of the image.)
 TaskSet interleavedOrder(uint64_t taskCount, uint64_t frameTasks = 0);
+
+// The same for frames of the given sizes, in order (a resumed sequence, whose frames lack
+// what the earlier run finished): each frame's tasks interleaved among themselves, never
+// with another frame's, so that a hand-out spans one frame, or two where one ends.
+TaskSet interleavedOrder(const std::vector<uint64_t>& frameTaskCounts);
+
+// A strategy's order of StartInfo's tasks: by its frames' sizes when they differ, else as
+// interleavedOrder(taskCount, frameTasks).
+TaskSet interleavedOrder(const StartInfo& info);
 
 }  // namespace prt

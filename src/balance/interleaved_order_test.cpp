@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstddef>
 #include <vector>
 
 namespace prt {
@@ -60,6 +61,34 @@ TEST(InterleavedOrder, ShortStretchesSampleTheWholeImage) {
     EXPECT_NEAR(rows, h / 2.0, h / 10.0) << start;
     EXPECT_NEAR(columns, w / 2.0, w / 10.0) << start;
   }
+}
+
+// A resumed sequence's frames lack what the earlier run finished, each its own share: each
+// frame's tasks stay together in the order (a hand-out that mixed frames would make a worker
+// prepare them over and over), frames in order, every task once.
+TEST(InterleavedOrder, FramesOfUnequalSizesStayApart) {
+  const std::vector<uint64_t> frames = {0, 5, 3000, 7, 0, 1, 1200};
+  StartInfo info{4213, {1.0}};
+  info.frameTasks = 4213 / 7;
+  info.frameTaskCounts = frames;
+  const std::vector<uint64_t> tasks = interleavedOrder(info).toVector();
+  ASSERT_EQ(tasks.size(), 4213u);
+  uint64_t start = 0;
+  size_t at = 0;
+  for (const uint64_t count : frames) {
+    std::vector<uint64_t> frame(tasks.begin() + static_cast<std::ptrdiff_t>(at),
+                                tasks.begin() + static_cast<std::ptrdiff_t>(at + count));
+    std::sort(frame.begin(), frame.end());
+    for (uint64_t i = 0; i < count; ++i) ASSERT_EQ(frame[i], start + i) << "frame from " << start;
+    start += count;
+    at += count;
+  }
+  // Equal frames give the order of frameTasks alone.
+  StartInfo equal{3000, {1.0}};
+  equal.frameTasks = 1000;
+  const TaskSet byCount = interleavedOrder(equal);
+  equal.frameTaskCounts = {1000, 1000, 1000};
+  EXPECT_EQ(interleavedOrder(equal), byCount);
 }
 
 }  // namespace

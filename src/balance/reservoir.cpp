@@ -11,7 +11,7 @@ ReservoirStrategy::ReservoirStrategy(double initialPercent, bool interleaved)
 }
 
 TaskSet ReservoirStrategy::initialPool(const StartInfo& info) {
-  return interleaved_ ? interleavedOrder(info.taskCount, info.frameTasks) : TaskSet::range(0, info.taskCount);
+  return interleaved_ ? interleavedOrder(info) : TaskSet::range(0, info.taskCount);
 }
 
 void ReservoirStrategy::prepare(const StartInfo& info) {

@@ -10,7 +10,7 @@ StealingStrategy::StealingStrategy(uint64_t minChunk) : minChunk_(minChunk) {
 }
 
 TaskSet StealingStrategy::initialPool(const StartInfo& info) {
-  return interleavedOrder(info.taskCount, info.frameTasks);
+  return interleavedOrder(info);
 }
 
 void StealingStrategy::prepare(const StartInfo& info) {

@@ -68,6 +68,9 @@ struct StartInfo {
   // a still. Strategies with an order of their own keep frames apart in it, so that frames
   // complete one after another (interleaved_order.h); the paper's static strategies ignore it.
   uint64_t frameTasks = 0;
+  // A resumed sequence's frames, which lack what the earlier run finished: the tasks of each,
+  // in order (frame i's follow frame i - 1's). Empty: every frame has frameTasks.
+  std::vector<uint64_t> frameTaskCounts = {};
 };
 
 class Strategy {

@@ -96,6 +96,26 @@ std::optional<Checkpoint> resumeCheckpoint(const RenderOptions& o, const Scene& 
   return c;
 }
 
+void keepPixelsOfUnwrittenImage(const RenderOptions& o, const CheckpointKey& key,
+                                const TaskSet& done, const Image& image,
+                                const std::vector<int16_t>& owner, const std::exception& failure) {
+  std::string message = failure.what();
+  if (o.checkpointPath.empty()) {
+    throw InputError(message + "\nthe finished pixels are lost (--no-checkpoint); with a "
+                               "checkpoint they would be kept for --resume");
+  }
+  try {
+    writeCheckpoint(o.checkpointPath, key, done, image, owner);
+    message += "\nthe " + std::to_string(done.size()) + " finished pixels are saved in '" +
+               o.checkpointPath + "': once there is room, run\n  " + resumeCommand(o) +
+               "\nto write them without rendering them again";
+    resumeTold.store(true);
+  } catch (const std::exception& also) {
+    message += "\nthe finished pixels could not be saved either: " + std::string(also.what());
+  }
+  throw InputError(message);
+}
+
 std::function<int()> stopSignalsFor(const RenderOptions& o) {
   if (o.checkpointPath.empty()) return nullptr;
   installStopSignals();
@@ -107,8 +127,13 @@ std::function<int()> stopSignalsFor(const RenderOptions& o) {
   return [o, noticed] {
     const int sig = pendingStopSignal();
     if (sig != 0 && !noticed->exchange(true)) {
-      std::fprintf(stderr, "prt: stopping on signal %d: saving the finished pixels in '%s'\n",
-                   sig, o.checkpointPath.c_str());
+      // What is on disk now, too: a launcher's SIGKILL may come before the save.
+      std::error_code ec;
+      const bool saved = std::filesystem::exists(o.checkpointPath, ec);
+      std::fprintf(stderr,
+                   "prt: stopping on signal %d: saving the finished pixels in '%s' (%s)\n", sig,
+                   o.checkpointPath.c_str(),
+                   saved ? "until then it holds those of its last save" : "none is saved yet");
       const std::string text = howToResume(o);
       if (!text.empty()) {
         std::fprintf(stderr, "%s\n", text.c_str() + 1);
@@ -153,7 +178,12 @@ int renderSerialWithCheckpoint(const RenderOptions& o, const Scene& scene,
   };
   if (sequence) {  // what the earlier run completed, written again in case it was cut short
     for (uint64_t i = 0; i < frames.count(); ++i) {
-      if (frameCounts[i] == perFrame) writeFrame(i);
+      if (frameCounts[i] != perFrame) continue;
+      try {
+        writeFrame(i);
+      } catch (const std::exception& e) {
+        keepPixelsOfUnwrittenImage(o, key, done, image, noOwners, e);
+      }
     }
   }
   const uint64_t resumedCount = done.size();
@@ -192,11 +222,20 @@ int renderSerialWithCheckpoint(const RenderOptions& o, const Scene& scene,
     rays += renderer.render(todo, o.threads, colors);
     const double after = steadySeconds();
     size_t i = 0;
+    std::vector<uint64_t> completed;  // frames this piece completes
     todo.forEach([&](uint64_t p) {
       image.set(p, colors[i++]);
-      if (++frameCounts[p / perFrame] == perFrame && sequence) writeFrame(p / perFrame);
+      if (++frameCounts[p / perFrame] == perFrame && sequence) completed.push_back(p / perFrame);
     });
     done.append(todo);
+    for (const uint64_t frame : completed) {
+      try {
+        writeFrame(frame);
+      } catch (const std::exception& e) {
+        view.stopLines();
+        keepPixelsOfUnwrittenImage(o, key, done, image, noOwners, e);
+      }
+    }
     progress.measured(todo, after - before, after);
     progress.finished(todo);
     progress.tick(after, image, nullptr);
@@ -210,7 +249,13 @@ int renderSerialWithCheckpoint(const RenderOptions& o, const Scene& scene,
   const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
   progress.end(steadySeconds(), image, nullptr, true, "written to " + scene.image.output);
   view.finish();
-  if (!sequence) writeImage(image, scene.image.output, o.imageOptions);
+  if (!sequence) {
+    try {
+      writeImage(image, scene.image.output, o.imageOptions);
+    } catch (const std::exception& e) {
+      keepPixelsOfUnwrittenImage(o, key, done, image, noOwners, e);
+    }
+  }
   removeCheckpoint(o.checkpointPath);
   if (sequence) finishSequence(o, scene.image.output, frames);
   if (!o.quiet) {

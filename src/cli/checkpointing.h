@@ -1,6 +1,7 @@
 #pragma once
 // --checkpoint and --resume on the command line, for serial and parallel renders.
 
+#include <exception>
 #include <functional>
 #include <optional>
 
@@ -30,6 +31,15 @@ void tellHowToResume(const RenderOptions& o);
 // another render, or --resume without --checkpoint.
 std::optional<Checkpoint> resumeCheckpoint(const RenderOptions& o, const Scene& scene,
                                            const RenderSettings& settings);
+
+// The image (or a frame of a sequence) could not be written, e.g. its disk is full: keeps
+// every finished pixel in the checkpoint, when the run has one, so that --resume writes it
+// without rendering them again, and throws InputError with the write's error, where the
+// pixels are (or that they could not be saved either) and the command that resumes.
+[[noreturn]] void keepPixelsOfUnwrittenImage(const RenderOptions& o, const CheckpointKey& key,
+                                             const TaskSet& done, const Image& image,
+                                             const std::vector<int16_t>& owner,
+                                             const std::exception& failure);
 
 // With a checkpoint, stop signals are caught so the run can save its work first; returns the
 // poll for them (null without a checkpoint: a signal then ends the run at once).

@@ -11,6 +11,7 @@
 #include "core/exit_status.h"
 #include "core/input_error.h"
 #include "core/memory_budget.h"
+#include "core/subprocess.h"
 #include "core/thread_failures.h"
 #include "image/atomic_file.h"
 #include "farm/build_info.h"
@@ -79,6 +80,10 @@ int runPrt(int argc, char** argv) {
   } catch (const prt::InputError& e) {
     std::fprintf(stderr, "%s\n", e.format().c_str());
     return 2;
+  } catch (const prt::ProgramEnded& e) {
+    // A helper program (ffmpeg) ended early: by a stop signal (exit 128 + it), or stalled.
+    std::fprintf(stderr, "prt: %s%s\n", e.signal() > 0 ? "" : "error: ", e.what());
+    return e.signal() > 0 ? 128 + e.signal() : 1;
   } catch (const std::bad_alloc&) {
     std::fprintf(stderr, "prt: error: %s\n", prt::outOfMemoryMessage().c_str());
     return 1;

@@ -197,10 +197,19 @@ ParallelOptions toParallelOptions(const RenderOptions& o, int workers) {
   return p;
 }
 
-int finishParallelRun(const RenderOptions& o, const Scene& scene, const ParallelRun& run) {
+int finishParallelRun(const RenderOptions& o, const Scene& scene, const RenderSettings& settings,
+                      const ParallelRun& run) {
   const FrameSequence frames = framesOf(o);
   const bool sequence = frames.count() > 1;
-  if (!sequence) writeImage(run.image, scene.image.output, o.imageOptions);  // a sequence's frames are written
+  if (!sequence) {  // a sequence's frames are written
+    try {
+      writeImage(run.image, scene.image.output, o.imageOptions);
+    } catch (const std::exception& e) {
+      keepPixelsOfUnwrittenImage(o, checkpointKey(scene, settings, frames),
+                                 TaskSet::range(0, run.image.pixelCount()), run.image, run.owner,
+                                 e);
+    }
+  }
   writeRenderReportAndPage(o, scene, run);  // --report and --html
   if (!o.tracePath.empty()) {
     writeFileAtomically(o.tracePath,
@@ -292,7 +301,7 @@ int renderParallelLocal(const RenderOptions& o, const Scene& scene, const Render
     ParallelRun run = renderLocal(request);
     for (const std::string& why : *refused) run.report.info.faults.refusedJoiners.push_back(why);
     view.stopLines();
-    const int code = finishParallelRun(o, scene, run);
+    const int code = finishParallelRun(o, scene, s, run);
     view.finish();
     return code;
   } catch (const RunFailed& e) {
@@ -336,6 +345,9 @@ int renderParallelMpi(const RenderOptions& o, const SceneLoader& loadScene) {
                        "; rank 0 is the master); give one per worker");
     }
     RunRequest request = makeRunRequest(planned, scene, settings, session.workerCount());
+    // Without --enable-recovery a worker that dies ends the job within about a second, before
+    // the master can notice: the automatic checkpoint is kept from the start.
+    request.options.checkpointFromStart = !session.recoveryEnabled();
     request.serialSeconds = serialSeconds(o, request.scene, request.settings);
     request.masterSpeedIndexSeconds = serialSpeedIndexSeconds(
         request.options.speedIndexKind, request.scene, request.settings);
@@ -351,7 +363,7 @@ int renderParallelMpi(const RenderOptions& o, const SceneLoader& loadScene) {
       }
     }();
     view.stopLines();
-    const int code = finishParallelRun(planned, request.scene, run);
+    const int code = finishParallelRun(planned, request.scene, request.settings, run);
     view.finish();
     finishMpiMaster(session, run);
     return session.exitCode(code);

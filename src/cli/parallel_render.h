@@ -24,7 +24,9 @@ bool launchedByMpirun();
 ParallelOptions toParallelOptions(const RenderOptions& o, int workers);
 // Writes the image, the report, the trace and the ownership map the options ask for, and
 // prints the report table.
-int finishParallelRun(const RenderOptions& o, const Scene& scene, const ParallelRun& run);
+// A still whose image cannot be written keeps every pixel in the checkpoint (InputError).
+int finishParallelRun(const RenderOptions& o, const Scene& scene, const RenderSettings& settings,
+                      const ParallelRun& run);
 
 int renderParallelLocal(const RenderOptions& o, const Scene& scene, const RenderSettings& s);
 // --- MPI hook: under mpirun only rank 0 (the master) calls `loadScene`; worker ranks never

@@ -312,7 +312,12 @@ int renderSerial(const RenderOptions& o, const Scene& scene, const RenderSetting
   }
   progress.end(steadySeconds(), image, nullptr, true,
                "written to " + scene.image.output, 0);
-  writeImage(image, scene.image.output, o.imageOptions);
+  try {
+    writeImage(image, scene.image.output, o.imageOptions);
+  } catch (const std::exception& e) {
+    view.stopLines();
+    keepPixelsOfUnwrittenImage(o, key, TaskSet::range(0, image.pixelCount()), image, {}, e);
+  }
   if (armed) removeCheckpoint(o.checkpointPath);
   view.finish();
   if (!o.costMapPath.empty()) {
@@ -486,6 +491,12 @@ Action addRenderCommand(CLI::App& app, const std::string& commandLine) {
                   "animation's speed (.mp4, .mkv, .mov: H.264; .webm, .gif, ...: ffmpeg's "
                   "choice)")
       ->check(fileName())
+      ->group(animation);
+  cmd->add_option("--video-timeout", o->videoTimeoutSeconds,
+                  "Seconds ffmpeg may go without progress (taking a frame, its video or its log "
+                  "growing) before prt ends it: the run then fails, the frames stay")
+      ->check(finiteIn(1, 86400))
+      ->capture_default_str()
       ->group(animation);
   cmd->add_option("--cost-map", o->costMapPath,
                   "Serial render: also write each pixel's render time to FILE, the cost map "

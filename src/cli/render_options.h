@@ -16,6 +16,9 @@
 
 namespace prt::cli {
 
+// --video-timeout: seconds ffmpeg may go without progress before it is ended.
+inline constexpr double kDefaultVideoTimeoutSeconds = 60;
+
 struct RenderOptions;
 // The frames --frames or --frame ask for (a still: one frame at time 0). Throws InputError.
 FrameSequence framesOf(const RenderOptions& o);
@@ -42,6 +45,7 @@ struct RenderOptions : RunPlanFlags {
   std::string frame;          // --frame N: one frame of it
   double fps = 24;            // --fps: frame N is at N / fps seconds
   std::string videoPath;      // --video FILE: the sequence's frames made into a video
+  double videoTimeoutSeconds = kDefaultVideoTimeoutSeconds;  // --video-timeout: ffmpeg stalled
 
   // Parallel rendering.
   std::optional<int> workers;              // local driver: worker threads

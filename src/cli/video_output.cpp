@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <array>
+#include <atomic>
 #include <cctype>
 #include <cerrno>
 #include <cstdio>
@@ -13,6 +14,7 @@
 #include <vector>
 
 #include "core/input_error.h"
+#include "core/stop_signals.h"
 #include "core/subprocess.h"
 #include "core/text.h"
 #include "image/atomic_file.h"
@@ -40,7 +42,8 @@ std::string rateOf(const FrameSequence& frames) {
 
 // Writes the whole file to `fd`; false if the reader went away (EPIPE) or the file cannot be
 // read, with `problem` saying which.
-bool copyFileTo(const std::string& path, int fd, std::string& problem) {
+bool copyFileTo(const std::string& path, int fd, std::string& problem,
+                std::atomic<uint64_t>& fed) {
   std::ifstream in(path, std::ios::binary);
   if (!in) {
     problem = "cannot read the frame '" + path + "'";
@@ -60,6 +63,7 @@ bool copyFileTo(const std::string& path, int fd, std::string& problem) {
       }
       at += n;
       left -= static_cast<size_t>(n);
+      fed += static_cast<uint64_t>(n);
     }
   }
   return true;
@@ -117,11 +121,31 @@ void finishSequence(const RenderOptions& o, const std::string& pattern,
   }
   args.push_back(video.path());
   std::string problem;
-  const int status = runProgram(ffmpeg, args, fs::current_path(), log.path(), [&](int fd) {
-    for (uint64_t i = 0; i < frames.count(); ++i) {
-      if (!copyFileTo(framePath(pattern, frames.number(i)), fd, problem)) return;
-    }
-  });
+  std::atomic<uint64_t> fed{0};  // bytes ffmpeg took: its progress, with its files' growth
+  ProgramWatch watch;
+  watch.stallSeconds = o.videoTimeoutSeconds;
+  watch.progress = &fed;
+  watch.progressFiles = {video.path(), log.path()};
+  watch.stopSignal = pendingStopSignal;
+  int status = 0;
+  try {
+    status = runProgram(
+        ffmpeg, args, fs::current_path(), log.path(),
+        [&](int fd) {
+          for (uint64_t i = 0; i < frames.count(); ++i) {
+            if (!copyFileTo(framePath(pattern, frames.number(i)), fd, problem, fed)) return;
+          }
+        },
+        watch);
+  } catch (const ProgramEnded& e) {
+    const std::string said = lastLines(readWholeFile(log.path()), 6);
+    throw ProgramEnded(std::string(e.what()) + "; no video was made, the frames are written" +
+                           (said.empty() ? std::string() : "; ffmpeg said:\n" + said) +
+                           (e.signal() == 0 ? "\n(--video-timeout sets how long ffmpeg may go "
+                                              "without progress)"
+                                            : std::string()),
+                       e.signal());
+  }
   const std::string exit = describeExit(status);
   if (!exit.empty() || !problem.empty()) {
     const std::string said = lastLines(readWholeFile(log.path()), 6);

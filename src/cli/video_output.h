@@ -9,6 +9,11 @@
 // .mov, .m4v and .mkv the video is H.264 in yuv420p (what players expect), the frame padded
 // to even sizes; other containers take ffmpeg's default codec. $PRT_FFMPEG names another
 // ffmpeg. Without --video, a sequence ends by printing the ffmpeg command that would make it.
+//
+// ffmpeg runs in a process group of its own, watched: one that makes no progress (takes no
+// frame, and neither its video nor its log grows) for --video-timeout seconds is ended
+// (SIGKILL to its group) and the run fails; a stop signal ends it at once. Either way its
+// temporary files are removed and the frames stay.
 
 #include <string>
 
@@ -27,7 +32,8 @@ std::string videoHint(const std::string& pattern, const FrameSequence& frames);
 
 // After every frame is written: makes o.videoPath from them and prints where (unless quiet),
 // or, without --video, prints videoHint (unless quiet). Throws std::runtime_error with
-// ffmpeg's last lines if it fails; the frames stay.
+// ffmpeg's last lines if it fails, ProgramEnded (core/subprocess.h) if it stalled or a stop
+// signal came; the frames stay.
 void finishSequence(const RenderOptions& o, const std::string& pattern,
                     const FrameSequence& frames);
 

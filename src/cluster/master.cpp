@@ -175,11 +175,21 @@ void Master::startStrategy(int known, Outbox& out) {
   }
   strategyWorkers_ = known;
   StartInfo info{map_.taskCount(), speeds};
-  // A sequence's frames, as the strategy's tasks hold them (a resumed run's frames are
-  // shorter by what was done; their boundaries are then approximate, which only affects the
-  // order frames complete in).
+  // A sequence's frames, as the strategy's tasks hold them. A resumed run's frames are
+  // shorter by what was done, each by its own amount: the strategy gets each one's tasks, so
+  // that its hand-outs keep to frames (one that spanned frames would make a worker prepare
+  // them over and over).
   const uint64_t frames = scene_.frames.count();
-  if (frames > 1) info.frameTasks = std::max<uint64_t>(1, map_.taskCount() / frames);
+  if (frames > 1) {
+    info.frameTasks = std::max<uint64_t>(1, map_.taskCount() / frames);
+    if (!map_.isIdentity()) {
+      const uint64_t perFrame = ledger_.taskCount() / frames;  // the ledger counts pixels
+      for (uint64_t i = 0; i < frames; ++i) {
+        info.frameTaskCounts.push_back(map_.tasksBefore((i + 1) * perFrame) -
+                                       map_.tasksBefore(i * perFrame));
+      }
+    }
+  }
   apply(strategy_->start(info), out);
   for (int w = 0; w < known; ++w) {
     if (!isLive(w)) apply(strategy_->onWorkerLost(w, TaskSet{}), out);

@@ -48,6 +48,15 @@ uint64_t TaskMap::taskOf(uint64_t pixel) const {
   return it->firstTask + (pixel - it->firstPixel);
 }
 
+uint64_t TaskMap::tasksBefore(uint64_t pixel) const {
+  if (isIdentity()) return std::min(pixel, taskCount_);
+  auto it = std::upper_bound(segments_.begin(), segments_.end(), pixel,
+                             [](uint64_t p, const Segment& s) { return p < s.firstPixel; });
+  if (it == segments_.begin()) return 0;
+  --it;
+  return it->firstTask + std::min(pixel - it->firstPixel, it->count);
+}
+
 TaskSet TaskMap::toPixels(const TaskSet& tasks) const {
   if (isIdentity()) return tasks;
   TaskSet out;

@@ -22,6 +22,8 @@ class TaskMap {
   bool isIdentity() const { return segments_.empty(); }
 
   TaskSet toPixels(const TaskSet& tasks) const;
+  // How many tasks are pixels below `pixel` (the pixels still missing before it).
+  uint64_t tasksBefore(uint64_t pixel) const;
   // Every pixel must be one of the tasks (not done).
   TaskSet toTasks(const TaskSet& pixels) const;
 

@@ -3,19 +3,33 @@
 #include <csignal>
 #include <initializer_list>
 
+#include "core/subprocess.h"
+
 namespace prt {
 namespace {
 
 volatile std::sig_atomic_t stopSignal = 0;
 
+// The handlers installStopSignals replaced (those that remove temporary files and end the
+// process, when main installed them), indexed by signal number.
+constexpr int kSignals = 65;
+struct sigaction replaced[kSignals];
+
 extern "C" void onStopSignal(int sig) {
-  if (stopSignal != 0) {
-    // Asked twice: stop now.
-    std::signal(sig, SIG_DFL);
-    std::raise(sig);
+  if (stopSignal == 0) {
+    stopSignal = sig;
     return;
   }
-  stopSignal = sig;
+  // Asked twice: stop now, ending any program this process runs, through the handler that was
+  // there before (which removes the temporary files being written), else as if none were.
+  killRunningPrograms();
+  const struct sigaction& before = replaced[sig];
+  if ((before.sa_flags & SA_SIGINFO) == 0 && before.sa_handler != SIG_DFL &&
+      before.sa_handler != SIG_IGN && before.sa_handler != onStopSignal) {
+    before.sa_handler(sig);
+  }
+  std::signal(sig, SIG_DFL);
+  std::raise(sig);
 }
 
 }  // namespace
@@ -25,7 +39,11 @@ void installStopSignals() {
   action.sa_handler = onStopSignal;
   sigemptyset(&action.sa_mask);
   action.sa_flags = SA_RESTART;
-  for (int sig : {SIGINT, SIGTERM, SIGHUP}) sigaction(sig, &action, nullptr);
+  for (int sig : {SIGINT, SIGTERM, SIGHUP}) {
+    struct sigaction before {};
+    sigaction(sig, &action, &before);
+    if (sig < kSignals && before.sa_handler != onStopSignal) replaced[sig] = before;
+  }
 }
 
 int pendingStopSignal() {

@@ -2,8 +2,9 @@
 // Stop signals for long runs that can save their work: after installStopSignals(), SIGINT,
 // SIGTERM and SIGHUP only set a flag, which the run polls (pendingStopSignal) to write a
 // checkpoint and end with exit code 128 + the signal. A second such signal ends the process
-// at once, as if no handler were installed. Async-signal-safe; the flag may be read from any
-// thread.
+// at once: it ends the programs the process runs (killRunningPrograms) and goes to the
+// handler installStopSignals replaced (one that removes temporary files and exits), else acts
+// as if no handler were installed. Async-signal-safe; the flag may be read from any thread.
 
 namespace prt {
 

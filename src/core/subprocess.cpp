@@ -7,17 +7,39 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <chrono>
+#include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <exception>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
+#include <thread>
 
 namespace prt {
 namespace {
 
 namespace fs = std::filesystem;
+
+// The process groups of the children running now, for killRunningPrograms (a signal handler:
+// lock-free slots, 0 when free).
+constexpr int kGroupSlots = 32;
+std::atomic<pid_t> runningGroups[kGroupSlots];
+static_assert(std::atomic<pid_t>::is_always_lock_free);
+
+int registerGroup(pid_t group) {
+  for (int i = 0; i < kGroupSlots; ++i) {
+    pid_t expected = 0;
+    if (runningGroups[i].compare_exchange_strong(expected, group)) return i;
+  }
+  return -1;  // a full table: that child is merely not ended on a signal
+}
+
+void unregisterGroup(int slot) {
+  if (slot >= 0) runningGroups[slot].store(0);
+}
 
 bool isExecutable(const fs::path& p) {
   struct stat st {};
@@ -39,9 +61,16 @@ std::string findProgram(const std::string& program) {
   return "";
 }
 
+void killRunningPrograms() {
+  for (std::atomic<pid_t>& group : runningGroups) {
+    const pid_t g = group.load();
+    if (g > 0) ::kill(-g, SIGKILL);
+  }
+}
+
 int runProgram(const std::string& program, const std::vector<std::string>& args,
                const fs::path& directory, const fs::path& logFile,
-               const std::function<void(int)>& feedStdin) {
+               const std::function<void(int)>& feedStdin, const ProgramWatch& watch) {
   std::vector<std::string> argvStrings = {program};
   argvStrings.insert(argvStrings.end(), args.begin(), args.end());
   std::vector<char*> argv;
@@ -71,6 +100,7 @@ int runProgram(const std::string& program, const std::vector<std::string>& args,
     throw std::runtime_error(cannot + "fork: " + std::strerror(error));
   }
   if (pid == 0) {  // child: only async-signal-safe calls from here on
+    ::setpgid(0, 0);  // a group of its own, so that it can be ended whole
     ::close(report[0]);
     int error = 0;
     const int log = ::open(logFile.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
@@ -86,21 +116,29 @@ int runProgram(const std::string& program, const std::vector<std::string>& args,
     (void)ignored;
     ::_exit(127);
   }
+  ::setpgid(pid, pid);  // as the child does: whichever runs first (EACCES once it has exec'd)
+  const int slot = registerGroup(pid);
   ::close(report[1]);
+
+  // The feeding runs on a thread of its own, so that a child that stops reading cannot hold
+  // this one in a write while the child is watched.
   std::exception_ptr feedFailure;
+  std::thread feeder;
+  struct sigaction previousPipe {};
   if (input[0] >= 0) {
     ::close(input[0]);
     // SIGPIPE ignored while feeding: a child that stops reading gives EPIPE, not our death.
-    struct sigaction ignore {}, previous {};
+    struct sigaction ignore {};
     ignore.sa_handler = SIG_IGN;
-    ::sigaction(SIGPIPE, &ignore, &previous);
-    try {
-      feedStdin(input[1]);
-    } catch (...) {
-      feedFailure = std::current_exception();
-    }
-    ::close(input[1]);
-    ::sigaction(SIGPIPE, &previous, nullptr);
+    ::sigaction(SIGPIPE, &ignore, &previousPipe);
+    feeder = std::thread([&, fd = input[1]] {
+      try {
+        feedStdin(fd);
+      } catch (...) {
+        feedFailure = std::current_exception();
+      }
+      ::close(fd);
+    });
   }
   int childError = 0;
   ssize_t got;
@@ -108,13 +146,75 @@ int runProgram(const std::string& program, const std::vector<std::string>& args,
     got = ::read(report[0], &childError, sizeof childError);
   } while (got < 0 && errno == EINTR);
   ::close(report[0]);
+
   int status = 0;
-  while (::waitpid(pid, &status, 0) < 0) {
-    if (errno != EINTR) throw std::runtime_error(cannot + "waitpid: " + std::strerror(errno));
+  bool reaped = false;
+  std::string ended;  // why the child was ended early ("": it was not)
+  int endedBySignal = 0;
+  const bool watched = watch.stallSeconds > 0 || watch.stopSignal;
+  if (watched && got != static_cast<ssize_t>(sizeof childError)) {
+    using Clock = std::chrono::steady_clock;
+    const auto progressNow = [&] {
+      std::vector<uintmax_t> seen;
+      seen.push_back(watch.progress != nullptr ? watch.progress->load() : 0);
+      for (const fs::path& f : watch.progressFiles) {
+        std::error_code error;
+        const uintmax_t size = fs::file_size(f, error);
+        seen.push_back(error ? UINTMAX_MAX : size);
+      }
+      return seen;
+    };
+    std::vector<uintmax_t> last = progressNow();
+    auto lastProgress = Clock::now();
+    while (true) {
+      const pid_t done = ::waitpid(pid, &status, WNOHANG);
+      if (done == pid) {
+        reaped = true;
+        break;
+      }
+      if (done < 0 && errno != EINTR) break;  // the wait below reports it
+      if (const int sig = watch.stopSignal ? watch.stopSignal() : 0) {
+        endedBySignal = sig;
+        ended = "'" + program + "' was ended: the run was stopped by signal " +
+                std::to_string(sig);
+      } else if (std::vector<uintmax_t> now = progressNow(); now != last) {
+        last = std::move(now);
+        lastProgress = Clock::now();
+      } else if (watch.stallSeconds > 0 &&
+                 std::chrono::duration<double>(Clock::now() - lastProgress).count() >
+                     watch.stallSeconds) {
+        char seconds[32];
+        std::snprintf(seconds, sizeof seconds, "%g", watch.stallSeconds);
+        ended = "'" + program + "' made no progress for " + seconds +
+                " s (it took no input and its output and log did not grow), so it was ended";
+      }
+      if (!ended.empty()) {
+        ::kill(-pid, SIGKILL);
+        break;
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    }
+  }
+  int waitError = 0;
+  if (!reaped) {
+    while (::waitpid(pid, &status, 0) < 0) {
+      if (errno == EINTR) continue;
+      waitError = errno;
+      break;
+    }
+  }
+  // Whatever the child started and left behind (and holds its stdin open) goes with it.
+  ::kill(-pid, SIGKILL);
+  unregisterGroup(slot);
+  if (feeder.joinable()) {
+    feeder.join();
+    ::sigaction(SIGPIPE, &previousPipe, nullptr);
   }
   if (got == static_cast<ssize_t>(sizeof childError)) {
     throw std::runtime_error(cannot + std::strerror(childError));
   }
+  if (waitError != 0) throw std::runtime_error(cannot + "waitpid: " + std::strerror(waitError));
+  if (!ended.empty()) throw ProgramEnded(ended, endedBySignal);
   if (feedFailure) std::rethrow_exception(feedFailure);
   return status;
 }

@@ -2,10 +2,16 @@
 // Running helper programs (POV-Ray, gnuplot, ffmpeg) as child processes: fork/exec with an
 // argument vector, no shell, so no quoting; stdin from /dev/null (or a pipe the caller
 // feeds), stdout and stderr to a log file.
-// Thread-safe: nothing is shared between calls. Blocks until the child exits.
+// Each child runs in a process group of its own, which is ended whole (SIGKILL) when this
+// process stops early: by a stop signal (see killRunningPrograms), or when the child is
+// ended for want of progress. Nothing it started outlives it.
+// Thread-safe: calls share only the table of running groups. Blocks until the child exits.
 
 #include <filesystem>
+#include <atomic>
+#include <cstdint>
 #include <functional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -23,9 +29,39 @@ std::string findProgram(const std::string& program);
 // is closed after; a child that stops reading makes the
 // writes fail with EPIPE, never a SIGPIPE to this process. Exceptions from feedStdin pass
 // on once the child has been waited for.
+//
+// With `watch`, the child is watched while it runs (every 50 ms): a stop signal that
+// watch.stopSignal reports, or no progress for watch.stallSeconds, ends its process group
+// (SIGKILL) and throws ProgramEnded once it is reaped and the feeding has returned.
+struct ProgramWatch {
+  // Seconds the child may go without progress; 0: no deadline. Progress is a change of
+  // `progress` or of the size of any of `progressFiles`.
+  double stallSeconds = 0;
+  const std::atomic<uint64_t>* progress = nullptr;  // e.g. bytes the child took from stdin
+  std::vector<std::filesystem::path> progressFiles;  // e.g. its output and its log
+  std::function<int()> stopSignal;                   // a pending stop signal (0: none)
+};
+
+// A watched child ended early: by a stop signal (signal() > 0), or for making no progress
+// within its deadline (signal() == 0).
+class ProgramEnded : public std::runtime_error {
+ public:
+  ProgramEnded(const std::string& message, int signal)
+      : std::runtime_error(message), signal_(signal) {}
+  int signal() const { return signal_; }
+
+ private:
+  int signal_;
+};
+
 int runProgram(const std::string& program, const std::vector<std::string>& args,
                const std::filesystem::path& directory, const std::filesystem::path& logFile,
-               const std::function<void(int)>& feedStdin = {});
+               const std::function<void(int)>& feedStdin = {},
+               const ProgramWatch& watch = {});
+
+// Ends (SIGKILL) the process group of every child runProgram is running. Async-signal-safe:
+// for the handlers that end this process on a signal, so that no child outlives it.
+void killRunningPrograms();
 
 // "" for a clean exit (code 0), else "exited with code N" or "was killed by signal N".
 std::string describeExit(int waitStatus);

@@ -23,6 +23,8 @@ class Engine {
   virtual void load(const SceneMsg& scene) = 0;
   virtual uint64_t taskCount() const = 0;  // once loaded: the tasks of every frame
   virtual double measureSpeedIndex() = 0;  // seconds, as the scene's worker renders
+  // The frames of a sequence it has prepared so far (for the report; 0: not counted).
+  virtual uint64_t framesBuilt() const { return 0; }
   // Renders `batch`: 3 floats per task. `seconds` receives its time, `rays` adds the rays
   // traced. `between` (if set) is called all through an emulated slowdown's wait and, with
   // one thread, between pieces of the batch, so the caller can keep sending heartbeats while

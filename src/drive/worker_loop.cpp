@@ -82,7 +82,8 @@ class WorkerPump {
       }
     }
     net_.send(kMaster, Channel::Summary,
-              encodeSummary(reactor_.summary(engine_.threads(), engine_.slowdown())));
+              encodeSummary(reactor_.summary(engine_.threads(), engine_.slowdown(),
+                                            engine_.framesBuilt())));
     net_.flush(options_.masterTimeoutSeconds);
     return WorkerExit::Stopped;
   }

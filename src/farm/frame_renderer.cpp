@@ -1,6 +1,7 @@
 #include "farm/frame_renderer.h"
 
 #include <chrono>
+#include <utility>
 
 #include "core/check.h"
 #include "scene/animation.h"
@@ -18,18 +19,23 @@ const Renderer& FrameRenderer::frame(uint64_t ordinal) {
   PRT_CHECK(ordinal < frames_.count());
   // A scene that does not move is the same at every frame: built once.
   if (!scene_.animation) ordinal = 0;
-  if (ordinal == current_) return *renderer_;
+  if (ordinal == kept_[0].ordinal) return *kept_[0].renderer;
+  std::swap(kept_[0], kept_[1]);
+  if (ordinal == kept_[0].ordinal) return *kept_[0].renderer;
+  // The one used longest ago goes; the new frame takes the meshes' trees of the last one.
   const auto start = std::chrono::steady_clock::now();
-  renderer_.reset();
-  auto world = std::make_unique<World>(sceneAt(scene_, frames_.seconds(ordinal)), world_.get());
-  world_ = std::move(world);
-  renderer_ = std::make_unique<Renderer>(*world_, settings_);
-  current_ = ordinal;
+  Kept& made = kept_[0];
+  made.renderer.reset();
+  made.world.reset();
+  made.world =
+      std::make_unique<World>(sceneAt(scene_, frames_.seconds(ordinal)), kept_[1].world.get());
+  made.renderer = std::make_unique<Renderer>(*made.world, settings_);
+  made.ordinal = ordinal;
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (++framesBuilt_ == 1) firstBuildSeconds_ = seconds;
   buildSeconds_ += seconds;
-  return *renderer_;
+  return *made.renderer;
 }
 
 uint64_t FrameRenderer::render(const TaskSet& tasks, int threads, std::vector<Color>& colors,

@@ -4,10 +4,13 @@
 // frame is evaluated at that frame's time (scene/animation.h sceneAt) when a task of it is
 // first asked for; what that costs is the top of the tree, the lights' shadow shafts and the
 // camera's view lists: the meshes' trees are taken from the frame before, as meshes move but
-// keep their shape. One frame is kept at a time (tasks come mostly in order). A still is a
-// sequence of one frame, which is built once.
+// keep their shape. The two frames used last are kept (tasks come mostly in order, and a spot
+// check of another worker's pixels is mostly of the frame before the one being rendered: one
+// frame kept would be built again for every check). A still is a sequence of one frame, which
+// is built once.
 // Not thread-safe itself (one per worker); render() renders on many threads.
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -27,11 +30,11 @@ class FrameRenderer {
   uint64_t taskCount() const { return pixelsPerFrame_ * frames_.count(); }
   const FrameSequence& frames() const { return frames_; }
 
-  // The renderer of the ordinal-th frame (built if it is not the one kept).
+  // The renderer of the ordinal-th frame (built if it is not one of those kept).
   const Renderer& frame(uint64_t ordinal);
   const World& world(uint64_t ordinal) {
     frame(ordinal);
-    return *world_;
+    return *kept_[0].world;
   }
 
   // Renders tasks (each below taskCount()) on `threads` threads into colors (one per task, in
@@ -56,9 +59,12 @@ class FrameRenderer {
   RenderSettings settings_;
   FrameSequence frames_;
   uint64_t pixelsPerFrame_;
-  uint64_t current_ = UINT64_MAX;
-  std::unique_ptr<World> world_;
-  std::unique_ptr<Renderer> renderer_;
+  struct Kept {
+    uint64_t ordinal = UINT64_MAX;
+    std::unique_ptr<World> world;
+    std::unique_ptr<Renderer> renderer;
+  };
+  std::array<Kept, 2> kept_;  // the frame used last first
   uint64_t framesBuilt_ = 0;
   double buildSeconds_ = 0;
   double firstBuildSeconds_ = 0;

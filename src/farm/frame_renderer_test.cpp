@@ -43,5 +43,34 @@ TEST(FrameTasks, FramesAreBuiltOnDemandAndStillsOnce) {
   EXPECT_EQ(once.framesBuilt(), 1u);
 }
 
+// Frames met alternately, as a worker meets them when it checks another worker's pixels of
+// the frame before its own: the two used last are kept, each built once, every colour as a
+// frame rendered alone gives it.
+TEST(FrameTasks, TwoFramesMetAlternatelyAreEachBuiltOnce) {
+  const Scene moving = parseScene(
+      "camera { eye 0 0 -5 look_at 0 0 0 }\nimage { width 4 height 3 }\n"
+      "sphere { center 0 0 0 radius 1 key 1 { center 1 0 0 } }\n", "m.scene");
+  FrameSequence frames;
+  frames.first = 0, frames.last = 3, frames.animated = true, frames.fps = 2;
+  FrameRenderer alone(moving, RenderSettings{1, 1}, frames);
+  std::vector<Color> expected;
+  alone.render(TaskSet::range(12, 12), 1, expected);  // frame 1
+  FrameRenderer renderer(moving, RenderSettings{1, 1}, frames);
+  std::vector<Color> colors;
+  std::vector<Color> mixed;
+  for (uint64_t p = 0; p < 12; ++p) {
+    renderer.render(TaskSet::range(12 + p, 1), 1, colors);  // frame 1
+    mixed.push_back(colors[0]);
+    renderer.render(TaskSet::range(24 + p, 1), 1, colors);  // frame 2
+  }
+  EXPECT_EQ(renderer.framesBuilt(), 2u);
+  EXPECT_EQ(mixed, expected);
+  renderer.render(TaskSet::range(0, 1), 1, colors);  // frame 0: the one used longest ago goes
+  renderer.render(TaskSet::range(24, 1), 1, colors);
+  EXPECT_EQ(renderer.framesBuilt(), 3u);
+  renderer.render(TaskSet::range(12, 1), 1, colors);
+  EXPECT_EQ(renderer.framesBuilt(), 4u);
+}
+
 }  // namespace
 }  // namespace prt

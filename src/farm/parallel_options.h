@@ -47,6 +47,12 @@ struct ParallelOptions : RunPlan {
   // The path is the automatic one: nothing is written until the run is expected to take
   // more than kAutomaticCheckpointSeconds, or is stopped with pixels done.
   bool checkpointAutomatic = false;
+  // The automatic checkpoint is written every checkpointEverySeconds from the start, once
+  // pixels are done, not only once the run is expected to be long: for a job that a lost
+  // worker ends without warning (mpirun without --enable-recovery kills every rank about a
+  // second after one dies, SIGKILL a few milliseconds after SIGTERM), where only what is
+  // already on disk survives.
+  bool checkpointFromStart = false;
   bool announceCheckpoint = true;      // say on stderr when the automatic one starts
   double checkpointEverySeconds = kDefaultCheckpointEverySeconds;  // between periodic checkpoints
   std::string acceptWorkersPath;       // open doors for `prt join`: addresses and secret in this file

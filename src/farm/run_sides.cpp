@@ -5,6 +5,7 @@
 #include <condition_variable>
 #include <cstdio>
 #include <exception>
+#include <filesystem>
 #include <mutex>
 #include <thread>
 #include <memory>
@@ -49,9 +50,17 @@ ParallelRun runMasterSide(Transport& net, const RunRequest& request, const std::
   std::vector<FrameInfo> frameInfo(frames.count() > 1 ? frames.count() : 0);
   for (size_t i = 0; i < frameInfo.size(); ++i) frameInfo[i].number = frames.number(i);
   double startTime = net.now();
+  // A frame the master could not write (a full disk): its own failure, never a worker's. The
+  // run stops at once (the loop polls it as `abandoned`) and keeps what is finished.
+  std::string writeFailure;
   const auto frameCompleted = [&](uint64_t ordinal) {
     if (!frameInfo.empty()) frameInfo[ordinal].doneSeconds = net.now() - startTime;
-    if (request.frameDone) request.frameDone(ordinal, assembler.frame(ordinal));
+    if (!request.frameDone || !writeFailure.empty()) return;
+    try {
+      request.frameDone(ordinal, assembler.frame(ordinal));
+    } catch (const std::exception& e) {
+      writeFailure = e.what();
+    }
   };
   // Progress is kept for the board, and for the automatic checkpoint's estimate of the
   // run's length.
@@ -145,9 +154,11 @@ ParallelRun runMasterSide(Transport& net, const RunRequest& request, const std::
   loop.interrupted = request.interrupted;
   // After the last pixel a signal only cuts the goodbye short: the image is written as usual.
   if (request.interrupted) loop.stopPending = [] { return pendingStopSignal() != 0; };
-  loop.abandoned = std::move(abandoned);
+  loop.abandoned = [&writeFailure, abandoned = std::move(abandoned)] {
+    return !writeFailure.empty() || (abandoned && abandoned());
+  };
   // The automatic checkpoint: armed once the run is expected to be long.
-  bool armed = !options.checkpointAutomatic;
+  bool armed = !options.checkpointAutomatic || options.checkpointFromStart;
   const auto arm = [&](double now) {
     if (armed) return;
     const std::optional<double> total = progress->expectedTotal(now);
@@ -173,13 +184,17 @@ ParallelRun runMasterSide(Transport& net, const RunRequest& request, const std::
   }
   const CheckpointKey key = checkpointKey(scene, request.settings, frames);
   bool warned = false;
+  std::string checkpointFailure;   // why the last checkpoint could not be written ("": it was)
   uint64_t checkpoints = 0;        // written during the run
   double checkpointSeconds = 0;    // the master's wall time writing them
   auto saveCheckpoint = [&](const std::string& why) {
     // Unarmed, only a stop saves the pixels done: a short run is cheap to render again.
     const bool periodic =
         why == "periodic" || why == "a worker was lost" || why == "a worker was rejected";
-    if (!armed && (periodic || master.doneCount() == master.resumedCount())) return;
+    const bool nothingNew = master.doneCount() == master.resumedCount();
+    if (!armed && (periodic || nothingNew)) return;
+    // An automatic checkpoint of nothing new would only stand in a later run's way.
+    if (options.checkpointAutomatic && nothingNew) return;
     armed = true;
     const double from = net.now();
     try {
@@ -189,7 +204,9 @@ ParallelRun runMasterSide(Transport& net, const RunRequest& request, const std::
       });
       ++checkpoints;
       checkpointSeconds += net.now() - from;
+      checkpointFailure.clear();
     } catch (const std::exception& e) {
+      checkpointFailure = e.what();
       // The render goes on: a checkpoint that cannot be written loses nothing yet.
       if (!warned) {
         std::fprintf(stderr, "prt: warning: checkpoint (%s) not written: %s\n", why.c_str(),
@@ -218,14 +235,24 @@ ParallelRun runMasterSide(Transport& net, const RunRequest& request, const std::
                   result.failure, 0, &assembler.owner());
   }
   if (!result.failure.empty()) {
-    std::string message = result.failure;
+    std::string message = writeFailure.empty() ? result.failure
+                                               : writeFailure + " (the frames written so far stay)";
     // Workers of --join-at that had not arrived yet: the run does not wait for them.
     const int due = options.joinerCount() - (master.workerCount() - options.workers);
     if (master.failed() && due > 0) {
       message += " (the run does not wait for the " + std::to_string(due) +
                  (due == 1 ? " worker" : " workers") + " still due to join (--join-at))";
     }
-    if (!options.checkpointPath.empty() && armed) {
+    std::error_code ec;
+    const bool onDisk =
+        !options.checkpointPath.empty() && std::filesystem::exists(options.checkpointPath, ec);
+    if (!options.checkpointPath.empty() && !checkpointFailure.empty()) {
+      message += "; the finished pixels could not be saved either (" + checkpointFailure + ")";
+      if (onDisk) {
+        message += ": '" + options.checkpointPath + "' keeps what it held before, and --resume "
+                   "renders the rest";
+      }
+    } else if (onDisk && armed) {
       message += "; " + std::to_string(master.doneCount()) + " of " + std::to_string(pixels) +
                  " pixels (" + percent(master.doneCount(), pixels) + ") are saved in '" +
                  options.checkpointPath +

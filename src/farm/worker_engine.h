@@ -37,6 +37,7 @@ class WorkerEngine final : public Engine {
   // first frame.
   void load(const SceneMsg& scene) override;
   uint64_t taskCount() const override { return frames_ ? frames_->taskCount() : 0; }  // once loaded
+  uint64_t framesBuilt() const override { return frames_ ? frames_->framesBuilt() : 0; }
   // The speed index (Towers of Hanoi time, or the ray-tracing probe's on the loaded scene),
   // slowed down like everything else this worker computes, for the worker as it renders: the
   // probe renders with all its threads; the Hanoi run solves one puzzle on each thread at

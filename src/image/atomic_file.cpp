@@ -11,6 +11,7 @@
 #include <system_error>
 
 #include "core/input_error.h"
+#include "core/subprocess.h"
 
 namespace prt {
 namespace {
@@ -70,6 +71,7 @@ void unregisterTemporary(int slot) {
 }
 
 extern "C" void removeTemporariesAndExit(int signal) {
+  killRunningPrograms();  // a program writing one of them (ffmpeg) must not outlive us
   for (int i = 0; i < kSlots; ++i) {
     if (slotState[i].load() == kReady) ::unlink(slotPath[i]);
   }

@@ -67,8 +67,8 @@ class TemporaryFile {
 // without writing (a resumed render finished before its first checkpoint).
 void removeStaleTemporaries(const std::string& path);
 
-// Installs handlers for SIGTERM, SIGINT and SIGHUP that remove this process's temporary files
-// and _exit(128 + signal). For a program's main(), once, before any thread starts.
+// Installs handlers for SIGTERM, SIGINT and SIGHUP that end the programs this process runs
+// (core/subprocess.h), remove this process's temporary files and _exit(128 + signal). For a program's main(), once, before any thread starts.
 void removeTemporaryFilesOnSignals();
 
 // The same, with the whole contents in hand (text or bytes).

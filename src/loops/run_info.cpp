@@ -21,6 +21,7 @@ void recordMaster(RunInfo& info, MasterRecord r) {
       if (master.isLive(w)) info.faults.missingSummaries.push_back(w);
       info.tasksReceived.push_back(0);
       info.threads.push_back(0);  // unknown
+      info.framesBuilt.push_back(0);
       continue;
     }
     info.slowdowns.push_back(summary->slowdown);
@@ -34,6 +35,7 @@ void recordMaster(RunInfo& info, MasterRecord r) {
     summary->events.clear();
     info.tasksReceived.push_back(summary->tasksReceived);
     info.threads.push_back(summary->threads);
+    info.framesBuilt.push_back(summary->framesBuilt);
     info.rays += summary->rays;
   }
   for (const LostWorker& l : ledger.losses()) {

@@ -127,8 +127,9 @@ void WorkerReactor::onBatchDone(double now, std::vector<float> rgb, double compu
   readMail(now);
 }
 
-WorkerSummary WorkerReactor::summary(int threads, double slowdown) {
-  return WorkerSummary{rays_, worker_.tasksReceived(), threads, slowdown, std::move(own_.events)};
+WorkerSummary WorkerReactor::summary(int threads, double slowdown, uint64_t framesBuilt) {
+  return WorkerSummary{rays_,    worker_.tasksReceived(), threads,
+                       slowdown, std::move(own_.events),  framesBuilt};
 }
 
 }  // namespace prt

@@ -87,7 +87,7 @@ class WorkerReactor {
                                                                options_.masterTimeoutSeconds); }
   Outbox takeOutbox();
   bool takeHeartbeat();  // true once for each HeartbeatMsg due to the master (not logged)
-  WorkerSummary summary(int threads, double slowdown);
+  WorkerSummary summary(int threads, double slowdown, uint64_t framesBuilt = 0);
 
   const Worker& worker() const { return worker_; }
   EventLog& log() { return *log_; }

@@ -27,6 +27,8 @@ struct WorkerSummary {
   int threads = 1;             // threads the worker rendered with
   double slowdown = 1;         // the --slowdown it was emulating (its own, for a joiner)
   std::vector<Event> events;   // seconds since the worker received the scene
+  uint64_t framesBuilt = 0;    // frames of the sequence it prepared (a frame met again after
+                               // another is prepared again)
   bool operator==(const WorkerSummary&) const = default;
 };
 

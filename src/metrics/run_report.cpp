@@ -95,6 +95,7 @@ RunReport makeReport(const RunInfo& info, const std::vector<Event>& events,
     wr.slowdown = w < info.slowdowns.size() ? info.slowdowns[w] : 1.0;
     wr.tasks = w < info.tasksReceived.size() ? info.tasksReceived[w] : 0;
     wr.threads = w < info.threads.size() ? info.threads[w] : 1;
+    wr.framesBuilt = w < info.framesBuilt.size() ? info.framesBuilt[w] : 0;
     if (w < info.hosts.size()) wr.host = info.hosts[w];
     if (w < info.kernels.size()) wr.kernels = info.kernels[w];
     if (w < info.joinedAt.size()) wr.joinedAtSeconds = info.joinedAt[w];
@@ -266,6 +267,7 @@ std::string RunReport::toJson() const {
                   {"slowdown", w.slowdown},
                   {"tasks", w.tasks},
                   {"threads", w.threads},
+                  {"frames_built", w.framesBuilt},
                   {"host", w.host},
                   {"kernels", w.kernels},
                   {"pixels", w.pixels},

@@ -43,6 +43,7 @@ struct WorkerReport {
   double slowdown = 1;
   uint64_t tasks = 0;   // task messages received (assignments and transfers)
   int threads = 1;      // rendering threads (0: unknown, its summary never came)
+  uint64_t framesBuilt = 0;  // frames of the sequence it prepared (0: unknown)
   std::string host;     // the machine it ran on, as it named itself ("": not known)
   std::string kernels;  // the build of the trace kernels it ran ("x86-64-v4"; "": not known)
   uint64_t pixels = 0;  // pixels rendered (from its events; for a worker whose events never
@@ -128,6 +129,7 @@ struct RunInfo {
   std::vector<double> slowdowns;        // per worker, 1 = full speed
   std::vector<uint64_t> tasksReceived;  // per worker
   std::vector<int> threads;             // per worker: rendering threads (0: unknown)
+  std::vector<uint64_t> framesBuilt;    // per worker: frames it prepared (0: unknown)
   std::vector<std::string> hosts;       // per worker: its machine's name ("": not known)
   std::vector<std::string> kernels;     // per worker: its trace kernels' build ("": not known)
   std::vector<std::optional<double>> joinedAt;  // per worker: when it joined; none: at start

@@ -11,6 +11,10 @@
 #                   checkpoint it leaves gives the serial image with --resume
 #   kill            SIGKILL of a worker rank's process mid-render, under --enable-recovery:
 #                   the serial image, exit code 0
+#   kill-plain      SIGKILL of a worker rank's process mid-render under plain mpirun (no
+#                   --enable-recovery, which ends the whole job a second later) with the
+#                   automatic checkpoint: it is on disk before the kill, and --resume gives
+#                   the serial image from it
 #   stop            SIGSTOP of a worker rank's process mid-render, under --enable-recovery:
 #                   the serial image; mpirun ends within the grace period
 #   resume          SIGKILL of the whole job (mpirun and every rank) mid-render; --resume
@@ -317,6 +321,31 @@ PY
 import json
 r = json.load(open("report.json"))
 assert [l["worker"] for l in r["lost_workers"]] == [1], r["lost_workers"]
+PY
+    ;;
+  kill-plain)
+    # shellcheck disable=SC2086
+    "$prt" render "$scene" $slow -q -o serial.pfm
+    # shellcheck disable=SC2086
+    mpi_prt_background -np "$np" "$prt" render "$scene" $slow --strategy reservoir \
+      --slowdown "$(slowdowns)" --batch 8 -o mpi.pfm --checkpoint-every 0.2
+    victim=$(rank_pid 2) || { kill_job; fail "worker rank 2 never started"; }
+    wait_for_progress mpi.pfm.ckpt 200 ||
+      { kill_job; fail "no automatic checkpoint on disk within 20 s (or the run ended: $(ls))"; }
+    kill -9 "$victim"
+    wait_job 60
+    [ "$status" -ne 0 ] && [ "$status" -ne 124 ] || fail "mpirun exited with $status"
+    [ ! -f mpi.pfm ] || fail "the run wrote its image before the kill; make it slower"
+    [ -f mpi.pfm.ckpt ] || fail "no checkpoint after the job was ended"
+    if grep -q "none is saved yet" err.txt; then fail "a checkpoint on disk said to be none"; fi
+    geometry=$slow mpi_prt --strategy reservoir --batch 16 -o mpi.pfm --resume --report r.json
+    [ "$status" -eq 0 ] || fail "the resumed run exited with $status"
+    cmp serial.pfm mpi.pfm || fail "the resumed image differs from the serial one"
+    [ ! -f mpi.pfm.ckpt ] || fail "the checkpoint was not removed after the image was written"
+    python3 - <<'PY'
+import json
+r = json.load(open("r.json"))
+assert r["resumed_pixels"] > 0, r["resumed_pixels"]
 PY
     ;;
   startup-kill)
