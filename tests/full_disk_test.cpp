@@ -5,6 +5,7 @@
 // still: every pixel; a sequence: its pixels, so the frames not written are written by
 // --resume), and no half-written file is left.
 
+#include <cstdio>
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -105,9 +106,10 @@ TEST_F(FullDiskTest, AParallelSequenceStopsAtTheFrameThatDoesNotFitAndResumes) {
     const Result resumed = run(command + " --resume -q --report " + path("r.json"));
     ASSERT_EQ(resumed.exitCode, 0) << strategy << "\n" << resumed.output;
     for (int f = 0; f <= 29; ++f) {
-      const std::string n = (f < 10 ? "0" : "") + std::to_string(f);
+      char n[8];
+      std::snprintf(n, sizeof n, "%02d", f);
       const bool same =
-          fullDiskRead(path("ref_" + n + ".ppm")) == fullDiskRead(onDisk("f_" + n + ".ppm"));
+          fullDiskRead(path(std::string("ref_") + n + ".ppm")) == fullDiskRead(onDisk(std::string("f_") + n + ".ppm"));
       EXPECT_TRUE(same) << strategy << " frame " << f;
     }
     EXPECT_EQ(fullDiskRead(path("r.json")).find("\"resumed_pixels\": 0,"), std::string::npos);
