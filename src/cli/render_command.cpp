@@ -23,6 +23,7 @@
 #include "farm/checkpoint.h"
 #include "farm/frame_renderer.h"
 #include "farm/parallel_options.h"
+#include "metrics/run_report.h"
 #include "scene/animation.h"
 #include "scene/environment_file.h"
 #include "scene/number_text.h"
@@ -182,6 +183,11 @@ void reportTile(RunProgress& progress, const TileDone& tile, uint64_t firstTask)
   progress.tick(now, tile.image, nullptr, false, firstTask);
 }
 
+// Said even with --quiet: such samples are a fault of the scene or the renderer.
+void warnOfNonFiniteSamples(uint64_t count) {
+  if (count > 0) std::fprintf(stderr, "prt: warning: %s\n", nonFiniteSamplesLine(count).c_str());
+}
+
 // The frames of a sequence one after another, each on every thread and written once done.
 int renderSerialSequence(const RenderOptions& o, const Scene& scene,
                          const RenderSettings& settings, const FrameSequence& frames) {
@@ -221,6 +227,7 @@ int renderSerialSequence(const RenderOptions& o, const Scene& scene,
                 renderer.buildSeconds(), renderer.firstBuildSeconds(),
                 static_cast<unsigned long long>(total.rays));
   }
+  warnOfNonFiniteSamples(renderer.nonFiniteSamples());
   return 0;
 }
 
@@ -331,6 +338,7 @@ int renderSerial(const RenderOptions& o, const Scene& scene, const RenderSetting
                 static_cast<unsigned long long>(stats.rays),
                 stats.seconds > 0 ? static_cast<double>(stats.rays) / stats.seconds / 1e6 : 0.0);
   }
+  warnOfNonFiniteSamples(renderer.nonFiniteSamples());
   return 0;
 }
 

@@ -25,6 +25,9 @@ class Engine {
   virtual double measureSpeedIndex() = 0;  // seconds, as the scene's worker renders
   // The frames of a sequence it has prepared so far (for the report; 0: not counted).
   virtual uint64_t framesBuilt() const { return 0; }
+  // Samples of its tasks whose value was not finite, left out of their pixels (for the
+  // report; 0: none, or not counted).
+  virtual uint64_t nonFiniteSamples() const { return 0; }
   // Renders `batch`: 3 floats per task. `seconds` receives its time, `rays` adds the rays
   // traced. `between` (if set) is called all through an emulated slowdown's wait and, with
   // one thread, between pieces of the batch, so the caller can keep sending heartbeats while

@@ -83,7 +83,8 @@ class WorkerPump {
     }
     net_.send(kMaster, Channel::Summary,
               encodeSummary(reactor_.summary(engine_.threads(), engine_.slowdown(),
-                                            engine_.framesBuilt())));
+                                            engine_.framesBuilt(),
+                                            engine_.nonFiniteSamples())));
     net_.flush(options_.masterTimeoutSeconds);
     return WorkerExit::Stopped;
   }

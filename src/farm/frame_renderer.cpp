@@ -25,6 +25,7 @@ const Renderer& FrameRenderer::frame(uint64_t ordinal) {
   // The one used longest ago goes; the new frame takes the meshes' trees of the last one.
   const auto start = std::chrono::steady_clock::now();
   Kept& made = kept_[0];
+  if (made.renderer) nonFiniteOfDropped_ += made.renderer->nonFiniteSamples();
   made.renderer.reset();
   made.world.reset();
   made.world =
@@ -50,6 +51,14 @@ uint64_t FrameRenderer::render(const TaskSet& tasks, int threads, std::vector<Co
     colors.insert(colors.end(), piece.begin(), piece.end());
   });
   return rays;
+}
+
+uint64_t FrameRenderer::nonFiniteSamples() const {
+  uint64_t count = nonFiniteOfDropped_;
+  for (const Kept& k : kept_) {
+    if (k.renderer) count += k.renderer->nonFiniteSamples();
+  }
+  return count;
 }
 
 std::vector<float> asFloats(const std::vector<Color>& colors) {

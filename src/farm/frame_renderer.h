@@ -48,6 +48,8 @@ class FrameRenderer {
   uint64_t framesBuilt() const { return framesBuilt_; }
   double buildSeconds() const { return buildSeconds_; }
   double firstBuildSeconds() const { return firstBuildSeconds_; }
+  // The samples found not finite so far (Renderer::nonFiniteSamples), over every frame.
+  uint64_t nonFiniteSamples() const;
 
   // The tasks of `tasks` that fall in each frame, as pixel indices of that frame, in order:
   // calls f(ordinal, pixels) for each frame met (a frame may be met again after another).
@@ -68,6 +70,7 @@ class FrameRenderer {
   uint64_t framesBuilt_ = 0;
   double buildSeconds_ = 0;
   double firstBuildSeconds_ = 0;
+  uint64_t nonFiniteOfDropped_ = 0;  // of the frames' renderers no longer kept
 };
 
 // Colours as the protocol carries them: 3 floats each, in order.

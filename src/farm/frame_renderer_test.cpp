@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <utility>
 #include <vector>
 
@@ -70,6 +71,30 @@ TEST(FrameTasks, TwoFramesMetAlternatelyAreEachBuiltOnce) {
   EXPECT_EQ(renderer.framesBuilt(), 3u);
   renderer.render(TaskSet::range(12, 1), 1, colors);
   EXPECT_EQ(renderer.framesBuilt(), 4u);
+}
+
+// Samples found not finite are counted over every frame, those no longer kept included.
+TEST(FrameTasks, NonFiniteSamplesAreCountedOverEveryFrame) {
+  Scene moving = parseScene(
+      "camera { eye 0 0 -5 look_at 0 0 0 }\nimage { width 4 height 3 }\n"
+      "sphere { center 0 0 0 radius 1 key 1 { center 1 0 0 } }\n", "m.scene");
+  moving.environment.integrator = Integrator::path;
+  moving.objects[0].material.emission = Color(0, std::nan(""), 0);  // no reader lets it in
+  FrameSequence frames;
+  frames.first = 0, frames.last = 3, frames.animated = true, frames.fps = 2;
+  std::vector<Color> colors;
+  uint64_t framesAlone = 0;
+  for (uint64_t f = 0; f < 4; ++f) {
+    FrameRenderer alone(moving, RenderSettings{2, 1}, frames);
+    alone.render(TaskSet::range(12 * f, 12), 1, colors);
+    EXPECT_GT(alone.nonFiniteSamples(), 0u) << f;
+    framesAlone += alone.nonFiniteSamples();
+  }
+  FrameRenderer renderer(moving, RenderSettings{2, 1}, frames);
+  renderer.render(TaskSet::range(0, 48), 2, colors);
+  EXPECT_EQ(renderer.framesBuilt(), 4u);  // frames 0 and 1 are no longer kept
+  EXPECT_EQ(renderer.nonFiniteSamples(), framesAlone);
+  for (const Color& c : colors) EXPECT_TRUE(isFinite(c));
 }
 
 }  // namespace

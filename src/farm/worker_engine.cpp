@@ -42,7 +42,8 @@ double WorkerEngine::measureSpeedIndex() {
     // As many stretches as the Hanoi run of the default disc count.
     constexpr int kProbePieces = 1 << (kSpeedIndexDiscs - kStretchDiscs);
     std::vector<Color> colors;
-    return probeSeconds(renderer, kProbePieces, [&](const TaskSet& piece) {
+    const uint64_t before = frames_->nonFiniteSamples();
+    const double seconds = probeSeconds(renderer, kProbePieces, [&](const TaskSet& piece) {
       return throttle_
           .measureParallel(
               [&] {
@@ -53,6 +54,8 @@ double WorkerEngine::measureSpeedIndex() {
               threads_)
           .emulatedSeconds;
     });
+    nonFiniteOfProbe_ += frames_->nonFiniteSamples() - before;
+    return seconds;
   }
   const int discs = std::min(speedIndexDiscs_, kStretchDiscs);
   const uint64_t stretches = 1ull << std::max(0, speedIndexDiscs_ - kStretchDiscs);

@@ -38,6 +38,11 @@ class WorkerEngine final : public Engine {
   void load(const SceneMsg& scene) override;
   uint64_t taskCount() const override { return frames_ ? frames_->taskCount() : 0; }  // once loaded
   uint64_t framesBuilt() const override { return frames_ ? frames_->framesBuilt() : 0; }
+  // Of the tasks it rendered (the speed probe's pixels are not counted: they are rendered
+  // again as tasks).
+  uint64_t nonFiniteSamples() const override {
+    return frames_ ? frames_->nonFiniteSamples() - nonFiniteOfProbe_ : 0;
+  }
   // The speed index (Towers of Hanoi time, or the ray-tracing probe's on the loaded scene),
   // slowed down like everything else this worker computes, for the worker as it renders: the
   // probe renders with all its threads; the Hanoi run solves one puzzle on each thread at
@@ -61,6 +66,7 @@ class WorkerEngine final : public Engine {
   int speedIndexDiscs_;
   int threads_;
   std::unique_ptr<FrameRenderer> frames_;
+  uint64_t nonFiniteOfProbe_ = 0;
 };
 
 }  // namespace prt

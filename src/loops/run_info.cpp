@@ -22,6 +22,7 @@ void recordMaster(RunInfo& info, MasterRecord r) {
       info.tasksReceived.push_back(0);
       info.threads.push_back(0);  // unknown
       info.framesBuilt.push_back(0);
+      info.nonFiniteSamples.push_back(0);
       continue;
     }
     info.slowdowns.push_back(summary->slowdown);
@@ -36,6 +37,7 @@ void recordMaster(RunInfo& info, MasterRecord r) {
     info.tasksReceived.push_back(summary->tasksReceived);
     info.threads.push_back(summary->threads);
     info.framesBuilt.push_back(summary->framesBuilt);
+    info.nonFiniteSamples.push_back(summary->nonFiniteSamples);
     info.rays += summary->rays;
   }
   for (const LostWorker& l : ledger.losses()) {

@@ -127,9 +127,10 @@ void WorkerReactor::onBatchDone(double now, std::vector<float> rgb, double compu
   readMail(now);
 }
 
-WorkerSummary WorkerReactor::summary(int threads, double slowdown, uint64_t framesBuilt) {
-  return WorkerSummary{rays_,    worker_.tasksReceived(), threads,
-                       slowdown, std::move(own_.events),  framesBuilt};
+WorkerSummary WorkerReactor::summary(int threads, double slowdown, uint64_t framesBuilt,
+                                     uint64_t nonFiniteSamples) {
+  return WorkerSummary{rays_,    worker_.tasksReceived(), threads,          slowdown,
+                       std::move(own_.events), framesBuilt, nonFiniteSamples};
 }
 
 }  // namespace prt

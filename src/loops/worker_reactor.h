@@ -87,7 +87,8 @@ class WorkerReactor {
                                                                options_.masterTimeoutSeconds); }
   Outbox takeOutbox();
   bool takeHeartbeat();  // true once for each HeartbeatMsg due to the master (not logged)
-  WorkerSummary summary(int threads, double slowdown, uint64_t framesBuilt = 0);
+  WorkerSummary summary(int threads, double slowdown, uint64_t framesBuilt = 0,
+                        uint64_t nonFiniteSamples = 0);
 
   const Worker& worker() const { return worker_; }
   EventLog& log() { return *log_; }

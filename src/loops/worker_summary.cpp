@@ -9,7 +9,8 @@
 namespace prt {
 namespace {
 
-constexpr uint8_t kSummaryVersion = 4;  // 2: the thread count; 3: the slowdown; 4: frames built
+// 2: the thread count; 3: the slowdown; 4: frames built; 5: samples not finite
+constexpr uint8_t kSummaryVersion = 5;
 
 constexpr size_t kMinEventBytes = 1 + 4 + 8 + 8 + 8 + 8 + 4 + 2;
 
@@ -23,6 +24,7 @@ Bytes encodeSummary(const WorkerSummary& summary) {
   w.pod(static_cast<int32_t>(summary.threads));
   w.pod(summary.slowdown);
   w.pod(summary.framesBuilt);
+  w.pod(summary.nonFiniteSamples);
   w.pod(static_cast<uint64_t>(summary.events.size()));
   for (const Event& e : summary.events) {
     w.pod(static_cast<uint8_t>(e.kind));
@@ -49,6 +51,7 @@ WorkerSummary decodeSummary(const uint8_t* data, size_t size) {
   s.slowdown = r.pod<double>();
   if (!(s.slowdown >= 1)) throw std::runtime_error("malformed worker summary: slowdown");
   s.framesBuilt = r.pod<uint64_t>();
+  s.nonFiniteSamples = r.pod<uint64_t>();
   const auto count = r.pod<uint64_t>();
   if (count > size / kMinEventBytes) throw std::runtime_error("malformed worker summary: count");
   s.events.reserve(count);

@@ -29,6 +29,7 @@ struct WorkerSummary {
   std::vector<Event> events;   // seconds since the worker received the scene
   uint64_t framesBuilt = 0;    // frames of the sequence it prepared (a frame met again after
                                // another is prepared again)
+  uint64_t nonFiniteSamples = 0;  // samples of its tasks not finite, left out of their pixels
   bool operator==(const WorkerSummary&) const = default;
 };
 

@@ -16,6 +16,8 @@ WorkerSummary sample() {
   WorkerSummary s;
   s.rays = 123456789012ull;
   s.tasksReceived = 7;
+  s.framesBuilt = 3;
+  s.nonFiniteSamples = 5;
   s.events.push_back({EventKind::MessageReceived, 2, 0.0, 0.0, 0, 4096, kMaster, "Scene"});
   s.events.push_back({EventKind::Setup, 2, 0.001, 0.25, 0, 0, 0, ""});
   s.events.push_back({EventKind::MessageSent, 2, 0.25, 0.25, 0, 9, kMaster, "SpeedIndex"});
@@ -29,6 +31,8 @@ TEST(WorkerSummaryTest, RoundTripsEveryField) {
   const WorkerSummary back = decodeSummary(encodeSummary(s));
   EXPECT_EQ(back.rays, s.rays);
   EXPECT_EQ(back.tasksReceived, s.tasksReceived);
+  EXPECT_EQ(back.framesBuilt, s.framesBuilt);
+  EXPECT_EQ(back.nonFiniteSamples, s.nonFiniteSamples);
   ASSERT_EQ(back.events.size(), s.events.size());
   for (size_t i = 0; i < s.events.size(); ++i) {
     EXPECT_TRUE(sameEvent(back.events[i], s.events[i])) << i;

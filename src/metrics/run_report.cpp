@@ -96,6 +96,7 @@ RunReport makeReport(const RunInfo& info, const std::vector<Event>& events,
     wr.tasks = w < info.tasksReceived.size() ? info.tasksReceived[w] : 0;
     wr.threads = w < info.threads.size() ? info.threads[w] : 1;
     wr.framesBuilt = w < info.framesBuilt.size() ? info.framesBuilt[w] : 0;
+    wr.nonFiniteSamples = w < info.nonFiniteSamples.size() ? info.nonFiniteSamples[w] : 0;
     if (w < info.hosts.size()) wr.host = info.hosts[w];
     if (w < info.kernels.size()) wr.kernels = info.kernels[w];
     if (w < info.joinedAt.size()) wr.joinedAtSeconds = info.joinedAt[w];
@@ -232,6 +233,17 @@ RunReport makeReport(const RunInfo& info, const std::vector<Event>& events,
   return r;
 }
 
+std::string nonFiniteSamplesLine(uint64_t count) {
+  return std::to_string(count) + (count == 1 ? " sample was" : " samples were") +
+         " not finite (NaN or infinite) and left out of their pixels' means";
+}
+
+uint64_t RunReport::nonFiniteSamples() const {
+  uint64_t count = 0;
+  for (const WorkerReport& w : workers) count += w.nonFiniteSamples;
+  return count;
+}
+
 std::string RunReport::toJson() const {
   using nlohmann::json;
   json j;
@@ -260,6 +272,7 @@ std::string RunReport::toJson() const {
   j["scene_bytes"] = sceneBytes;
   j["scene_transfer_s"] = sceneTransferSeconds;
   j["rays"] = info.rays;
+  j["non_finite_samples"] = nonFiniteSamples();
   json ws = json::array();
   for (const WorkerReport& w : workers) {
     ws.push_back({{"worker", w.worker},
@@ -268,6 +281,7 @@ std::string RunReport::toJson() const {
                   {"tasks", w.tasks},
                   {"threads", w.threads},
                   {"frames_built", w.framesBuilt},
+                  {"non_finite_samples", w.nonFiniteSamples},
                   {"host", w.host},
                   {"kernels", w.kernels},
                   {"pixels", w.pixels},
@@ -509,6 +523,9 @@ std::string RunReport::toTable() const {
   }
   for (int w : info.faults.missingSummaries) {
     out += "worker " + std::to_string(w) + " sent no summary: its times are missing\n";
+  }
+  if (const uint64_t bad = nonFiniteSamples(); bad > 0) {
+    out += nonFiniteSamplesLine(bad) + "\n";
   }
   bool anyJoined = false;
   for (const WorkerReport& w : workers) {

@@ -44,6 +44,7 @@ struct WorkerReport {
   uint64_t tasks = 0;   // task messages received (assignments and transfers)
   int threads = 1;      // rendering threads (0: unknown, its summary never came)
   uint64_t framesBuilt = 0;  // frames of the sequence it prepared (0: unknown)
+  uint64_t nonFiniteSamples = 0;  // samples it found not finite and left out of their pixels
   std::string host;     // the machine it ran on, as it named itself ("": not known)
   std::string kernels;  // the build of the trace kernels it ran ("x86-64-v4"; "": not known)
   uint64_t pixels = 0;  // pixels rendered (from its events; for a worker whose events never
@@ -130,6 +131,7 @@ struct RunInfo {
   std::vector<uint64_t> tasksReceived;  // per worker
   std::vector<int> threads;             // per worker: rendering threads (0: unknown)
   std::vector<uint64_t> framesBuilt;    // per worker: frames it prepared (0: unknown)
+  std::vector<uint64_t> nonFiniteSamples;  // per worker: samples not finite, left out
   std::vector<std::string> hosts;       // per worker: its machine's name ("": not known)
   std::vector<std::string> kernels;     // per worker: its trace kernels' build ("": not known)
   std::vector<std::optional<double>> joinedAt;  // per worker: when it joined; none: at start
@@ -144,6 +146,10 @@ struct RunInfo {
   double fps = 0;
   std::optional<MasterLoad> master;  // none: not measured
 };
+
+// What the end of a run says of samples found not finite: "N samples were not finite (NaN or
+// infinite) and were left out of their pixels' means".
+std::string nonFiniteSamplesLine(uint64_t count);
 
 struct RunReport {
   RunInfo info;
@@ -166,6 +172,8 @@ struct RunReport {
 
   // The master's busy time over the elapsed time (none: not measured).
   std::optional<double> masterBusyShare() const;
+  // Samples the workers found not finite, over every worker (non_finite_samples).
+  uint64_t nonFiniteSamples() const;
 
   std::string toJson() const;       // keys: elapsed_s, speedup, efficiency, masu, asu,
                                     // scene_bytes, scene_transfer_s, ...

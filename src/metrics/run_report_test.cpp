@@ -79,6 +79,24 @@ TEST(RunReportTest, EfficiencySpeedupAndAsuFromEvents) {
   EXPECT_EQ(r.workers[0].messagesSent, 1u);
 }
 
+// Samples a worker found not finite: per worker and in all, in the JSON and the table.
+TEST(RunReportTest, NonFiniteSamplesAreReportedPerWorkerAndInAll) {
+  std::vector<Event> events;
+  events.push_back({EventKind::Compute, 0, 0.0, 3.0, 100, 0, 0, ""});
+  events.push_back({EventKind::Compute, 1, 0.0, 2.0, 30, 0, 0, ""});
+  RunInfo info = twoWorkers();
+  const auto clean = nlohmann::json::parse(makeReport(info, events, 4.0).toJson());
+  EXPECT_EQ(clean["non_finite_samples"], 0);
+  EXPECT_EQ(makeReport(info, events, 4.0).toTable().find("not finite"), std::string::npos);
+  info.nonFiniteSamples = {3, 4};
+  const RunReport r = makeReport(info, events, 4.0);
+  const auto j = nlohmann::json::parse(r.toJson());
+  EXPECT_EQ(j["non_finite_samples"], 7);
+  EXPECT_EQ(j["workers"][0]["non_finite_samples"], 3);
+  EXPECT_EQ(j["workers"][1]["non_finite_samples"], 4);
+  EXPECT_NE(r.toTable().find("7 samples were not finite"), std::string::npos) << r.toTable();
+}
+
 TEST(RunReportTest, AJoinerCountsFromItsArrivalAndTheIdealFollowsTheSchedule) {
   RunInfo info = twoWorkers();
   info.joinedAt = {std::nullopt, 2.0};  // worker 1 joins at 2 s

@@ -136,6 +136,22 @@ TEST(PathTracerTest, PixelsDoNotDependOnThreadsOrOrder) {
   EXPECT_GT(meanOfImage(one), 0.05);
 }
 
+// A sample whose radiance is not finite (here an emitter of NaN, which no reader lets through)
+// never reaches a pixel: it is counted and left out of the pixel's mean.
+TEST(PathTracerTest, NonFiniteSamplesAreCountedAndLeftOut) {
+  Scene scene = furnace(pbr(Color(0.5), 0, 0.5, 0));
+  Material bad = pbr(Color(0.5), 0, 0.5, 0);
+  bad.emission = Color(std::nan(""), 0, 0);
+  scene.objects.push_back({SphereShape{{0.9, 0.9, -0.5}, 0.3}, bad});
+  const World world(scene);
+  const Renderer renderer(world, RenderSettings{4, 1});
+  const Image image = renderImage(renderer, 2);
+  EXPECT_GT(renderer.nonFiniteSamples(), 0u);
+  for (uint64_t p = 0; p < image.pixelCount(); ++p) ASSERT_TRUE(isFinite(image.at(p))) << p;
+  // The pixels around the emitter keep the light of their finite samples: not black.
+  EXPECT_GT(meanOfImage(image), 0.2);
+}
+
 // The rule for scenes written for the paper's renderer: a mirror becomes a metal, a glass a
 // glass, a matte surface a rough dielectric.
 TEST(PathTracerTest, HallMaterialsMapToTheModelByTheWrittenRule) {

@@ -34,6 +34,7 @@ Color Renderer::renderPixel(uint64_t pixelIndex, uint64_t& rays) const {
   const auto candidates = view_.candidates(x, y);
   const SampleGrid grid(n);
   Color sum;
+  int finite = n;  // samples averaged: those whose value is finite
   for (int s = 0; s < n; ++s) {
     Rng rng = Rng::forSample(pixelIndex, static_cast<uint32_t>(s));
     double dx = 0.5, dy = 0.5;  // one sample looks through the pixel centre
@@ -48,6 +49,7 @@ Color Renderer::renderPixel(uint64_t pixelIndex, uint64_t& rays) const {
       if (isFinite(c)) {
         sum += c;
       } else {
+        --finite;
         nonFinite_.fetch_add(1, std::memory_order_relaxed);
       }
       continue;
@@ -55,7 +57,7 @@ Color Renderer::renderPixel(uint64_t pixelIndex, uint64_t& rays) const {
     sum += candidates ? shader_.traceAmong(*candidates, ray, rng.child(1), rays)
                       : shader_.trace(ray, 0, rng.child(1), rays);
   }
-  return meanOf(sum, n);
+  return finite > 0 ? meanOf(sum, finite) : Color();
 }
 
 namespace {

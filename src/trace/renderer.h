@@ -30,7 +30,8 @@ class Renderer {
   const RenderSettings& settings() const { return settings_; }
 
   // The pixel at index y * width + x; adds the rays it traced to `rays`. A sample whose value
-  // is not finite (which only the path tracer could give) counts as black, and is counted.
+  // is not finite (which only the path tracer could give) is left out of the pixel's mean,
+  // and counted; a pixel with no finite sample is black.
   Color renderPixel(uint64_t pixelIndex, uint64_t& rays) const;
   // The samples renderPixel found not finite so far, over every thread.
   uint64_t nonFiniteSamples() const { return nonFinite_.load(std::memory_order_relaxed); }

@@ -199,9 +199,11 @@ PY
 import json, sys
 workers = int(sys.argv[1])
 r = json.load(open("report.json"))
-for key in ("elapsed_s", "efficiency", "masu", "messages", "bytes", "rays", "workers"):
+for key in ("elapsed_s", "efficiency", "masu", "messages", "bytes", "rays", "workers",
+            "non_finite_samples"):
     assert key in r, "missing " + key
 assert r["driver"] == "mpi", r["driver"]
+assert r["non_finite_samples"] == 0, r["non_finite_samples"]
 assert r["elapsed_s"] > 0 and 0 < r["efficiency"] <= 1.0 + 1e-9, r
 assert r["masu"] > 0 and r["messages"] > 0 and r["rays"] > 0, r
 assert len(r["workers"]) == workers, len(r["workers"])
