@@ -37,7 +37,6 @@ find tests/models scenes/models -maxdepth 1 \( -iname '*.obj' -o -iname '*.ply' 
 # or as the third argument says (the model files and packs of the seeds are larger).
 run() {
   local target=$1 dir=$2 max_len=${3:-65536}
-  echo "fuzz: $target for ${seconds} s"
   (cd build-fuzz/fuzz && ASAN_OPTIONS=detect_leaks=1 ./"$target" -max_total_time="$seconds" \
      -timeout=10 -rss_limit_mb=2048 -malloc_limit_mb=1024 -max_len="$max_len" -print_final_stats=1 \
      "../../$dir" 2>"$target.log") || {
@@ -47,13 +46,34 @@ run() {
   }
   grep -E "stat::number_of_executed_units|stat::new_units_added" "build-fuzz/fuzz/$target.log" | sed "s/^/fuzz: $target /"
 }
+# The targets run side by side, one per core (a fuzzer is one process on one core): the same
+# time for each, the wall time divided by the cores.
+targets=(
+  "prt_fuzz_scene_parser $corpus/scene"
+  "prt_fuzz_message_decoder $corpus/message"
+  "prt_fuzz_protocol $corpus/protocol"
+  "prt_fuzz_model_reader $corpus/model 131072"
+  "prt_fuzz_asset_pack $corpus/pack 1048576"
+  "prt_fuzz_mesh_text $corpus/mesh 262144"
+  "prt_fuzz_checkpoint $corpus/checkpoint"
+  "prt_fuzz_tcp_frames $corpus/tcp"
+)
+jobs=$(nproc)
 status=0
-run prt_fuzz_scene_parser "$corpus/scene" || status=1
-run prt_fuzz_message_decoder "$corpus/message" || status=1
-run prt_fuzz_protocol "$corpus/protocol" || status=1
-run prt_fuzz_model_reader "$corpus/model" 131072 || status=1
-run prt_fuzz_asset_pack "$corpus/pack" 1048576 || status=1
-run prt_fuzz_mesh_text "$corpus/mesh" 262144 || status=1
-run prt_fuzz_checkpoint "$corpus/checkpoint" || status=1
-run prt_fuzz_tcp_frames "$corpus/tcp" || status=1
+running=0
+for t in "${targets[@]}"; do
+  if ((running >= jobs)); then
+    wait -n || status=1
+    running=$((running - 1))
+  fi
+  # shellcheck disable=SC2086
+  echo "fuzz: ${t%% *} for ${seconds} s"
+  # shellcheck disable=SC2086
+  run $t &
+  running=$((running + 1))
+done
+while ((running > 0)); do
+  wait -n || status=1
+  running=$((running - 1))
+done
 exit $status

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Installs dependencies, builds with warnings as errors, runs every test (unit, end-to-end,
-# MPI) through CTest, then fuzzes the scene parser and the message decoder for
-# PRT_FUZZ_SECONDS each (default 45; 0 skips; about 3 minutes in all with the fuzz build).
+# MPI) through CTest, then fuzzes PRT's readers and decoders (scripts/fuzz.sh) for
+# PRT_FUZZ_SECONDS each (default 30; 0 skips), one fuzzer per core.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
@@ -10,5 +10,5 @@ bash scripts/install-deps.sh
 # earlier demo configured in the same folder.
 bash scripts/build.sh ci
 ctest --preset ci "$@"
-fuzz_seconds=${PRT_FUZZ_SECONDS:-45}
+fuzz_seconds=${PRT_FUZZ_SECONDS:-30}
 if ((fuzz_seconds > 0)); then bash scripts/fuzz.sh "$fuzz_seconds"; fi

@@ -1,6 +1,7 @@
 #include "core/stop_signals.h"
 
 #include <csignal>
+#include <ctime>
 #include <initializer_list>
 
 #include "core/subprocess.h"
@@ -9,6 +10,14 @@ namespace prt {
 namespace {
 
 volatile std::sig_atomic_t stopSignal = 0;
+struct timespec firstSignalAt {};  // CLOCK_MONOTONIC, when stopSignal was set
+
+double secondsSince(const struct timespec& t) {
+  struct timespec now {};
+  clock_gettime(CLOCK_MONOTONIC, &now);  // async-signal-safe
+  return static_cast<double>(now.tv_sec - t.tv_sec) +
+         static_cast<double>(now.tv_nsec - t.tv_nsec) * 1e-9;
+}
 
 // The handlers installStopSignals replaced (those that remove temporary files and end the
 // process, when main installed them), indexed by signal number.
@@ -17,9 +26,12 @@ struct sigaction replaced[kSignals];
 
 extern "C" void onStopSignal(int sig) {
   if (stopSignal == 0) {
+    clock_gettime(CLOCK_MONOTONIC, &firstSignalAt);
     stopSignal = sig;
     return;
   }
+  // The same request delivered twice (see the header): not yet a second one.
+  if (secondsSince(firstSignalAt) < kRepeatedSignalSeconds) return;
   // Asked twice: stop now, ending any program this process runs, through the handler that was
   // there before (which removes the temporary files being written), else as if none were.
   killRunningPrograms();

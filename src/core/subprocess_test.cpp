@@ -41,6 +41,14 @@ class SubprocessTest : public ::testing::Test {
     return thrown;
   }
 
+  // A watch that ends the child once its log has not grown for `stallSeconds`.
+  ProgramWatch watchingTheLog(double stallSeconds) const {
+    ProgramWatch watch;
+    watch.stallSeconds = stallSeconds;
+    watch.progressFiles = {dir_ / "log"};
+    return watch;
+  }
+
   // The pid the script wrote to `name`, once it is gone (a zombie counts as gone).
   bool childGone(const std::string& name) {
     std::ifstream in(dir_ / name);
@@ -65,9 +73,7 @@ class SubprocessTest : public ::testing::Test {
 
 // A child that makes no progress is ended at its deadline, with what it started.
 TEST_F(SubprocessTest, AStalledChildIsEndedWithItsGroupAtTheDeadline) {
-  ProgramWatch watch;
-  watch.stallSeconds = 0.5;
-  watch.progressFiles = {dir_ / "log"};
+  const ProgramWatch watch = watchingTheLog(0.5);
   double seconds = 0;
   int signal = -1;
   const std::string thrown =
@@ -80,9 +86,7 @@ TEST_F(SubprocessTest, AStalledChildIsEndedWithItsGroupAtTheDeadline) {
 
 // Progress (its log growing) keeps a child going past the deadline until it ends itself.
 TEST_F(SubprocessTest, AChildThatMakesProgressIsNotEnded) {
-  ProgramWatch watch;
-  watch.stallSeconds = 0.6;
-  watch.progressFiles = {dir_ / "log"};
+  const ProgramWatch watch = watchingTheLog(0.6);
   double seconds = 0;
   int signal = -1;
   const std::string thrown = runWatched(

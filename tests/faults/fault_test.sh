@@ -446,22 +446,27 @@ PY
         wait "$joiner" || true
         ;;
       hostile-hoard)
-        # The joiner stays 60 s; the render must not wait for it (the limit is 40 s).
-        for strategy in adaptive stealing "adaptive --endgame on"; do
+        # A hoarding joiner (the hostile joiner's mode $2, staying $3 s) against a strategy:
+        # the render ends with the serial image, the joiner lost by its task lease alone.
+        hoard() {
           # shellcheck disable=SC2086
-          start_render --strategy $strategy --worker-timeout 2
-          "$hostile" port hoard $pixels 60 >joiner-out.txt 2>&1 &
+          start_render --strategy $1 --worker-timeout 2
+          "$hostile" port "$2" $pixels "$3" >joiner-out.txt 2>&1 &
           joiner=$!
-          end_render "$strategy, a joiner that keeps its tasks"
+          end_render "$1, $4"
           kill "$joiner" 2>/dev/null || true
           wait "$joiner" 2>/dev/null || true
-          python3 - <<'PY' || fail "$strategy: the hoarder is not lost by its task lease"
+          python3 - <<'PY' || fail "$1: $4 is not lost by its task lease"
 import json
 r = json.load(open("r.json"))
 lost = r["lost_workers"]
 assert [l["worker"] for l in lost] == [1] and "task lease" in lost[0]["reason"], lost
 PY
-          echo "ok: $strategy"
+          echo "ok: $1, $4"
+        }
+        # The joiner stays 60 s; the render must not wait for it (the limit is 40 s).
+        for strategy in adaptive stealing "adaptive --endgame on"; do
+          hoard "$strategy" hoard 60 "a joiner that keeps its tasks"
         done
         # One that claims to be a million times slower buys no lease without end: at most ten
         # batches of ten times the longest batch returned (batches of 4 pixels: 18-21 s on a
@@ -469,21 +474,7 @@ PY
         # past 60 s under two busy loops). The joiner stays longer than the render may last,
         # so that only its task lease can end its part.
         limit=150 batch=4
-        for strategy in stealing; do
-          start_render --strategy "$strategy" --worker-timeout 2
-          "$hostile" port hoard-slow $pixels 200 >joiner-out.txt 2>&1 &
-          joiner=$!
-          end_render "$strategy, a joiner that keeps its tasks and claims to be slow"
-          kill "$joiner" 2>/dev/null || true
-          wait "$joiner" 2>/dev/null || true
-          python3 - <<'PY' || fail "$strategy: the slow-claiming hoarder is not lost by its task lease"
-import json
-r = json.load(open("r.json"))
-lost = r["lost_workers"]
-assert [l["worker"] for l in lost] == [1] and "task lease" in lost[0]["reason"], lost
-PY
-          echo "ok: $strategy, claiming to be slow"
-        done
+        hoard stealing hoard-slow 200 "a joiner that keeps its tasks and claims to be slow"
         ;;
     esac
     ;;
