@@ -8,6 +8,8 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
 
@@ -15,6 +17,8 @@
 #include "scene/model_file.h"
 #include "scene/scene_file.h"
 #include "trace/tangents.h"
+
+#include <unistd.h>
 
 namespace prt {
 namespace {
@@ -140,6 +144,51 @@ TEST(GltfMaps, MapsAndTangentsTravelInTheAssetPack) {
     ADD_FAILURE() << "a pack of version 4 was read";
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find("not assets of this version"), std::string::npos) << e.what();
+  }
+}
+
+// A file's TANGENT as it comes: xyz made unit (zero where not finite: no normal map there), w
+// taken by its sign; one of another count than POSITION's is refused, naming it.
+TEST(GltfMaps, TheFilesTangentsAreCleanedOrRefused) {
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("prt-maps-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  struct Cleanup {
+    std::filesystem::path dir;
+    ~Cleanup() { std::filesystem::remove_all(dir); }
+  } cleanup{dir};
+  std::string bin;
+  auto put = [&bin](float f) { bin.append(reinterpret_cast<const char*>(&f), sizeof f); };
+  for (const float f : {0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 0.f, 1.f, 0.f}) put(f);   // positions
+  for (const float f : {0.f, 1.f, 1.f, 1.f, 0.f, 0.f}) put(f);                  // uvs
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  for (const float f : {nan, 0.f, 0.f, 1.f, 2.f, 0.f, 0.f, 0.5f, 1.f, 0.f, 0.f, -7.f}) put(f);
+  std::ofstream(dir / "t.bin", std::ios::binary) << bin;
+  auto file = [&](int tangents) {
+    std::ofstream(dir / "t.gltf")
+        << R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],"nodes":[{"mesh":0}],)"
+           R"("meshes":[{"primitives":[{"attributes":{"POSITION":0,"TEXCOORD_0":1,"TANGENT":2},"material":0}]}],)"
+           R"("materials":[{"normalTexture":{"index":0}}],)"
+           R"("buffers":[{"byteLength":108,"uri":"t.bin"}],)"
+           R"("bufferViews":[{"buffer":0,"byteLength":36},{"buffer":0,"byteOffset":36,"byteLength":24},)"
+           R"({"buffer":0,"byteOffset":60,"byteLength":48}],)"
+           R"("accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3"},)"
+           R"({"bufferView":1,"componentType":5126,"count":3,"type":"VEC2"},)"
+           R"({"bufferView":2,"componentType":5126,"count":)" << tangents << R"(,"type":"VEC4"}]})";
+    return (dir / "t.gltf").string();
+  };
+  const ImportedModel model = readModelFile(file(3));
+  ASSERT_EQ(model.objects.size(), 1u);
+  const auto& t = meshOfObject(model.objects[0]).tangents;
+  ASSERT_EQ(t.size(), 3u);
+  EXPECT_EQ(t[0], (std::array<double, 4>{0, 0, 0, 1}));
+  EXPECT_EQ(t[1], (std::array<double, 4>{1, 0, 0, 1}));
+  EXPECT_EQ(t[2], (std::array<double, 4>{1, 0, 0, -1}));
+  try {
+    readModelFile(file(2));
+    ADD_FAILURE() << "a TANGENT of two for three positions was read";
+  } catch (const ModelFileError& e) {
+    EXPECT_NE(std::string(e.what()).find("TANGENT"), std::string::npos) << e.what();
   }
 }
 
