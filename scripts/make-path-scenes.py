@@ -11,7 +11,8 @@
                                        duplicates, so each mesh is written once) with a road,
                                        a sidewalk, a lawn, a metal ball and a glass ball on a
                                        pedestal, under a sun, seen through a camera
-  scenes/models/maps.glb               a floor and a ball with a tangent-space normal map and
+  scenes/models/maps.glb               a floor (its map repeated by KHR_texture_transform) and
+                                       a ball with a tangent-space normal map, and
                                        a ball banded by a metallic-roughness texture (both
                                        64 x 64 data textures made here), under a sun and a
                                        point light; its images are checked texel by texel
@@ -280,13 +281,19 @@ def data_image(name, fn, folder):
 
 
 def maps_material(name, base, roughness, metallic=0.0, normal_image=None, strength=1.0,
-                  mr_image=None):
+                  mr_image=None, normal_scale=None):
     m = mm.material(name, base=base, metallic=metallic, roughness=roughness)
     nt = m.node_tree
     bsdf = nt.nodes["Principled BSDF"]
     if normal_image is not None:
         tex = nt.nodes.new("ShaderNodeTexImage")
         tex.image = normal_image
+        if normal_scale is not None:  # written as KHR_texture_transform's scale
+            coords = nt.nodes.new("ShaderNodeTexCoord")
+            mapping = nt.nodes.new("ShaderNodeMapping")
+            mapping.inputs["Scale"].default_value = (normal_scale, normal_scale, 1.0)
+            nt.links.new(coords.outputs["UV"], mapping.inputs["Vector"])
+            nt.links.new(mapping.outputs["Vector"], tex.inputs["Vector"])
         nm = nt.nodes.new("ShaderNodeNormalMap")
         nm.space = 'TANGENT'
         nm.inputs["Strength"].default_value = strength
@@ -361,13 +368,14 @@ def make_maps(out, tmp, tests):
     reset(160, 120)
     bumps = data_image("bumps", bumps_normal, tmp)
     bands = data_image("bands", bands_texel, tmp)
-    floor = maps_material("BumpyFloor", (0.6, 0.55, 0.5), 0.5, normal_image=bumps)
+    floor = maps_material("BumpyFloor", (0.6, 0.55, 0.5), 0.5, normal_image=bumps,
+                          normal_scale=2.0)
     ball = maps_material("BumpyBall", (0.3, 0.45, 0.7), 0.35, normal_image=bumps, strength=0.8)
     banded = maps_material("BandedBall", (0.9, 0.75, 0.45), 1.0, metallic=1.0, mr_image=bands)
 
     b = mm.Builder()
     b.face([b.vert(c) for c in ((-2, -1.5, 0), (2, -1.5, 0), (2, 2.5, 0), (-2, 2.5, 0))],
-           [(0, 0), (3, 0), (3, 3), (0, 3)], 0)
+           [(0, 0), (1.5, 0), (1.5, 1.5), (0, 1.5)], 0)  # times 2 by the texture transform
     mm.obj("Floor", b.mesh("Floor"), mats=[floor])
     bs = mm.Builder()
     bs.sphere(0.6, (0, 0, 0), 32, 16)

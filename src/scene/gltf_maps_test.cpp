@@ -91,6 +91,10 @@ TEST(GltfMaps, BlendersMetallicRoughnessTextureAndNormalMapsAreRead) {
     return m.pbr.normalTexture.texture >= 0 && m.pbr.normalScale == 1;
   });
   ASSERT_NE(floor, nullptr);
+  // Its map is repeated by KHR_texture_transform (Blender's Mapping node, scale 2).
+  const UvTransform& uv = floor->material.pbr.normalTexture.uv;
+  EXPECT_EQ(uv.m[0], 2.0);
+  EXPECT_EQ(uv.m[4], 2.0);
   for (const auto& t : meshOfObject(*floor).tangents) {
     EXPECT_NEAR(t[0], 1, 1e-6);
     EXPECT_EQ(t[3], 1.0);
