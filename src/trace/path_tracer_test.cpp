@@ -205,7 +205,12 @@ Texture dataTexture(uint8_t r, uint8_t g, uint8_t b) {
   image->width = 2;
   image->height = 2;
   image->channels = 3;
-  for (int i = 0; i < 4; ++i) image->texels.insert(image->texels.end(), {r, g, b});
+  image->texels.resize(12);
+  for (size_t i = 0; i < 12; i += 3) {
+    image->texels[i] = r;
+    image->texels[i + 1] = g;
+    image->texels[i + 2] = b;
+  }
   Texture t;
   t.image = image;
   t.linear = true;
