@@ -27,7 +27,8 @@ cp scenes/*.scene tests/malformed/*.scene "$corpus/scene/"
 build-fuzz/fuzz/prt_fuzz_message_seeds "$corpus/message" scenes/fig08-basic-features.scene
 cp tests/models/*.glb tests/models/*.gltf scenes/models/*.glb scenes/models/*.gltf \
    scenes/models/street/*.glb "$corpus/model/"
-build-fuzz/fuzz/prt_fuzz_pack_seeds "$corpus/pack" scenes/chess.scene scenes/street.scene
+build-fuzz/fuzz/prt_fuzz_pack_seeds "$corpus/pack" scenes/chess.scene scenes/street.scene \
+   scenes/models/maps.glb
 build-fuzz/fuzz/prt_fuzz_checkpoint_seeds "$corpus/checkpoint"
 find tests/models scenes/models -maxdepth 1 \( -iname '*.obj' -o -iname '*.ply' \) \
   -exec cp {} "$corpus/mesh/" \;

@@ -11,10 +11,19 @@
                                        duplicates, so each mesh is written once) with a road,
                                        a sidewalk, a lawn, a metal ball and a glass ball on a
                                        pedestal, under a sun, seen through a camera
+  scenes/models/maps.glb               a floor (its map repeated by KHR_texture_transform) and
+                                       a ball with a tangent-space normal map, and
+                                       a ball banded by a metallic-roughness texture (both
+                                       64 x 64 data textures made here), under a sun and a
+                                       point light; its images are checked texel by texel
+  tests/models/blender-tangents.glb    the normal-mapped ball alone, with the tangents Blender
+                                       computes (MikkTSpace) written as TANGENT
 
 Command (Blender 3.4.1 from Debian 12, whose glTF add-on also needs python3-numpy):
 
-    blender -b --factory-startup --python scripts/make-path-scenes.py -- /work/main
+    blender -b --factory-startup --python scripts/make-path-scenes.py -- /work/main [maps ...]
+
+(the names after the root pick some of cornell, street and maps; default all).
 
 Deterministic: every position, colour and strength is written here, the props are the
 committed files (scripts/make-models.py makes them), and the helpers are make-models.py's.
@@ -23,9 +32,12 @@ Units are Blender's: lights in watts (W/m^2 for the sun), exported in glTF's pho
 (colour x strength), exported as emissiveFactor x KHR_materials_emissive_strength.
 """
 import importlib.util
+import json
 import math
 import os
+import struct
 import sys
+import tempfile
 
 import numpy as np
 
@@ -225,16 +237,191 @@ def make_street(out, props):
     return {"street.glb": drawn}
 
 
+# ----------------------------------------------------------------------------- maps
+
+# Two textures of data (non-colour, no sRGB curve), 64 x 64, made here texel by texel:
+#   bumps  a tangent-space normal map of round bumps on a 4 x 4 grid (+X right, +Y up the
+#          image, as glTF and Blender read it);
+#   bands  a metallic-roughness texture as glTF lays it out: G roughness, B metallic (R, the
+#          occlusion's channel, 1): four vertical bands, metal or not, rough or smooth.
+MAPS_SIZE = 64
+
+
+def bumps_normal(x, y):
+    """The bump map's normal at texel (x, y) (y = 0 the bottom row), encoded in [0, 1]."""
+    cell = MAPS_SIZE / 4
+    u = ((x + 0.5) % cell) / cell * 2 - 1  # -1..1 across a cell
+    v = ((y + 0.5) % cell) / cell * 2 - 1
+    r2 = u * u + v * v
+    dx = dy = 0.0
+    if r2 < 0.8:  # a bump of height 0.35 (1 - r^2 / 0.8)^2 in cell units
+        k = 0.35 * 2 * (1 - r2 / 0.8) * (-2 / 0.8) * (2 / cell) * cell / 2
+        dx, dy = k * u, k * v
+    n = (-dx, -dy, 1.0)
+    s = math.sqrt(sum(c * c for c in n))
+    return tuple(0.5 + 0.5 * c / s for c in n)
+
+
+def bands_texel(x, y):
+    band = x * 4 // MAPS_SIZE  # 0..3
+    metallic = 1.0 if band % 2 == 1 else 0.0
+    roughness = (0.25, 0.25, 0.7, 0.7)[band]
+    return (1.0, roughness, metallic)
+
+
+def data_image(name, fn, folder):
+    """A non-colour image saved as PNG and loaded back (file-backed, as the exporter wants)."""
+    img = mm.make_image(name, MAPS_SIZE, MAPS_SIZE, fn)
+    path = os.path.join(folder, name + ".png")
+    mm.save_image(img, path)
+    bpy.data.images.remove(img)
+    loaded = bpy.data.images.load(path)
+    loaded.colorspace_settings.name = 'Non-Color'
+    return loaded
+
+
+def maps_material(name, base, roughness, metallic=0.0, normal_image=None, strength=1.0,
+                  mr_image=None, normal_scale=None):
+    m = mm.material(name, base=base, metallic=metallic, roughness=roughness)
+    nt = m.node_tree
+    bsdf = nt.nodes["Principled BSDF"]
+    if normal_image is not None:
+        tex = nt.nodes.new("ShaderNodeTexImage")
+        tex.image = normal_image
+        if normal_scale is not None:  # written as KHR_texture_transform's scale
+            coords = nt.nodes.new("ShaderNodeTexCoord")
+            mapping = nt.nodes.new("ShaderNodeMapping")
+            mapping.inputs["Scale"].default_value = (normal_scale, normal_scale, 1.0)
+            nt.links.new(coords.outputs["UV"], mapping.inputs["Vector"])
+            nt.links.new(mapping.outputs["Vector"], tex.inputs["Vector"])
+        nm = nt.nodes.new("ShaderNodeNormalMap")
+        nm.space = 'TANGENT'
+        nm.inputs["Strength"].default_value = strength
+        nt.links.new(tex.outputs["Color"], nm.inputs["Color"])
+        nt.links.new(nm.outputs["Normal"], bsdf.inputs["Normal"])
+    if mr_image is not None:
+        # What the exporter writes as metallicRoughnessTexture: one image, green to Roughness
+        # and blue to Metallic through a Separate Color node (3.4's exporter knows no other:
+        # through the older Separate RGB it writes an image of white).
+        tex = nt.nodes.new("ShaderNodeTexImage")
+        tex.image = mr_image
+        sep = nt.nodes.new("ShaderNodeSeparateColor")
+        sep.mode = 'RGB'
+        nt.links.new(tex.outputs["Color"], sep.inputs["Color"])
+        nt.links.new(sep.outputs["Green"], bsdf.inputs["Roughness"])
+        nt.links.new(sep.outputs["Blue"], bsdf.inputs["Metallic"])
+    return m
+
+
+def check_maps_images(path):
+    """The exported file's images hold the texels made here (Blender's exporter has been seen
+    to write an empty metallic-roughness image): fails loudly otherwise."""
+    with open(path, "rb") as f:
+        data = f.read()
+    clen = struct.unpack_from("<I", data, 12)[0]
+    doc = json.loads(data[20:20 + clen].decode("utf-8"))
+    blob = data[20 + clen + 8:]
+    folder = os.path.dirname(path)
+    wanted = {"bumps": bumps_normal, "bands": bands_texel}
+    found = set()
+    for k, image in enumerate(doc.get("images", [])):
+        view = doc["bufferViews"][image["bufferView"]]
+        data = blob[view.get("byteOffset", 0):view.get("byteOffset", 0) + view["byteLength"]]
+        tmp = os.path.join(folder, ".maps-check-%d.png" % k)
+        with open(tmp, "wb") as f:
+            f.write(data)
+        img = bpy.data.images.load(tmp)
+        img.colorspace_settings.name = 'Non-Color'
+        w, h = img.size
+        px = list(img.pixels)
+        ch = img.channels
+        name = image.get("name", "")
+        fn = wanted.get(name)
+        if fn is None or (w, h) != (MAPS_SIZE, MAPS_SIZE):
+            raise SystemExit("maps: unexpected image %r %dx%d" % (name, w, h))
+        worst = 0.0
+        for y in range(h):
+            for x in range(w):
+                want = fn(x, y)
+                got = px[(y * w + x) * ch:(y * w + x) * ch + 3]
+                # bands: R is the occlusion's, which the exporter fills as it likes
+                pairs = list(zip(want, got))[1 if name == "bands" else 0:]
+                worst = max(worst, max(abs(a - b) for a, b in pairs))
+                if worst > 1.0 / 255:
+                    raise SystemExit("maps: image %s at (%d, %d): %s, made %s"
+                                     % (name, x, y, got, want))
+        bpy.data.images.remove(img)
+        os.remove(tmp)
+        if worst > 1.0 / 255:
+            raise SystemExit("maps: image %s differs from what was made by %.4f" % (name, worst))
+        print("MAPS image %s %dx%d matches (worst %.4f)" % (name, w, h, worst))
+        found.add(name)
+    if found != set(wanted):
+        raise SystemExit("maps: images %s exported, %s expected" % (sorted(found), sorted(wanted)))
+
+
+def make_maps(out, tmp, tests):
+    """scenes/models/maps.glb: a normal-mapped floor and ball, a ball banded by a
+    metallic-roughness texture, under a sun and a point light; and tests/models/
+    blender-tangents.glb, the normal-mapped ball alone with the tangents Blender computes
+    (MikkTSpace) written as its TANGENT attribute."""
+    reset(160, 120)
+    bumps = data_image("bumps", bumps_normal, tmp)
+    bands = data_image("bands", bands_texel, tmp)
+    floor = maps_material("BumpyFloor", (0.6, 0.55, 0.5), 0.5, normal_image=bumps,
+                          normal_scale=2.0)
+    ball = maps_material("BumpyBall", (0.3, 0.45, 0.7), 0.35, normal_image=bumps, strength=0.8)
+    banded = maps_material("BandedBall", (0.9, 0.75, 0.45), 1.0, metallic=1.0, mr_image=bands)
+
+    b = mm.Builder()
+    b.face([b.vert(c) for c in ((-2, -1.5, 0), (2, -1.5, 0), (2, 2.5, 0), (-2, 2.5, 0))],
+           [(0, 0), (1.5, 0), (1.5, 1.5), (0, 1.5)], 0)  # times 2 by the texture transform
+    mm.obj("Floor", b.mesh("Floor"), mats=[floor])
+    bs = mm.Builder()
+    bs.sphere(0.6, (0, 0, 0), 32, 16)
+    bumpy = mm.obj("BumpyBall", bs.mesh("BumpyBall", smooth=True), loc=(0.75, 0.4, 0.6),
+                   mats=[ball])
+    bs = mm.Builder()
+    bs.sphere(0.6, (0, 0, 0), 32, 16)
+    mm.obj("BandedBall", bs.mesh("BandedBall", smooth=True), loc=(-0.75, 0.4, 0.6),
+           rot=(0, 0, 60), mats=[banded])
+
+    perspective_camera("Camera", (0, -3.6, 2.0), (0, 0.4, 0.45), 40.0)
+    sun = mm.light("Sun", 'SUN', 3.0, (0, 0, 5), colour=(1.0, 0.96, 0.9))
+    mm.look_at(sun, (1.5, 2.5, 0))
+    mm.light("Fill", 'POINT', 60.0, (-1.8, -1.6, 2.2), colour=(0.9, 0.95, 1.0))
+    path = os.path.join(out, "maps.glb")
+    mm.export_gltf(path)
+    check_maps_images(path)
+    bpy.ops.object.select_all(action='DESELECT')
+    bumpy.select_set(True)
+    bpy.ops.export_scene.gltf(
+        filepath=os.path.join(tests, "blender-tangents.glb"), export_format='GLB',
+        export_tangents=True, export_cameras=False, export_lights=False, export_yup=True,
+        export_apply=False, export_animations=False, export_extras=False, use_selection=True)
+    return {"maps.glb": sum(mm.triangles(o.data) for o in bpy.context.scene.objects
+                            if o.type == 'MESH'), "../../tests/models/blender-tangents.glb":
+            mm.triangles(bumpy.data)}
+
+
 def main():
     argv = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
-    if len(argv) != 1:
-        raise SystemExit("usage: blender -b --factory-startup --python scripts/make-path-scenes.py -- OUTROOT")
+    makers = ("cornell", "street", "maps")
+    if len(argv) < 1 or any(a not in makers for a in argv[1:]):
+        raise SystemExit("usage: blender -b --factory-startup --python scripts/make-path-scenes.py -- "
+                         "OUTROOT [%s ...] (default: all)" % " ".join(makers))
     root = os.path.abspath(argv[0])
+    wanted = argv[1:] or makers
     scn = os.path.join(root, "scenes", "models")
     tris = {}
-    tris.update(make_cornell(scn, point_light=False))
-    tris.update(make_cornell(scn, point_light=True))
-    tris.update(make_street(scn, os.path.join(scn, "street")))
+    if "cornell" in wanted:
+        tris.update(make_cornell(scn, point_light=False))
+        tris.update(make_cornell(scn, point_light=True))
+    if "street" in wanted:
+        tris.update(make_street(scn, os.path.join(scn, "street")))
+    if "maps" in wanted:
+        with tempfile.TemporaryDirectory() as tmp:
+            tris.update(make_maps(scn, tmp, os.path.join(root, "tests", "models")))
     for name, t in tris.items():
         print("TRIS %-28s blender-side triangles=%d" % (name, t))
         mm.summarise(os.path.join(scn, name), name)

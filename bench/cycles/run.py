@@ -52,6 +52,7 @@ SCENES = [
     ("blender-cube", "tests/models/blender-cube.glb", 160, 120, 512),
     ("blender-lights", "tests/models/blender-lights.glb", 160, 120, 512),
     ("street", "scenes/models/street.glb", 160, 120, 512),
+    ("maps", "scenes/models/maps.glb", 160, 120, 512),
 ]
 
 

@@ -14,7 +14,8 @@ namespace prt {
 namespace {
 
 constexpr uint32_t kTag = 0x41545250;  // "PRTA"
-constexpr uint32_t kVersion = 4;  // 2: the rig; 3: the path tracer's surface; 4: the map
+// 2: the rig; 3: the path tracer's surface; 4: the map; 5: data textures and tangents
+constexpr uint32_t kVersion = 5;
 
 bool isShippedMeshBlock(const Object& object) {
   const auto* m = std::get_if<MeshShape>(&object.shape);
@@ -46,6 +47,10 @@ void putMaterial(ByteWriter& w, const Material& m, int32_t textureOffset) {
                          m.pbr.coverage}) {
     w.pod(v);
   }
+  putTextureRef(w, m.pbr.metallicRoughnessTexture, textureOffset);
+  putTextureRef(w, m.pbr.normalTexture, textureOffset);
+  w.pod(m.pbr.normalScale);
+  putTextureRef(w, m.pbr.transmissionTexture, textureOffset);
 }
 
 class Reader {
@@ -108,6 +113,11 @@ class Reader {
         !unit(p.specularLevel) || !unit(p.coverage)) {
       in_.fail("a material no scene can hold");
     }
+    p.metallicRoughnessTexture = textureRef(textures);
+    p.normalTexture = textureRef(textures);
+    p.normalScale = finite();
+    if (!(p.normalScale >= -1e6 && p.normalScale <= 1e6)) in_.fail("a material no scene can hold");
+    p.transmissionTexture = textureRef(textures);
     return m;
   }
 
@@ -161,6 +171,7 @@ std::vector<uint8_t> packAssets(const Scene& scene) {
     putArray(w, m->normals);
     putArray(w, m->uvs);
     putArray(w, m->colors);
+    putArray(w, m->tangents);
   }
   w.pod(static_cast<uint64_t>(images.size()));
   for (const TextureImage* image : images) {
@@ -181,6 +192,7 @@ std::vector<uint8_t> packAssets(const Scene& scene) {
       w.pod(static_cast<uint8_t>(texture.wrapU));
       w.pod(static_cast<uint8_t>(texture.wrapV));
       w.pod(static_cast<uint8_t>(texture.nearest));
+      w.pod(static_cast<uint8_t>(texture.linear));
     }
     w.pod(static_cast<uint64_t>(import.objectCount));
     for (size_t i = 0; i < import.objectCount; ++i) {
@@ -211,7 +223,7 @@ ShippedAssets unpackAssets(const std::vector<uint8_t>& bytes) {
     raw.fail("not assets of this version of prt");
   }
   std::vector<std::shared_ptr<const TriangleMesh>> meshes;
-  const uint64_t meshCount = in.count(40);
+  const uint64_t meshCount = in.count(48);
   for (uint64_t i = 0; i < meshCount; ++i) {
     auto m = std::make_shared<TriangleMesh>();
     m->vertices = in.array<Vec3>();
@@ -219,10 +231,12 @@ ShippedAssets unpackAssets(const std::vector<uint8_t>& bytes) {
     m->normals = in.array<Vec3>();
     m->uvs = in.array<std::array<float, 2>>();
     m->colors = in.array<std::array<float, 3>>();
+    m->tangents = in.array<std::array<double, 4>>();
     const size_t n = m->vertices.size();
     if (m->triangles.empty()) raw.fail("a mesh without triangles");
     if ((!m->normals.empty() && m->normals.size() != n) || (!m->uvs.empty() && m->uvs.size() != n) ||
-        (!m->colors.empty() && m->colors.size() != n)) {
+        (!m->colors.empty() && m->colors.size() != n) ||
+        (!m->tangents.empty() && (m->tangents.size() != n || m->uvs.empty()))) {
       raw.fail("a mesh whose attributes do not match its vertices");
     }
     for (const auto& t : m->triangles) {
@@ -242,6 +256,9 @@ ShippedAssets unpackAssets(const std::vector<uint8_t>& bytes) {
       if (!std::isfinite(c[0]) || !std::isfinite(c[1]) || !std::isfinite(c[2])) {
         raw.fail("a vertex colour that is not finite");
       }
+    }
+    for (const auto& t : m->tangents) {
+      if (!isFinite(Vec3{t[0], t[1], t[2]}) || (t[3] != 1 && t[3] != -1)) raw.fail("a tangent that is not finite");
     }
     for (const auto& t : m->triangles) {
       const Vec3 &a = m->vertices[t[0]], &b = m->vertices[t[1]], &c = m->vertices[t[2]];
@@ -274,17 +291,19 @@ ShippedAssets unpackAssets(const std::vector<uint8_t>& bytes) {
   const uint64_t imports = in.count(16);
   for (uint64_t k = 0; k < imports; ++k) {
     ShippedImport import;
-    const uint64_t textures = in.count(7);
+    const uint64_t textures = in.count(8);
     for (uint64_t t = 0; t < textures; ++t) {
       Texture texture;
       const auto image = raw.pod<uint32_t>();
       if (image >= images.size()) raw.fail("an image index out of range");
       texture.image = images[image];
       const auto u = raw.pod<uint8_t>(), v = raw.pod<uint8_t>(), nearest = raw.pod<uint8_t>();
-      if (u > 2 || v > 2 || nearest > 1) raw.fail("an unknown way to sample a texture");
+      const auto linear = raw.pod<uint8_t>();
+      if (u > 2 || v > 2 || nearest > 1 || linear > 1) raw.fail("an unknown way to sample a texture");
       texture.wrapU = static_cast<TextureWrap>(u);
       texture.wrapV = static_cast<TextureWrap>(v);
       texture.nearest = nearest != 0;
+      texture.linear = linear != 0;
       import.textures.push_back(std::move(texture));
     }
     const uint64_t objects = in.count(4 + 12 * 8 + 16 * 8 + 2 * 52);

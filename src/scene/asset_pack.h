@@ -7,13 +7,13 @@
 // bit for bit. A mesh or an image used by several objects or imports is packed once.
 //
 // Layout (little-endian, as the hosts of a cluster are; core/byte_codec.h): a tag and version;
-// the meshes (counts of vertices, triangles, normals, texture coordinates and colours, then
-// each array), the images (size, channels, name, texels), the mesh blocks (a mesh index each),
-// then per import its textures (image index, wrap modes, filter) and its objects (mesh index,
-// transform, material with texture references local to the import), then the rig part of the
-// scene's animation (rig_pack.h): what its imports' model files animate, which only the files
-// hold (the scene's own `key` entries travel in the text); last, the environment map's size and
-// linear RGB floats (0 x 0 without one).
+// the meshes (counts of vertices, triangles, normals, texture coordinates, colours and
+// tangents, then each array), the images (size, channels, name, texels), the mesh blocks (a
+// mesh index each), then per import its textures (image index, wrap modes, filter, linear)
+// and its objects (mesh index, transform, material with texture references local to the
+// import), then the rig part of the scene's animation (rig_pack.h): what its imports' model
+// files animate, which only the files hold (the scene's own `key` entries travel in the
+// text); last, the environment map's size and linear RGB floats (0 x 0 without one).
 // Pure functions; thread-safe.
 
 #include <cstdint>

@@ -38,6 +38,7 @@
 #include "scene/model_mesh.h"
 #include "scene/model_notes.h"
 #include "scene/texture_file.h"
+#include "trace/tangents.h"
 
 namespace prt {
 namespace {
@@ -811,6 +812,16 @@ class GltfReader {
         raw.uvs[i] = {static_cast<float>(uvs->get(i, 0)), static_cast<float>(uvs->get(i, 1))};
       }
     }
+    // Tangents matter only to a normal map: the file's when it gives them (3.7.2.1: xyz unit,
+    // w the handedness), computed below otherwise.
+    const tinygltf::Material* surface = materialAt(primitive.material);
+    const bool normalMapped = surface != nullptr && surface->normalTexture.index >= 0 && !raw.uvs.empty();
+    if (const auto tangents = attribute("TANGENT"); normalMapped && tangents && tangents->components() == 4) {
+      raw.tangents.resize(n);
+      for (size_t i = 0; i < n; ++i) {
+        raw.tangents[i] = {tangents->get(i, 0), tangents->get(i, 1), tangents->get(i, 2), tangents->get(i, 3)};
+      }
+    }
     if (const auto colors = attribute("COLOR_0");
         colors && (colors->components() == 3 || colors->components() == 4)) {
       raw.colors.resize(n);
@@ -849,7 +860,9 @@ class GltfReader {
     } else {
       for (size_t i = 1; i + 1 < order.size(); ++i) add(order[0], order[i], order[i + 1]);
     }
-    return cleanMesh(std::move(raw), notes_.skips);
+    std::shared_ptr<TriangleMesh> mesh = cleanMesh(std::move(raw), notes_.skips);
+    if (mesh != nullptr && normalMapped && mesh->tangents.empty()) mesh->tangents = computeTangents(*mesh);
+    return mesh;
   }
 
   const tinygltf::Material* materialAt(int index) const {
@@ -861,10 +874,22 @@ class GltfReader {
   int uvSetOf(int index) const {
     const tinygltf::Material* m = materialAt(index);
     if (m == nullptr) return 0;
+    // The first of the textures that the material has, in this order.
     const tinygltf::TextureInfo& base = m->pbrMetallicRoughness.baseColorTexture;
-    const tinygltf::TextureInfo& info = base.index >= 0 ? base : m->emissiveTexture;
-    int set = info.texCoord;
-    if (const tinygltf::Value* t = extension(info.extensions, "KHR_texture_transform")) {
+    const tinygltf::TextureInfo& data = m->pbrMetallicRoughness.metallicRoughnessTexture;
+    int set = 0;
+    const tinygltf::ExtensionMap* extensions = nullptr;
+    for (const tinygltf::TextureInfo* info : {&base, &m->emissiveTexture, &data}) {
+      if (info->index >= 0) {
+        set = info->texCoord, extensions = &info->extensions;
+        break;
+      }
+    }
+    if (extensions == nullptr && m->normalTexture.index >= 0) {
+      set = m->normalTexture.texCoord, extensions = &m->normalTexture.extensions;
+    }
+    if (extensions == nullptr) return 0;
+    if (const tinygltf::Value* t = extension(*extensions, "KHR_texture_transform")) {
       const double given = number(*t, "texCoord", set);
       set = given >= 0 && given <= 7 ? static_cast<int>(given) : 0;
     }
@@ -889,6 +914,9 @@ class GltfReader {
       in.baseColorTexture = textureRef(pbr.baseColorTexture, name);
       in.metallic = pbr.metallicFactor;
       in.roughness = pbr.roughnessFactor;
+      in.metallicRoughnessTexture = textureRef(pbr.metallicRoughnessTexture, name, true);
+      in.normalTexture = textureRef(m->normalTexture, name, true);
+      in.normalScale = m->normalTexture.scale;
       in.emissive = vec3(m->emissiveFactor, Color());
       in.emissiveTexture = textureRef(m->emissiveTexture, name);
       if (m->alphaMode == "MASK") in.alphaMode = PbrMaterialInputs::AlphaMode::mask;
@@ -899,7 +927,7 @@ class GltfReader {
       }
       if (const auto* e = extension(m->extensions, "KHR_materials_transmission")) {
         in.transmission = number(*e, "transmissionFactor", 0);
-        if (e->Has("transmissionTexture")) notes_.notUsed.insert("transmission textures (" + name + ")");
+        in.transmissionTexture = textureRef(textureInfo(*e, "transmissionTexture"), name, true);
       }
       if (const auto* e = extension(m->extensions, "KHR_materials_ior")) in.ior = number(*e, "ior", 1.5);
       if (extension(m->extensions, "KHR_materials_unlit")) in.unlit = true;
@@ -911,10 +939,6 @@ class GltfReader {
                                 "KHR_materials_anisotropy"}) {
         if (extension(m->extensions, other)) notes_.notUsed.insert(std::string(other) + " (" + name + ")");
       }
-      if (pbr.metallicRoughnessTexture.index >= 0) {
-        notes_.notUsed.insert("metallic-roughness textures, their factors are (" + name + ")");
-      }
-      if (m->normalTexture.index >= 0) notes_.notUsed.insert("normal maps (" + name + ")");
       if (m->occlusionTexture.index >= 0) notes_.notUsed.insert("occlusion maps (" + name + ")");
       if (in.alphaMode != PbrMaterialInputs::AlphaMode::opaque && in.baseColorTexture.texture >= 0 &&
           out_.textures[static_cast<size_t>(in.baseColorTexture.texture)].image->channels % 2 == 0) {
@@ -928,6 +952,7 @@ class GltfReader {
 
   void specularGlossiness(const tinygltf::Value& e, PbrMaterialInputs& in, const std::string& name) {
     in.metallic = 0;
+    in.metallicRoughnessTexture = {};  // the fallback's, not this model's
     in.roughness = 1 - number(e, "glossinessFactor", 1);
     if (e.Has("diffuseFactor") && e.Get("diffuseFactor").IsArray() &&
         e.Get("diffuseFactor").ArrayLen() == 4) {
@@ -939,18 +964,31 @@ class GltfReader {
       in.baseColor = Color(1);
       in.alpha = 1;
     }
-    if (e.Has("diffuseTexture") && e.Get("diffuseTexture").IsObject()) {
-      tinygltf::TextureInfo info;
-      const double index = number(e.Get("diffuseTexture"), "index", -1);
-      info.index = index >= 0 && index < 1e9 ? static_cast<int>(index) : -1;
-      in.baseColorTexture = textureRef(info, name);
-    }
+    in.baseColorTexture = textureRef(textureInfo(e, "diffuseTexture"), name);
   }
 
-  TextureRef textureRef(const tinygltf::TextureInfo& info, const std::string& material) {
+  // A textureInfo held in an extension's object (tinygltf parses only the core ones): its
+  // index and its KHR_texture_transform; index -1 when there is none.
+  static tinygltf::TextureInfo textureInfo(const tinygltf::Value& e, const char* key) {
+    tinygltf::TextureInfo info;
+    if (!e.Has(key) || !e.Get(key).IsObject()) return info;
+    const tinygltf::Value& v = e.Get(key);
+    const double index = number(v, "index", -1);
+    info.index = index >= 0 && index < 1e9 ? static_cast<int>(index) : -1;
+    if (v.Has("extensions") && v.Get("extensions").IsObject() &&
+        v.Get("extensions").Has("KHR_texture_transform")) {
+      info.extensions["KHR_texture_transform"] = v.Get("extensions").Get("KHR_texture_transform");
+    }
+    return info;
+  }
+
+  // `linear`: a data texture (metallic-roughness, normals, transmission), read without the
+  // sRGB curve.
+  template <typename Info>
+  TextureRef textureRef(const Info& info, const std::string& material, bool linear = false) {
     TextureRef ref;
     if (info.index < 0) return ref;
-    ref.texture = texture(info.index, material);
+    ref.texture = texture(info.index, material, linear);
     if (ref.texture < 0) return {};
     if (const tinygltf::Value* t = extension(info.extensions, "KHR_texture_transform")) {
       double ox = 0, oy = 0, sx = 1, sy = 1;
@@ -975,14 +1013,16 @@ class GltfReader {
 
   // The index in out_.textures of glTF texture `index`, or -1 when its image is missing or
   // unreadable (a warning, or an error with --strict).
-  int texture(int index, const std::string& material) {
-    if (const auto found = textures_.find(index); found != textures_.end()) return found->second;
+  int texture(int index, const std::string& material, bool linear) {
+    const std::pair<int, bool> key{index, linear};
+    if (const auto found = textures_.find(key); found != textures_.end()) return found->second;
     int result = -1;
     if (static_cast<size_t>(index) < model_.textures.size()) {
       const tinygltf::Texture& t = model_.textures[static_cast<size_t>(index)];
       if (auto image = textureImage(t.source, material)) {
         Texture texture;
         texture.image = std::move(image);
+        texture.linear = linear;
         if (t.sampler >= 0 && static_cast<size_t>(t.sampler) < model_.samplers.size()) {
           const tinygltf::Sampler& s = model_.samplers[static_cast<size_t>(t.sampler)];
           texture.wrapU = wrapOf(s.wrapS);
@@ -996,7 +1036,7 @@ class GltfReader {
       notes_.problem(out_.warnings, "material " + material + " names texture " + std::to_string(index) +
               ", which does not exist");
     }
-    textures_[index] = result;
+    textures_[key] = result;
     return result;
   }
 
@@ -1169,7 +1209,7 @@ class GltfReader {
   size_t morphMoves_ = 0;  // vertices moved by a target, each time one is
   static constexpr size_t kMorphMoves = size_t{1} << 26;
   std::map<int, Material> materials_;
-  std::map<int, int> textures_;
+  std::map<std::pair<int, bool>, int> textures_;  // (glTF index, linear) to out_.textures
   std::map<int, std::shared_ptr<const TextureImage>> images_;
   ModelNotes notes_;
 };

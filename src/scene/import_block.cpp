@@ -20,7 +20,9 @@ void addObjects(Scene& scene, const std::vector<Object>& objects, const Transfor
   for (Object o : objects) {
     auto& instance = std::get<InstanceShape>(o.shape);
     if (placement != nullptr) instance.worldFromMesh = *placement * instance.worldFromMesh;
-    for (TextureRef* ref : {&o.material.colorTexture, &o.material.emissionTexture}) {
+    PbrSurface& pbr = o.material.pbr;
+    for (TextureRef* ref : {&o.material.colorTexture, &o.material.emissionTexture,
+                            &pbr.metallicRoughnessTexture, &pbr.normalTexture, &pbr.transmissionTexture}) {
       if (ref->texture >= 0) ref->texture += textureOffset;
     }
     scene.objects.push_back(std::move(o));

@@ -89,6 +89,10 @@ Material mapPbrMaterial(const PbrMaterialInputs& in) {
   m.pbr.transmission = clamp01(in.transmission);
   m.pbr.ior = ior;
   m.pbr.coverage = cover;
+  m.pbr.metallicRoughnessTexture = in.metallicRoughnessTexture;
+  m.pbr.normalTexture = in.normalTexture;
+  m.pbr.normalScale = std::isfinite(in.normalScale) ? std::clamp(in.normalScale, -1e6, 1e6) : 1.0;
+  m.pbr.transmissionTexture = in.transmissionTexture;
   m.diffuse = (1 - metallic) * (1 - transmission) * cover;
   m.ambient = m.diffuse;
   m.specular *= cover;

@@ -19,6 +19,13 @@ struct PbrMaterialInputs {
   double alpha = 1;
   TextureRef baseColorTexture;
   double metallic = 1, roughness = 1;  // glTF's defaults
+  // Data textures (linear), the path tracer's alone: B metallic and G roughness multiplying
+  // the factors; the tangent-space normal map and its scale; R transmission (KHR_materials_
+  // transmission) multiplying its factor.
+  TextureRef metallicRoughnessTexture;
+  TextureRef normalTexture;
+  double normalScale = 1;
+  TextureRef transmissionTexture;
   Color emissive{0, 0, 0};
   double emissiveStrength = 1;  // KHR_materials_emissive_strength
   TextureRef emissiveTexture;

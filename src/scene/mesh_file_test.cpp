@@ -306,11 +306,11 @@ TEST_F(MeshFile, ShippedMeshesNeedNoFiles) {
   ASSERT_EQ(again.objects.size(), scene.objects.size());
   for (size_t i = 0; i < scene.objects.size(); ++i) EXPECT_EQ(again.objects[i], scene.objects[i]);
   // Vertices, indices and normals, nothing more: 4 + 4 vertices, 2 + 2 triangles, 4 normals,
-  // after the tag, the counts (meshes; five arrays per mesh; images, blocks, imports), the
+  // after the tag, the counts (meshes; six arrays per mesh; images, blocks, imports), the
   // two blocks' mesh indices, the empty rig (five counts and the duration) and no environment
   // map (its width and height, zero).
   EXPECT_EQ(bytes.size(),
-            8 + 8 + 2 * 5 * 8 + 8 + 8 + 2 * 4 + 8 + 8 * 24 + 4 * 12 + 4 * 24 + 6 * 8 + 2 * 4);
+            8 + 8 + 2 * 6 * 8 + 8 + 8 + 2 * 4 + 8 + 8 * 24 + 4 * 12 + 4 * 24 + 6 * 8 + 2 * 4);
   // Without them, the files are looked for (and are gone).
   EXPECT_THROW(parseScene(text, "<sent>"), InputError);
   EXPECT_THROW(parseScene(text, "<sent>", ShippedAssets{}), InputError);

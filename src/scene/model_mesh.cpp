@@ -23,10 +23,11 @@ void MeshSkips::warn(std::vector<std::string>& warnings, const std::string& file
   line(warnings, file, notTriangles, "points and lines (not triangles)");
 }
 
-std::shared_ptr<const TriangleMesh> cleanMesh(RawMesh raw, MeshSkips& skips) {
+std::shared_ptr<TriangleMesh> cleanMesh(RawMesh raw, MeshSkips& skips) {
   const size_t n = raw.positions.size();
   if (raw.normals.size() != n) raw.normals.clear();
   if (raw.uvs.size() != n) raw.uvs.clear();
+  if (raw.tangents.size() != n || raw.uvs.empty()) raw.tangents.clear();
   if (raw.colors.size() != n) raw.colors.clear();
   auto mesh = std::make_shared<TriangleMesh>();
   mesh->triangles.reserve(raw.triangles.size());
@@ -63,6 +64,13 @@ std::shared_ptr<const TriangleMesh> cleanMesh(RawMesh raw, MeshSkips& skips) {
           auto uv = raw.uvs[v];
           for (float& x : uv) x = std::isfinite(x) ? x : 0.0f;
           mesh->uvs.push_back(uv);
+        }
+        if (!raw.tangents.empty()) {
+          const auto& given = raw.tangents[v];
+          const Vec3 xyz{given[0], given[1], given[2]};
+          const double size = length(xyz);
+          const Vec3 unit = isFinite(xyz) && size > 0 ? xyz / size : Vec3();
+          mesh->tangents.push_back({unit.x, unit.y, unit.z, given[3] < 0 ? -1.0 : 1.0});
         }
         if (!raw.colors.empty()) {
           auto color = raw.colors[v];

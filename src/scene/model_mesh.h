@@ -2,7 +2,8 @@
 // The meshes of model files as the readers gather them (RawMesh: whatever the file held) and
 // the checks that make them traceable (cleanMesh): triangles with an index out of range, a
 // vertex that is not finite, or no area are left out and counted; normals that are not
-// finite become zero (flat shading there), texture coordinates 0, colours white. Shared by the
+// finite become zero (flat shading there), texture coordinates 0, colours white, tangents
+// zero (no normal map there; tangents are kept only with texture coordinates). Shared by the
 // glTF and the assimp readers. Pure; thread-safe.
 
 #include <array>
@@ -26,6 +27,7 @@ struct RawMesh {
   std::vector<Vec3> normals;                 // empty or one per position
   std::vector<std::array<float, 2>> uvs;     // empty or one per position (v down the image)
   std::vector<std::array<float, 3>> colors;  // empty or one per position, linear RGB
+  std::vector<std::array<double, 4>> tangents;  // empty or one per position (glTF's TANGENT)
   std::vector<std::array<uint32_t, 3>> triangles;
 };
 
@@ -37,6 +39,6 @@ struct MeshSkips {
 };
 
 // The traceable part of `raw`, its unused vertices dropped; null when no triangle is left.
-std::shared_ptr<const TriangleMesh> cleanMesh(RawMesh raw, MeshSkips& skips);
+std::shared_ptr<TriangleMesh> cleanMesh(RawMesh raw, MeshSkips& skips);
 
 }  // namespace prt

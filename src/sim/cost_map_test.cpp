@@ -31,7 +31,7 @@ double bruteForce(const CostMap& map, const TaskRun& run) {
   return sum;
 }
 
-std::string tempPath(const std::string& name) {
+std::string costMapTempPath(const std::string& name) {
   return (std::filesystem::temp_directory_path() /
           ("prt-costmap-" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
            "-" + name))
@@ -88,7 +88,7 @@ TEST(CostMapTest, ScaledToKeepsTheShape) {
 }
 
 TEST(CostMapTest, FileRoundTrip) {
-  const std::string path = tempPath("roundtrip.cost");
+  const std::string path = costMapTempPath("roundtrip.cost");
   const CostMap map = randomMap(13, 5, 5);
   writeCostMapFile(path, map);
   EXPECT_EQ(std::filesystem::file_size(path), 16u + 4u * 13 * 5);
@@ -100,9 +100,9 @@ TEST(CostMapTest, FileRoundTrip) {
 }
 
 TEST(CostMapTest, FileErrorsNameTheFileAndTheProblem) {
-  expectReadError(tempPath("does-not-exist.cost"), "does not exist");
+  expectReadError(costMapTempPath("does-not-exist.cost"), "does not exist");
 
-  const std::string path = tempPath("bad.cost");
+  const std::string path = costMapTempPath("bad.cost");
   writeBytes(path, "P6\n2 2\n255\n");
   expectReadError(path, "not a cost map");
 

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "trace/normal_map.h"
+
 namespace prt {
 namespace {
 
@@ -67,7 +69,12 @@ PathTracer::PathTracer(const World& world)
     s.coverage = p.coverage;
     const TriangleMesh* mesh = meshOf(o);
     const bool textured = m.colorTexture.texture >= 0 || m.emissionTexture.texture >= 0;
-    s.attributes = mesh != nullptr && (!mesh->colors.empty() || (textured && !mesh->uvs.empty()));
+    const bool uvs = mesh != nullptr && !mesh->uvs.empty();
+    s.metallicRoughnessMap = uvs && m.pbr.given && m.pbr.metallicRoughnessTexture.texture >= 0;
+    s.transmissionMap = uvs && m.pbr.given && m.pbr.transmissionTexture.texture >= 0;
+    s.normalMap = uvs && m.pbr.given && m.pbr.normalTexture.texture >= 0 && !mesh->tangents.empty();
+    s.attributes = mesh != nullptr && (!mesh->colors.empty() || (textured && uvs) ||
+                                       s.metallicRoughnessMap || s.transmissionMap || s.normalMap);
     surfaces_.push_back(s);
     allOpaque_ = allOpaque_ && s.coverage >= 1;
   }
@@ -137,11 +144,25 @@ Color PathTracer::radiance(const Ray& cameraRay, const std::span<const uint32_t>
       continue;
     }
     Color base = m.color, emission = m.emission;
+    BsdfInputs inputs = surface.bsdf;
+    Vec3 mapped = hit.normal;  // the outward shading normal, a normal map's where there is one
     if (surface.attributes) {
       const SurfaceAttributes a = world_.attributesAt(ray, hit);
       base = base * a.color;
       if (m.colorTexture.texture >= 0) base = base * lookUp(scene, m.colorTexture, a);
       if (m.emissionTexture.texture >= 0) emission = emission * lookUp(scene, m.emissionTexture, a);
+      if (surface.metallicRoughnessMap) {
+        const Color c = lookUp(scene, m.pbr.metallicRoughnessTexture, a);
+        inputs.metallic = inputs.metallic * c.z;
+        inputs.roughness = inputs.roughness * c.y;
+      }
+      if (surface.transmissionMap) {
+        inputs.transmission = inputs.transmission * lookUp(scene, m.pbr.transmissionTexture, a).x;
+      }
+      if (surface.normalMap) {
+        mapped = mappedNormal(hit.normal, a.tangent, a.handedness,
+                              normalMapVector(lookUp(scene, m.pbr.normalTexture, a), m.pbr.normalScale));
+      }
     }
     if (emission != Color()) {
       double weight = 1;
@@ -155,14 +176,19 @@ Color PathTracer::radiance(const Ray& cameraRay, const std::span<const uint32_t>
 
     const bool outside = dot(ray.direction, hit.normal) < 0;
     const Vec3 n = outside ? hit.normal : -hit.normal;  // faces where the ray came from
-    BsdfInputs inputs = surface.bsdf;
+    // The BSDF's normal: n, or the normal map's on the same side, kept from facing away.
+    const bool bumped = mapped != hit.normal;
+    const Vec3 shading = bumped ? keepReflectionAbove(n, -ray.direction, outside ? mapped : -mapped) : n;
     inputs.base = base;
-    const Bsdf bsdf(inputs, n, -ray.direction, outside);
+    const Bsdf bsdf(inputs, shading, -ray.direction, outside);
     const Vec3 above = hit.point + eps * n, below = hit.point - eps * n;
 
     // Next-event estimation: a shadow ray to every light and to one emissive triangle.
     if (bsdf.hasSmoothLobe()) {
       auto aim = [&](const EmitterSample& light) {
+        // A light beyond the surface on one side and beyond the tilted normal's plane on the
+        // other: none of its light comes through (as in Cycles).
+        if (bumped && (dot(light.direction, n) > 0) != (dot(light.direction, shading) > 0)) return;
         const Color f = bsdf.evaluate(light.direction);
         if (!(maxComponent(f) > 0)) return;
         const Vec3 from = dot(light.direction, n) > 0 ? above : below;
@@ -203,6 +229,9 @@ Color PathTracer::radiance(const Ray& cameraRay, const std::span<const uint32_t>
     const double b0 = draws.uniform(), b1 = draws.uniform(), b2 = draws.uniform();
     BsdfSample next;
     if (!bsdf.sample(b0, b1, b2, next)) break;
+    if (bumped && (next.transmitted ? dot(next.wi, n) >= 0 : dot(next.wi, n) <= 0)) {
+      break;  // reflected into the surface (or transmitted out of it) by the tilted normal
+    }
     throughput = throughput * next.weight;
     if (!(maxComponent(throughput) > 0) || !isFinite(throughput)) break;
     lastDelta = next.delta;

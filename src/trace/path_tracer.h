@@ -11,6 +11,15 @@
 // its survivors weighted up to keep the mean); every path ends after the environment's
 // max_bounces.
 //
+// Textures (glTF 2.0, appendix B): the base colour and emission textures (sRGB), and the data
+// textures: the metallic-roughness texture's B and G multiply metallic and roughness, the
+// transmission texture's R the transmission, and a tangent-space normal map tilts the shading
+// normal (trace/normal_map.h, guarded by keepReflectionAbove). The tilted normal is the
+// BSDF's alone: the surface's own normal still decides which side a ray leaves from and where
+// it starts, and, as in Cycles, a bounce reflected below the surface (or transmitted above it)
+// ends the path and a light on the other side of the surface than of the tilted normal
+// lights nothing.
+//
 // Shadow rays are stopped by any surface but the transparent part of one (coverage < 1): the
 // glass of a path-traced scene lets light through by refraction alone, as a real one does.
 // Random numbers: one counter-based stream per sample (core/rng.h), a child stream per bounce,
@@ -53,6 +62,9 @@ class PathTracer {
     BsdfInputs bsdf;
     double coverage = 1;
     bool attributes = false;  // texture coordinates or vertex colours are needed
+    // glTF's data textures in use (the mesh has texture coordinates; and tangents for the
+    // normal map).
+    bool metallicRoughnessMap = false, transmissionMap = false, normalMap = false;
   };
   // Whether anything opaque lies between `origin` and `distance` along `direction`; returns the
   // share of light that gets through the transparent parts of what lies between.

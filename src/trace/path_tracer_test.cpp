@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "trace/renderer.h"
+#include "trace/tangents.h"
 
 namespace prt {
 namespace {
@@ -172,6 +173,96 @@ TEST(PathTracerTest, HallMaterialsMapToTheModelByTheWrittenRule) {
   EXPECT_EQ(pbrFromHall(sheer).coverage, 0.75);
   Material given = pbr(Color(1), 1, 0.25, 0);
   EXPECT_EQ(pbrFromHall(given), given.pbr);
+}
+
+// A 4 x 4 floor facing +y, mapped twice over, with its tangents, under a sun, seen from
+// above at an angle; `floor` its material, `textures` the scene's.
+Scene mappedFloor(const Material& floor, std::vector<Texture> textures) {
+  auto mesh = std::make_shared<TriangleMesh>();
+  mesh->vertices = {{-2, 0, -2}, {2, 0, -2}, {2, 0, 2}, {-2, 0, 2}};
+  mesh->triangles = {{0, 2, 1}, {0, 3, 2}};
+  mesh->normals.assign(4, Vec3(0, 1, 0));
+  mesh->uvs = {{0, 0}, {2, 0}, {2, 2}, {0, 2}};
+  mesh->tangents = computeTangents(*mesh);
+  Scene scene;
+  scene.camera.eye = Vec3(0, 3, -4);
+  scene.camera.lookAt = Vec3(0, 0, 0.5);
+  scene.image.width = 16;
+  scene.image.height = 12;
+  scene.environment.background = Color(0.2, 0.25, 0.3);
+  scene.environment.integrator = Integrator::path;
+  scene.objects.push_back({MeshShape{mesh, MeshSource{}}, floor});
+  Light sun;
+  sun.shape = DirectionalLight{normalize(Vec3(1, -2, 1.5))};
+  scene.lights.push_back(sun);
+  scene.textures = std::move(textures);
+  return scene;
+}
+
+// A 2 x 2 data texture of one RGB texel value.
+Texture dataTexture(uint8_t r, uint8_t g, uint8_t b) {
+  auto image = std::make_shared<TextureImage>();
+  image->width = 2;
+  image->height = 2;
+  image->channels = 3;
+  image->texels.resize(12);
+  for (size_t i = 0; i < 12; i += 3) {
+    image->texels[i] = r;
+    image->texels[i + 1] = g;
+    image->texels[i + 2] = b;
+  }
+  Texture t;
+  t.image = image;
+  t.linear = true;
+  return t;
+}
+
+Image renderSmall(const Scene& scene) {
+  const World world(scene);
+  return renderImage(Renderer(world, RenderSettings{4, 1}), 2);
+}
+
+bool sameBits(const Image& a, const Image& b) {
+  for (uint64_t p = 0; p < a.pixelCount(); ++p) {
+    if (!(a.at(p) == b.at(p))) return false;
+  }
+  return true;
+}
+
+// The flat texel (128, 128, 255) is no tilt at all: the same bits as no normal map. A tilted
+// map changes the image.
+TEST(PathTracerTest, AFlatNormalMapRendersTheSameBitsAsNone) {
+  const Material plain = pbr(Color(0.7, 0.6, 0.5), 0, 0.4, 0);
+  const Image none = renderSmall(mappedFloor(plain, {}));
+  Material flat = plain;
+  flat.pbr.normalTexture.texture = 0;
+  const Image mapped = renderSmall(mappedFloor(flat, {dataTexture(128, 128, 255)}));
+  EXPECT_TRUE(sameBits(none, mapped));
+  // Tilted along -x (u grows along +x), towards the sun, whose light travels along +x:
+  // brighter; along +x, away from it: darker.
+  const Image towards = renderSmall(mappedFloor(flat, {dataTexture(56, 128, 230)}));
+  EXPECT_FALSE(sameBits(none, towards));
+  EXPECT_GT(meanOfImage(towards), meanOfImage(none));
+  EXPECT_LT(meanOfImage(renderSmall(mappedFloor(flat, {dataTexture(200, 128, 230)}))), meanOfImage(none));
+  flat.pbr.normalScale = 0;  // a scale of 0 flattens any map
+  EXPECT_TRUE(sameBits(none, renderSmall(mappedFloor(flat, {dataTexture(200, 128, 230)}))));
+}
+
+// A metallic-roughness texture multiplies the factors, B metallic and G roughness: one of
+// constant value renders the same bits as those values given as the factors; the
+// transmission texture's R multiplies the transmission likewise.
+TEST(PathTracerTest, AConstantMetallicRoughnessTextureIsItsFactors) {
+  const Image factors = renderSmall(mappedFloor(pbr(Color(0.8, 0.7, 0.3), 200 / 255.0, 100 / 255.0, 0), {}));
+  Material textured = pbr(Color(0.8, 0.7, 0.3), 1, 1, 0);
+  textured.pbr.metallicRoughnessTexture.texture = 0;
+  EXPECT_TRUE(sameBits(factors, renderSmall(mappedFloor(textured, {dataTexture(17, 100, 200)}))));
+  // Swapped channels: another surface.
+  EXPECT_FALSE(sameBits(factors, renderSmall(mappedFloor(textured, {dataTexture(17, 200, 100)}))));
+
+  const Image glass = renderSmall(mappedFloor(pbr(Color(0.9), 0, 0.3, 128 / 255.0), {}));
+  Material clearing = pbr(Color(0.9), 0, 0.3, 1);
+  clearing.pbr.transmissionTexture.texture = 0;
+  EXPECT_TRUE(sameBits(glass, renderSmall(mappedFloor(clearing, {dataTexture(128, 9, 9)}))));
 }
 
 }  // namespace

@@ -76,6 +76,14 @@ struct PbrSurface {
   double ior = 1.5;           // in [1, 10]
   double specularLevel = 0.5;  // Blender's "specular": F0 = 0.08 * level for dielectrics
   double coverage = 1;        // alpha: 0 absent (rays pass straight through) to 1, in [0, 1]
+  // glTF's data textures (linear Textures), which only the path tracer reads: metallic (B)
+  // and roughness (G) multiplying the material's `metallic` and `roughness`; a tangent-space
+  // normal map (trace/normal_map.h) with its scale; the transmission (R) multiplying
+  // `transmission`.
+  TextureRef metallicRoughnessTexture;
+  TextureRef normalTexture;
+  double normalScale = 1;  // in [-1e6, 1e6]
+  TextureRef transmissionTexture;
   bool operator==(const PbrSurface&) const = default;
 };
 

@@ -21,6 +21,17 @@ const SrgbTable& srgbTable() {
   return table;
 }
 
+struct LinearTable {
+  double value[256];
+  LinearTable() {
+    for (int i = 0; i < 256; ++i) value[i] = i / 255.0;
+  }
+};
+const LinearTable& linearTable() {
+  static const LinearTable table;
+  return table;
+}
+
 // A coordinate into [0, 1] (clamp), [0, 1) (repeat) or [0, 1] mirrored every other unit.
 double wrapped(double t, TextureWrap wrap) {
   if (!std::isfinite(t)) return 0;
@@ -46,8 +57,8 @@ int texelIndex(int i, int size, TextureWrap wrap) {
   return i < 0 ? 0 : (i >= size ? size - 1 : i);
 }
 
-Color texel(const TextureImage& image, int x, int y) {
-  const double* linear = srgbTable().linear;
+Color texel(const TextureImage& image, int x, int y, bool data) {
+  const double* linear = data ? linearTable().value : srgbTable().linear;
   const uint8_t* p = image.texels.data() +
                      (static_cast<size_t>(y) * static_cast<size_t>(image.width) +
                       static_cast<size_t>(x)) *
@@ -60,6 +71,8 @@ Color texel(const TextureImage& image, int x, int y) {
 
 double srgbToLinear(uint8_t value) { return srgbTable().linear[value]; }
 
+double linearFromByte(uint8_t value) { return linearTable().value[value]; }
+
 Color sampleTexture(const Texture& texture, double u, double v) {
   const TextureImage& image = *texture.image;
   const double x = wrapped(u, texture.wrapU) * image.width;
@@ -67,7 +80,7 @@ Color sampleTexture(const Texture& texture, double u, double v) {
   if (texture.nearest) {
     const int ix = std::min(static_cast<int>(x), image.width - 1);
     const int iy = std::min(static_cast<int>(y), image.height - 1);
-    return texel(image, ix, iy);
+    return texel(image, ix, iy, texture.linear);
   }
   // Between the centres of the four nearest texels; x - 0.5 lies in [-0.5, width - 0.5].
   const double fx = x - 0.5, fy = y - 0.5;
@@ -78,8 +91,15 @@ Color sampleTexture(const Texture& texture, double u, double v) {
   const int xb = texelIndex(ix + 1, image.width, texture.wrapU);
   const int ya = texelIndex(iy, image.height, texture.wrapV);
   const int yb = texelIndex(iy + 1, image.height, texture.wrapV);
-  const Color top = (1 - ax) * texel(image, xa, ya) + ax * texel(image, xb, ya);
-  const Color bottom = (1 - ax) * texel(image, xa, yb) + ax * texel(image, xb, yb);
+  const bool data = texture.linear;
+  const Color a = texel(image, xa, ya, data), b = texel(image, xb, ya, data);
+  const Color c = texel(image, xa, yb, data), d = texel(image, xb, yb, data);
+  if (data) {  // exact where the texels agree
+    const Color top = a + ax * (b - a), bottom = c + ax * (d - c);
+    return top + ay * (bottom - top);
+  }
+  const Color top = (1 - ax) * a + ax * b;
+  const Color bottom = (1 - ax) * c + ax * d;
   return (1 - ay) * top + ay * bottom;
 }
 

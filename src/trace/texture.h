@@ -6,10 +6,14 @@
 //
 // Coordinates follow glTF: u runs across the image from its left edge, v down from its top
 // row, one image width (height) per unit; readers of formats whose v runs up (OBJ, and every
-// format through assimp) turn it over. Texels are 8-bit, sRGB-encoded for colours, decoded
-// to linear RGB on lookup; a lookup filters bilinearly (between the four nearest texel
-// centres, in linear RGB) unless the file asked for the nearest texel. No mipmaps: a texture
-// seen from far away aliases unless the pixel is supersampled.
+// format through assimp) turn it over. Texels are 8-bit: sRGB-encoded for colours (base
+// colour, emission), decoded to linear RGB on lookup; plain numbers for data (glTF's
+// metallic-roughness, normal and transmission textures: a Texture marked `linear`), read as
+// byte / 255 with no curve. A lookup filters bilinearly (between the four nearest texel
+// centres, in linear values) unless the file asked for the nearest texel; a data texture
+// blends as a + t (b - a), so that where its texels agree it reads their value exactly (a
+// flat normal map is exactly flat). No mipmaps: a texture seen from far away aliases unless
+// the pixel is supersampled.
 //
 // Plain data, shared read-only: safe to sample from many threads.
 
@@ -39,8 +43,9 @@ struct Texture {
   std::shared_ptr<const TextureImage> image;  // never null
   TextureWrap wrapU = TextureWrap::repeat, wrapV = TextureWrap::repeat;
   bool nearest = false;  // the nearest texel instead of bilinear filtering
+  bool linear = false;   // data: texels are byte / 255, not sRGB-encoded colours
   bool operator==(const Texture& o) const {
-    return wrapU == o.wrapU && wrapV == o.wrapV && nearest == o.nearest &&
+    return wrapU == o.wrapU && wrapV == o.wrapV && nearest == o.nearest && linear == o.linear &&
            (image == o.image || *image == *o.image);
   }
 };
@@ -64,7 +69,10 @@ struct TextureRef {
 // the portable power).
 double srgbToLinear(uint8_t value);
 
-// The texture's linear RGB at (u, v). Coordinates that are not finite read as (0, 0).
+// A data texel's value: byte / 255, no curve.
+double linearFromByte(uint8_t value);
+
+// The texture's linear RGB at (u, v) (a data texture's values). Coordinates that are not finite read as (0, 0).
 Color sampleTexture(const Texture& texture, double u, double v);
 
 }  // namespace prt

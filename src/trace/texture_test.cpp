@@ -89,5 +89,45 @@ TEST(Texture, GreyImagesGiveGreyAndAlphaIsNotColour) {
   expectColor(sampleTexture(t, 0.5, 0.5), {1, 1, 1});
 }
 
+// Data textures (metallic-roughness, normals) are numbers, not colours: byte / 255 with no
+// sRGB curve; colour textures keep the curve.
+TEST(Texture, DataTexturesAreReadWithoutTheSrgbCurve) {
+  auto image = std::make_shared<TextureImage>();
+  image->width = 1;
+  image->height = 1;
+  image->channels = 3;
+  image->texels = {128, 64, 255};
+  Texture t;
+  t.image = image;
+  const Color colour = sampleTexture(t, 0.5, 0.5);
+  EXPECT_EQ(colour.x, srgbToLinear(128));
+  EXPECT_NEAR(colour.x, 0.2158, 1e-4);
+  t.linear = true;
+  const Color data = sampleTexture(t, 0.5, 0.5);
+  EXPECT_EQ(data.x, 128 / 255.0);
+  EXPECT_EQ(data.y, 64 / 255.0);
+  EXPECT_EQ(data.z, 1.0);
+  for (int i = 0; i < 256; ++i) EXPECT_EQ(linearFromByte(static_cast<uint8_t>(i)), i / 255.0);
+  EXPECT_FALSE(t == Texture{image});  // linear is part of what a texture is
+}
+
+// Where a data texture's texels agree, bilinear filtering reads their value exactly, at any
+// point (a constant map equals its constant, bit for bit); colour textures blend as before.
+TEST(Texture, ADataTextureOfOneValueReadsExactlyThatValue) {
+  auto image = std::make_shared<TextureImage>();
+  image->width = 3;
+  image->height = 2;
+  image->channels = 3;
+  image->texels.assign(18, 77);
+  Texture t;
+  t.image = image;
+  t.linear = true;
+  for (const double u : {0.0, 0.1, 0.3333, 0.71, 0.999}) {
+    for (const double v : {0.0, 0.29, 0.5, 0.93}) {
+      EXPECT_EQ(sampleTexture(t, u, v), Color(77 / 255.0)) << u << " " << v;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace prt

@@ -26,6 +26,10 @@ struct TriangleMesh {
   // and linear RGB colours (which multiply the material's colour).
   std::vector<std::array<float, 2>> uvs;
   std::vector<std::array<float, 3>> colors;
+  // Per vertex, or empty (only with `uvs`): glTF's TANGENT, for normal maps (trace/tangents.h):
+  // x, y, z a unit vector along which u grows (zero: none known there), w = +1 or -1 the
+  // handedness: the bitangent, along which v falls (up the image), is w cross(normal, xyz).
+  std::vector<std::array<double, 4>> tangents;
   bool operator==(const TriangleMesh&) const = default;
 };
 

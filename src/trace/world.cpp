@@ -247,6 +247,17 @@ SurfaceAttributes World::attributesAt(const Ray& ray, const Hit& hit) const {
     a.color = {h.u * p[0] + h.v * q[0] + h.w * r[0], h.u * p[1] + h.v * q[1] + h.w * r[1],
                h.u * p[2] + h.v * q[2] + h.w * r[2]};
   }
+  if (!mesh.tangents.empty()) {
+    const auto &p = mesh.tangents[t[0]], &q = mesh.tangents[t[1]], &r = mesh.tangents[t[2]];
+    a.tangent = {h.u * p[0] + h.v * q[0] + h.w * r[0], h.u * p[1] + h.v * q[1] + h.w * r[1],
+                 h.u * p[2] + h.v * q[2] + h.w * r[2]};
+    a.handedness = h.u * p[3] + h.v * q[3] + h.w * r[3] < 0 ? -1 : 1;
+    if (const auto* instance = std::get_if<InstanceShape>(&scene_.objects[hit.object].shape)) {
+      a.tangent = instance->worldFromMesh.vector(a.tangent);
+      // A mirroring placement turns cross(normal, tangent) the other way.
+      if (instance->worldFromMesh.determinant() < 0) a.handedness = -a.handedness;
+    }
+  }
   return a;
 }
 

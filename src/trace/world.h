@@ -38,6 +38,11 @@ struct Hit {
 struct SurfaceAttributes {
   double u = 0, v = 0;
   Color color{1, 1, 1};
+  // In world space, interpolated, not unit (trace/triangle_mesh.h's tangents); zero: none.
+  // `handedness` is the w of the bitangent w cross(normal, tangent), with a mirroring
+  // placement's turn taken into account.
+  Vec3 tangent;
+  double handedness = 1;
 };
 
 class World {

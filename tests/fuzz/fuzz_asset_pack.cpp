@@ -23,6 +23,7 @@ void check(bool ok) {
 
 void checkMesh(const std::shared_ptr<const prt::TriangleMesh>& m) {
   check(m != nullptr && !m->triangles.empty());
+  check(m->tangents.empty() || (m->tangents.size() == m->vertices.size() && !m->uvs.empty()));
   for (const auto& t : m->triangles) {
     for (const uint32_t v : t) check(v < m->vertices.size());
   }
@@ -46,7 +47,9 @@ prt::Scene sceneOf(const prt::ShippedAssets& assets) {
     import.textureCount = shipped.textures.size();
     const auto offset = static_cast<int32_t>(scene.textures.size());
     for (prt::Object o : shipped.objects) {
-      for (prt::TextureRef* ref : {&o.material.colorTexture, &o.material.emissionTexture}) {
+      prt::PbrSurface& p = o.material.pbr;
+      for (prt::TextureRef* ref : {&o.material.colorTexture, &o.material.emissionTexture,
+                                   &p.metallicRoughnessTexture, &p.normalTexture, &p.transmissionTexture}) {
         if (ref->texture >= 0) ref->texture += offset;
       }
       scene.objects.push_back(std::move(o));
@@ -81,7 +84,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
       const auto* instance = std::get_if<prt::InstanceShape>(&o.shape);
       check(instance != nullptr && instance->worldFromMesh.isUsable());
       checkMesh(instance->mesh);
-      for (const prt::TextureRef* ref : {&o.material.colorTexture, &o.material.emissionTexture}) {
+      const prt::PbrSurface& p = o.material.pbr;
+      for (const prt::TextureRef* ref : {&o.material.colorTexture, &o.material.emissionTexture,
+                                         &p.metallicRoughnessTexture, &p.normalTexture,
+                                         &p.transmissionTexture}) {
         check(ref->texture >= -1 && ref->texture < static_cast<int32_t>(import.textures.size()));
       }
     }
