@@ -261,6 +261,7 @@ class AssimpReader {
       in.emissiveTexture = textureRef(m, aiTextureType_EMISSIVE, name);
       if (m.Get(AI_MATKEY_TRANSMISSION_FACTOR, value) == AI_SUCCESS) in.transmission = value;
       if (m.Get(AI_MATKEY_REFRACTI, value) == AI_SUCCESS && value >= 1) in.ior = value;
+      for (const std::string& v : pbrValuesOutOfRange(in)) notes_.outOfRange.insert(name + ": " + v);
       result = mapPbrMaterial(in);
     } else {
       CommonMaterialInputs in;

@@ -944,6 +944,7 @@ class GltfReader {
           out_.textures[static_cast<size_t>(in.baseColorTexture.texture)].image->channels % 2 == 0) {
         notes_.notUsed.insert("a texture's alpha, the factor's is (" + name + ")");
       }
+      for (const std::string& v : pbrValuesOutOfRange(in)) notes_.outOfRange.insert(name + ": " + v);
     }
     const Material mapped = mapPbrMaterial(in);
     materials_[index] = mapped;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "scene/value_reader.h"
 
@@ -98,6 +99,41 @@ Material mapPbrMaterial(const PbrMaterialInputs& in) {
   m.specular *= cover;
   if (cover == 0) m.reflectivity = m.specular = 0, m.glossDegrees = 0, m.transmissivity = 1;
   return m;
+}
+
+std::vector<std::string> pbrValuesOutOfRange(const PbrMaterialInputs& in) {
+  std::vector<std::string> out;
+  const auto note = [&](const char* what, double value, double taken) {
+    char text[96];
+    std::snprintf(text, sizeof text, "%s %g (taken as %g)", what, value, taken);
+    out.emplace_back(text);
+  };
+  const auto unit = [&](const char* what, double value) {
+    if (!(value >= 0 && value <= 1)) note(what, value, clamp01(value));
+  };
+  unit("base colour red", in.baseColor.x);
+  unit("base colour green", in.baseColor.y);
+  unit("base colour blue", in.baseColor.z);
+  unit("alpha", in.alpha);
+  unit("metallic", in.metallic);
+  unit("roughness", in.roughness);
+  unit("transmission", in.transmission);
+  if (!(in.ior >= 1 && in.ior <= 10)) {
+    note("ior", in.ior, std::isfinite(in.ior) ? std::clamp(in.ior, 1.0, 10.0) : 1.5);
+  }
+  if (!std::isfinite(in.emissiveStrength) || in.emissiveStrength < 0) {
+    note("emissive strength", in.emissiveStrength, std::isfinite(in.emissiveStrength) ? 0.0 : 1.0);
+  }
+  const Color asked = in.emissive * (std::isfinite(in.emissiveStrength)
+                                         ? std::max(0.0, in.emissiveStrength)
+                                         : 1.0);
+  const Color taken = emissionOf(asked);
+  const char* names[] = {"emission red", "emission green", "emission blue"};
+  for (int c = 0; c < 3; ++c) {
+    if (!(asked[c] == taken[c])) note(names[c], asked[c], taken[c]);
+  }
+  if (!std::isfinite(in.normalScale)) note("normal scale", in.normalScale, 1);
+  return out;
 }
 
 Material mapCommonMaterial(const CommonMaterialInputs& in) {

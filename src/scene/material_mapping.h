@@ -36,6 +36,10 @@ struct PbrMaterialInputs {
   bool unlit = false;  // KHR_materials_unlit
 };
 Material mapPbrMaterial(const PbrMaterialInputs& in);
+// The values of `in` that mapPbrMaterial does not take as given, each as "roughness 7 (taken
+// as 1)": out of their ranges (colours and factors [0, 1], ior [1, 10], emission [0, 1e6] per
+// component) or not finite. Empty when every value is taken as it is.
+std::vector<std::string> pbrValuesOutOfRange(const PbrMaterialInputs& in);
 
 struct CommonMaterialInputs {
   Color diffuse{0.8, 0.8, 0.8};  // Kd

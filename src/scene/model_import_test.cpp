@@ -182,6 +182,37 @@ TEST(ModelFile, FbxOpaqueWithFactorOneAndBlackTransparentColourStaysOpaque) {
   for (const Object& o : box.objects) EXPECT_EQ(o.material.transmissivity, 0.0);
 }
 
+// Blender's cube with its material's values edited out of their ranges: each is clamped, and
+// the file, the material and the value taken are named in one warning. As Blender wrote it,
+// no such warning.
+TEST(ModelFile, MaterialValuesOutOfRangeAreClampedAndNamed) {
+  const ImportedModel asWritten = readModelFile((kModels / "blender-cube.gltf").string());
+  EXPECT_FALSE(anyWarning(asWritten.warnings, "out of range"));
+  nlohmann::json doc;
+  std::ifstream((kModels / "blender-cube.gltf")) >> doc;
+  nlohmann::json& material = doc["materials"][0];
+  material["pbrMetallicRoughness"]["roughnessFactor"] = 7;
+  material["pbrMetallicRoughness"]["metallicFactor"] = -1;
+  material["extensions"]["KHR_materials_ior"]["ior"] = 0.5;
+  doc["extensionsUsed"].push_back("KHR_materials_ior");
+  const fs::path file = fs::temp_directory_path() /
+                        ("prt-out-of-range-" + std::to_string(::getpid()) + ".gltf");
+  std::ofstream(file) << doc.dump();
+  const ImportedModel model = readModelFile(file.string());
+  fs::remove(file);
+  std::string line;
+  for (const std::string& w : model.warnings) {
+    if (w.find("out of range") != std::string::npos) line = w;
+  }
+  EXPECT_NE(line.find(file.string()), std::string::npos) << line;
+  EXPECT_NE(line.find("'CubeGrid': roughness 7 (taken as 1)"), std::string::npos) << line;
+  EXPECT_NE(line.find("'CubeGrid': metallic -1 (taken as 0)"), std::string::npos) << line;
+  EXPECT_NE(line.find("'CubeGrid': ior 0.5 (taken as 1)"), std::string::npos) << line;
+  ASSERT_FALSE(model.objects.empty());
+  EXPECT_EQ(model.objects[0].material.pbr.roughness, 1.0);
+  EXPECT_EQ(model.objects[0].material.metallic, 0.0);
+}
+
 // Khronos's AnimatedMorphCube (assimp-testmodels), its mesh weights set to one target at a
 // time in a copy: the morphed vertices are those assimp makes of the same file (its
 // aiAnimMesh holds each target's shape, base plus displacement, in floats; PRT's sum of the

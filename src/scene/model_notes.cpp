@@ -48,6 +48,11 @@ void ModelNotes::warn(std::vector<std::string>& warnings) const {
     warnings.push_back(head + plural(hiddenNodes, "node is", "nodes are") +
                        " scaled to nothing (or not finite): skipped with what they hold");
   }
+  if (!outOfRange.empty()) {
+    std::string list;
+    for (const std::string& what : outOfRange) list += (list.empty() ? "" : "; ") + what;
+    warnings.push_back(head + "material values out of range: " + list);
+  }
   if (!notUsed.empty()) {
     std::string list;
     for (const std::string& what : notUsed) list += (list.empty() ? "" : "; ") + what;

@@ -26,6 +26,7 @@ struct ModelNotes {
   size_t hiddenNodes = 0;       // nodes scaled to nothing
   size_t unusedLights = 0;      // lights of a kind PRT does not have
   std::set<std::string> notUsed;  // material features and extensions, with where
+  std::set<std::string> outOfRange;  // material values not taken as given, with where
 
   // A texture (or its image) that cannot be had: throws ModelFileError with --strict, else
   // adds "...; rendered without it" to `warnings`.
