@@ -289,6 +289,7 @@ std::string measures(const json& r) {
       {"endgame_copies", {kFaults, "endgame copies", "tasks copied to idle workers at the end (--endgame)"}},
       {"missing_summaries", {kFaults, "missing summaries", "live workers whose times never came: their rows lack busy and idle times"}},
       {"resumed_pixels", {kFaults, "resumed pixels", "taken from a checkpoint instead of rendered"}},
+      {"non_finite_samples", {kFaults, "non-finite samples", "samples whose value was NaN or infinite: left out of their pixels' means"}},
       {"joined_workers", {kFaults, "joined workers", "arrived mid-render"}},
       {"worker_timeout_s", {kFaults, "worker lease", "silence after which a worker is lost (--worker-timeout)"}},
       {"master_busy_share", {kNetwork, "master busy", "the share of the run the master spent handling messages (its CPU time outside its waits; modelled in a simulation): near 100 % it cannot keep up"}},
@@ -305,7 +306,7 @@ std::string measures(const json& r) {
       {"fps", {kFrames, "frames per second", "the animation's speed (--fps)"}},
       {"seconds_per_frame", {kFrames, "per frame", "the job's time over its frames"}}};
   static const std::set<std::string> kFaultKeys = {"lost_workers", "reissued_tasks", "rejected_workers", "refused_joiners",
-                                                   "missing_summaries", "duplicate_pixels"};
+                                                   "missing_summaries", "duplicate_pixels", "non_finite_samples"};
   const auto humanValue = [](const std::string& key, const json& value) {
     if (value.is_string()) {
       const std::string v = value.get<std::string>();
@@ -335,6 +336,8 @@ std::string measures(const json& r) {
              "</td></tr>";
     }
     if (kKnownKeys.count(key) || value.is_object() || value.is_null()) continue;
+    // A card only when some sample was not finite: zero in nearly every run.
+    if (key == "non_finite_samples" && !(value.is_number() && value.get<double>() > 0)) continue;
     const auto known = kLabels.find(key);
     const std::string group = known != kLabels.end() ? known->second.group : "Other measures";
     const std::string label = known != kLabels.end() ? known->second.label : humanKey(key);

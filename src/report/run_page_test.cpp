@@ -164,6 +164,23 @@ TEST(RunPage, ShowsFaultKeysAndUnknownKeysGenerically) {
   EXPECT_NE(html.find("Worker 2 was lost</b>"), std::string::npos);
 }
 
+// Samples not finite: no card and no column while there are none (the page's layout stays),
+// a fault card and the workers' column once there are.
+TEST(RunPage, NonFiniteSamplesShowOnlyWhenThereAreSome) {
+  const SampleRun run = fourWorkers();
+  json doc = reportDocument(run.report, context(), run.events, run.owner);
+  doc["non_finite_samples"] = 0;
+  for (json& w : doc["workers"]) w["non_finite_samples"] = 0;
+  const std::string none = runPageHtml(doc, {});
+  EXPECT_EQ(none.find("data-key=\"non_finite_samples\" data-value"), std::string::npos);
+  EXPECT_EQ(none.find("<th>non finite samples</th>"), std::string::npos);
+  doc["non_finite_samples"] = 3;
+  doc["workers"][1]["non_finite_samples"] = 3;
+  const std::string some = runPageHtml(doc, {});
+  EXPECT_NE(some.find("card fault\" data-key=\"non_finite_samples\""), std::string::npos);
+  EXPECT_NE(some.find("<th>non finite samples</th>"), std::string::npos);
+}
+
 TEST(RunPage, SaysWhenAWorkerWasLost) {
   SampleRun run = fourWorkers();
   run.events.push_back({EventKind::WorkerLost, 3, 1.25, 1.25, 0, 0, 0, ""});
