@@ -33,6 +33,11 @@ inline std::string humanKey(std::string key) {
   std::replace(key.begin(), key.end(), '_', ' ');
   return key;
 }
+// Counts of faults shown (a card, a workers' column) only when they are not zero: zero in
+// nearly every run, where a card or a column of them says nothing.
+inline bool hiddenWhileZero(const std::string& key, const json& value) {
+  return key == "non_finite_samples" && !(value.is_number() && value.get<double>() > 0);
+}
 // A JSON value of a key nobody told the page about, readably.
 inline std::string genericValue(const json& v) {
   if (v.is_null()) return "\u2014";  // not there (a worker that did not join: no join time)

@@ -336,8 +336,7 @@ std::string measures(const json& r) {
              "</td></tr>";
     }
     if (kKnownKeys.count(key) || value.is_object() || value.is_null()) continue;
-    // A card only when some sample was not finite: zero in nearly every run.
-    if (key == "non_finite_samples" && !(value.is_number() && value.get<double>() > 0)) continue;
+    if (hiddenWhileZero(key, value)) continue;
     const auto known = kLabels.find(key);
     const std::string group = known != kLabels.end() ? known->second.group : "Other measures";
     const std::string label = known != kLabels.end() ? known->second.label : humanKey(key);

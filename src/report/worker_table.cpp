@@ -13,10 +13,6 @@ const std::set<std::string> kKnownWorkerKeys = {
     "worker", "speed_index_s", "slowdown",          "tasks",      "pixels",         "busy_s",
     "idle_s", "messages_sent", "messages_received", "bytes_sent", "bytes_received", "lost"};
 
-// Counts of faults that are columns only when some worker has one: a column of zeros in every
-// run says nothing.
-const std::set<std::string> kWorkerKeysShownWhenNonZero = {"non_finite_samples"};
-
 // Whether the workers ran a speed index: the report's MASU comes from it when they did.
 bool speedIndexMeasured(const json& r) { return text(r, "masu_basis") != "measured_throughput"; }
 
@@ -73,9 +69,7 @@ std::string workerTable(const json& r, const std::vector<std::string>& colours, 
   for (const json& w : r["workers"]) {
     if (!w.is_object()) continue;
     for (const auto& [key, value] : w.items()) {
-      if (kWorkerKeysShownWhenNonZero.count(key) && !(value.is_number() && value.get<double>() > 0)) {
-        continue;
-      }
+      if (hiddenWhileZero(key, value)) continue;  // a column only when some worker has one
       if (!kKnownWorkerKeys.count(key) &&
           std::find(extraKeys.begin(), extraKeys.end(), key) == extraKeys.end()) {
         extraKeys.push_back(key);

@@ -27,6 +27,12 @@ Color emissionOf(const Color& c) {
   return {f(n.x), f(n.y), f(n.z)};
 }
 
+// The values mapPbrMaterial takes for those given, each range written once (pbrValuesOutOfRange
+// names what these change).
+double iorOf(double ior) { return std::isfinite(ior) ? std::clamp(ior, 1.0, 10.0) : 1.5; }
+double emissiveStrengthOf(double s) { return std::isfinite(s) ? std::max(0.0, s) : 1.0; }
+double normalScaleOf(double s) { return std::isfinite(s) ? std::clamp(s, -1e6, 1e6) : 1.0; }
+
 // The Phong exponent whose lobe is about as wide as a GGX lobe of this roughness: Blinn-Phong's
 // 2 / alpha^2 - 2 with alpha = roughness^2 (Walter et al. 2007), a quarter of it for Phong's
 // reflection-vector form, between 1 and 10000.
@@ -45,9 +51,7 @@ Material mapPbrMaterial(const PbrMaterialInputs& in) {
   const double metallic = clamp01(in.metallic), roughness = clamp01(in.roughness);
   m.color = clamp01(in.baseColor);
   m.colorTexture = in.baseColorTexture;
-  m.emission = emissionOf(in.emissive * (std::isfinite(in.emissiveStrength)
-                                             ? std::max(0.0, in.emissiveStrength)
-                                             : 1.0));
+  m.emission = emissionOf(in.emissive * emissiveStrengthOf(in.emissiveStrength));
   m.emissionTexture = in.emissiveTexture;
   if (in.unlit) {  // shown as its colour, whatever the lights
     m.diffuse = m.ambient = m.specular = 0;
@@ -59,7 +63,7 @@ Material mapPbrMaterial(const PbrMaterialInputs& in) {
   }
   // A dielectric reflects ((n - 1) / (n + 1))^2 at normal incidence: 4 % at glTF's default
   // index of 1.5 (KHR_materials_ior changes both); a metal reflects its colour.
-  const double ior = std::isfinite(in.ior) ? std::clamp(in.ior, 1.0, 10.0) : 1.5;
+  const double ior = iorOf(in.ior);
   const double f0 = (ior - 1) / (ior + 1);
   const double reflectance = f0 * f0 * (1 - metallic) + metallic;
   m.metallic = metallic;
@@ -92,7 +96,7 @@ Material mapPbrMaterial(const PbrMaterialInputs& in) {
   m.pbr.coverage = cover;
   m.pbr.metallicRoughnessTexture = in.metallicRoughnessTexture;
   m.pbr.normalTexture = in.normalTexture;
-  m.pbr.normalScale = std::isfinite(in.normalScale) ? std::clamp(in.normalScale, -1e6, 1e6) : 1.0;
+  m.pbr.normalScale = normalScaleOf(in.normalScale);
   m.pbr.transmissionTexture = in.transmissionTexture;
   m.diffuse = (1 - metallic) * (1 - transmission) * cover;
   m.ambient = m.diffuse;
@@ -103,14 +107,14 @@ Material mapPbrMaterial(const PbrMaterialInputs& in) {
 
 std::vector<std::string> pbrValuesOutOfRange(const PbrMaterialInputs& in) {
   std::vector<std::string> out;
-  const auto note = [&](const char* what, double value, double taken) {
+  // Said when the value taken is not the one given (a NaN never equals what replaces it).
+  const auto check = [&](const char* what, double given, double taken) {
+    if (given == taken) return;
     char text[96];
-    std::snprintf(text, sizeof text, "%s %g (taken as %g)", what, value, taken);
+    std::snprintf(text, sizeof text, "%s %g (taken as %g)", what, given, taken);
     out.emplace_back(text);
   };
-  const auto unit = [&](const char* what, double value) {
-    if (!(value >= 0 && value <= 1)) note(what, value, clamp01(value));
-  };
+  const auto unit = [&](const char* what, double given) { check(what, given, clamp01(given)); };
   unit("base colour red", in.baseColor.x);
   unit("base colour green", in.baseColor.y);
   unit("base colour blue", in.baseColor.z);
@@ -118,21 +122,14 @@ std::vector<std::string> pbrValuesOutOfRange(const PbrMaterialInputs& in) {
   unit("metallic", in.metallic);
   unit("roughness", in.roughness);
   unit("transmission", in.transmission);
-  if (!(in.ior >= 1 && in.ior <= 10)) {
-    note("ior", in.ior, std::isfinite(in.ior) ? std::clamp(in.ior, 1.0, 10.0) : 1.5);
-  }
-  if (!std::isfinite(in.emissiveStrength) || in.emissiveStrength < 0) {
-    note("emissive strength", in.emissiveStrength, std::isfinite(in.emissiveStrength) ? 0.0 : 1.0);
-  }
-  const Color asked = in.emissive * (std::isfinite(in.emissiveStrength)
-                                         ? std::max(0.0, in.emissiveStrength)
-                                         : 1.0);
+  check("ior", in.ior, iorOf(in.ior));
+  check("emissive strength", in.emissiveStrength, emissiveStrengthOf(in.emissiveStrength));
+  const Color asked = in.emissive * emissiveStrengthOf(in.emissiveStrength);
   const Color taken = emissionOf(asked);
-  const char* names[] = {"emission red", "emission green", "emission blue"};
-  for (int c = 0; c < 3; ++c) {
-    if (!(asked[c] == taken[c])) note(names[c], asked[c], taken[c]);
-  }
-  if (!std::isfinite(in.normalScale)) note("normal scale", in.normalScale, 1);
+  check("emission red", asked.x, taken.x);
+  check("emission green", asked.y, taken.y);
+  check("emission blue", asked.z, taken.z);
+  check("normal scale", in.normalScale, normalScaleOf(in.normalScale));
   return out;
 }
 
