@@ -28,7 +28,7 @@ build-fuzz/fuzz/prt_fuzz_message_seeds "$corpus/message" scenes/fig08-basic-feat
 cp tests/models/*.glb tests/models/*.gltf scenes/models/*.glb scenes/models/*.gltf \
    scenes/models/street/*.glb "$corpus/model/"
 build-fuzz/fuzz/prt_fuzz_pack_seeds "$corpus/pack" scenes/chess.scene scenes/street.scene \
-   scenes/models/maps.glb
+   scenes/models/maps.glb scenes/models/volume.glb
 build-fuzz/fuzz/prt_fuzz_checkpoint_seeds "$corpus/checkpoint"
 find tests/models scenes/models -maxdepth 1 \( -iname '*.obj' -o -iname '*.ply' \) \
   -exec cp {} "$corpus/mesh/" \;

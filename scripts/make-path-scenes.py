@@ -16,6 +16,9 @@
                                        a ball banded by a metallic-roughness texture (both
                                        64 x 64 data textures made here), under a sun and a
                                        point light; its images are checked texel by texel
+  scenes/models/volume.glb             KHR_materials_volume: an amber glass ball and a blue
+                                       glass block that absorb inside (the extension written
+                                       into the exported file's JSON)
   tests/models/blender-tangents.glb    the normal-mapped ball alone, with the tangents Blender
                                        computes (MikkTSpace) written as TANGENT
 
@@ -23,7 +26,7 @@ Command (Blender 3.4.1 from Debian 12, whose glTF add-on also needs python3-nump
 
     blender -b --factory-startup --python scripts/make-path-scenes.py -- /work/main [maps ...]
 
-(the names after the root pick some of cornell, street and maps; default all).
+(the names after the root pick some of cornell, street, maps and volume; default all).
 
 Deterministic: every position, colour and strength is written here, the props are the
 committed files (scripts/make-models.py makes them), and the helpers are make-models.py's.
@@ -404,9 +407,88 @@ def make_maps(out, tmp, tests):
             mm.triangles(bumpy.data)}
 
 
+# ----------------------------------------------------------------------------- extensions
+
+# Small scenes of glTF's material extensions, one each, for the comparison with Cycles: a floor
+# and a back wall lit by a sun and a point light, with two objects of the extension's
+# material. Blender's exporter writes some extensions from the Principled BSDF's inputs and not
+# others (KHR_materials_volume needs its "glTF Material Output" node group): each extension is
+# written by patch_materials into the exported file's JSON, with the values here, so that the
+# file says exactly what is checked; Blender's importer reads them back for Cycles.
+
+
+def patch_materials(path, extensions):
+    """Rewrites the GLB at `path` with extensions[material name] added to that material's
+    extensions (and to extensionsUsed)."""
+    with open(path, "rb") as f:
+        data = f.read()
+    clen = struct.unpack_from("<I", data, 12)[0]
+    doc = json.loads(data[20:20 + clen].decode("utf-8"))
+    rest = data[20 + clen:]
+    used = set(doc.get("extensionsUsed", []))
+    found = set()
+    for m in doc.get("materials", []):
+        for name, value in extensions.get(m.get("name"), {}).items():
+            m.setdefault("extensions", {})[name] = value
+            used.add(name)
+            found.add(m.get("name"))
+    if found != set(extensions):
+        raise SystemExit("%s: materials %s not found" % (path, sorted(set(extensions) - found)))
+    doc["extensionsUsed"] = sorted(used)
+    text = json.dumps(doc, separators=(",", ":")).encode("utf-8")
+    text += b" " * (-len(text) % 4)
+    out = b"glTF" + struct.pack("<II", 2, 12 + 8 + len(text) + len(rest))
+    out += struct.pack("<I", len(text)) + b"JSON" + text + rest
+    with open(path, "wb") as f:
+        f.write(out)
+
+
+def extension_stage(a, b):
+    """The room of the extension scenes and its lights (after reset(160, 120), which the
+    materials a and b follow); a goes on a ball (left), b on a block (right)."""
+    floor = mm.material("Floor", base=(0.6, 0.55, 0.5), roughness=0.6)
+    wall = mm.material("Wall", base=(0.3, 0.45, 0.7), roughness=0.8)
+    bf = mm.Builder()
+    quad(bf, [(-3, -2, 0), (3, -2, 0), (3, 2, 0), (-3, 2, 0)], 0)
+    mm.obj("Floor", bf.mesh("Floor"), mats=[floor])
+    bw = mm.Builder()
+    quad(bw, [(-3, 2, 0), (3, 2, 0), (3, 2, 3), (-3, 2, 3)], 0)
+    mm.obj("Wall", bw.mesh("Wall"), mats=[wall])
+    bs = mm.Builder()
+    bs.sphere(0.6, (0, 0, 0), 48, 24)
+    mm.obj("Ball", bs.mesh("Ball", smooth=True), loc=(-0.75, 0.3, 0.6), mats=[a])
+    bb = mm.Builder()
+    bb.box((-0.45, -0.45, 0.0), (0.45, 0.45, 0.9), mat=0)
+    mm.obj("Block", bb.mesh("Block"), loc=(0.8, 0.2, 0.0), rot=(0, 0, 25), mats=[b])
+    perspective_camera("Camera", (0, -3.6, 1.9), (0, 0.3, 0.5), 40.0)
+    sun = mm.light("Sun", 'SUN', 3.0, (0, 0, 5), colour=(1.0, 0.96, 0.9))
+    mm.look_at(sun, (1.2, 2.5, 0))
+    mm.light("Fill", 'POINT', 60.0, (-1.8, -1.6, 2.2), colour=(0.9, 0.95, 1.0))
+
+
+def make_volume(out):
+    """scenes/models/volume.glb: KHR_materials_volume, two absorbing glasses (thick: Blender
+    has no thin-walled glass to compare with), a smooth ball and a rough block."""
+    reset(160, 120)
+    ball = mm.material("AmberGlass", base=(1, 1, 1), roughness=0.0, transmission=1.0, ior=1.5)
+    block = mm.material("BlueGlass", base=(1, 1, 1), roughness=0.15, transmission=1.0, ior=1.5)
+    extension_stage(ball, block)
+    path = os.path.join(out, "volume.glb")
+    mm.export_gltf(path)
+    patch_materials(path, {
+        "AmberGlass": {"KHR_materials_volume": {"thicknessFactor": 1.2,
+                                                "attenuationColor": [0.9, 0.45, 0.15],
+                                                "attenuationDistance": 0.4}},
+        "BlueGlass": {"KHR_materials_volume": {"thicknessFactor": 0.9,
+                                               "attenuationColor": [0.3, 0.6, 0.95],
+                                               "attenuationDistance": 0.5}}})
+    return {"volume.glb": sum(mm.triangles(o.data) for o in bpy.context.scene.objects
+                              if o.type == 'MESH')}
+
+
 def main():
     argv = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
-    makers = ("cornell", "street", "maps")
+    makers = ("cornell", "street", "maps", "volume")
     if len(argv) < 1 or any(a not in makers for a in argv[1:]):
         raise SystemExit("usage: blender -b --factory-startup --python scripts/make-path-scenes.py -- "
                          "OUTROOT [%s ...] (default: all)" % " ".join(makers))
@@ -422,6 +504,8 @@ def main():
     if "maps" in wanted:
         with tempfile.TemporaryDirectory() as tmp:
             tris.update(make_maps(scn, tmp, os.path.join(root, "tests", "models")))
+    if "volume" in wanted:
+        tris.update(make_volume(scn))
     for name, t in tris.items():
         print("TRIS %-28s blender-side triangles=%d" % (name, t))
         mm.summarise(os.path.join(scn, name), name)

@@ -21,6 +21,8 @@ why (docs/benchmarks.md, "PRT against Cycles"):
   - the pixel filter a box of one pixel (each pixel the mean over its own area);
   - a world of uniform grey --world (0.05: what PRT gives a model file without an
     environment), strength 1;
+  - KHR_materials_volume's absorption as glTF defines it (volumes_as_gltf: the importer's
+    mapping follows another law);
   - view transform Standard, look None, exposure 0, gamma 1, film exposure 1: the file holds
     the linear render itself, written by way of a 32-bit OpenEXR and read back.
 
@@ -29,6 +31,7 @@ bpy.ops.render.render alone (Blender's start-up, the import and the writing excl
 Exits non-zero with a message on bad input; the output is written whole or not at all.
 """
 import json
+import math
 import os
 import struct
 import sys
@@ -192,6 +195,35 @@ def configure(scene, a):
     return lights
 
 
+def volumes_as_gltf(doc):
+    """KHR_materials_volume as glTF defines it. Blender's importer gives a Volume Absorption
+    node colour c = attenuationColor and density 1 / attenuationDistance, which Cycles reads
+    as the absorption coefficient sigma = (1 - c) density; glTF's is sigma = -ln(c) / d
+    (Beer-Lambert: c is what is left after d). Each such node is set to the same sigma per
+    channel: density max(-ln c) / d and colour 1 - (-ln c) / (d density). Returns the
+    materials changed."""
+    changed = []
+    for m in doc.get("materials", []):
+        v = m.get("extensions", {}).get("KHR_materials_volume")
+        if v is None or not v.get("thicknessFactor", 0) > 0 or "attenuationDistance" not in v:
+            continue
+        material = bpy.data.materials.get(m.get("name", ""))
+        if material is None or not material.use_nodes:
+            continue
+        nodes = [n for n in material.node_tree.nodes if n.type == 'VOLUME_ABSORPTION']
+        if not nodes:
+            continue
+        d = float(v["attenuationDistance"])
+        sigma = [-math.log(max(c, 1e-30)) / d for c in v.get("attenuationColor", [1, 1, 1])]
+        density = max(sigma)
+        colour = [1 - s / density if density > 0 else 1.0 for s in sigma]
+        for n in nodes:
+            n.inputs["Color"].default_value = (*colour, 1.0)
+            n.inputs["Density"].default_value = density
+        changed.append(m.get("name", ""))
+    return changed
+
+
 def write_pfm(path, pixels, width, height):
     """pixels: Blender's RGBA floats, bottom row first, which is PFM's order too."""
     rgb = pixels.reshape(height, width, 4)[:, :, :3].astype("<f4")
@@ -216,6 +248,7 @@ def main():
     camera = choose_camera(doc, a.camera)
     scene.camera = camera
     lights = configure(scene, a)
+    volumes = volumes_as_gltf(doc)
 
     start = time.perf_counter()
     bpy.ops.render.render(write_still=False)
@@ -256,6 +289,8 @@ def main():
         },
         "lights": lights,
     }
+    if volumes:
+        report["volumes_as_gltf"] = volumes
     print("CYCLES_RESULT " + json.dumps(report, sort_keys=True))
     sys.stdout.flush()
 

@@ -53,6 +53,7 @@ SCENES = [
     ("blender-lights", "tests/models/blender-lights.glb", 160, 120, 512),
     ("street", "scenes/models/street.glb", 160, 120, 512),
     ("maps", "scenes/models/maps.glb", 160, 120, 512),
+    ("volume", "scenes/models/volume.glb", 160, 120, 512),
 ]
 
 

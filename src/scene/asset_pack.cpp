@@ -14,8 +14,9 @@ namespace prt {
 namespace {
 
 constexpr uint32_t kTag = 0x41545250;  // "PRTA"
-// 2: the rig; 3: the path tracer's surface; 4: the map; 5: data textures and tangents
-constexpr uint32_t kVersion = 5;
+// 2: the rig; 3: the path tracer's surface; 4: the map; 5: data textures and tangents;
+// 6: volumes
+constexpr uint32_t kVersion = 6;
 
 bool isShippedMeshBlock(const Object& object) {
   const auto* m = std::get_if<MeshShape>(&object.shape);
@@ -51,6 +52,11 @@ void putMaterial(ByteWriter& w, const Material& m, int32_t textureOffset) {
   putTextureRef(w, m.pbr.normalTexture, textureOffset);
   w.pod(m.pbr.normalScale);
   putTextureRef(w, m.pbr.transmissionTexture, textureOffset);
+  for (const double v : {m.pbr.attenuationColor.x, m.pbr.attenuationColor.y,
+                         m.pbr.attenuationColor.z, m.pbr.attenuationDistance}) {
+    w.pod(v);  // the distance may be infinite: clear
+  }
+  w.pod(static_cast<uint8_t>(m.pbr.thinWalled));
 }
 
 class Reader {
@@ -118,6 +124,15 @@ class Reader {
     p.normalScale = finite();
     if (!(p.normalScale >= -1e6 && p.normalScale <= 1e6)) in_.fail("a material no scene can hold");
     p.transmissionTexture = textureRef(textures);
+    for (double* f : {&p.attenuationColor.x, &p.attenuationColor.y, &p.attenuationColor.z}) {
+      *f = finite();
+      if (!unit(*f)) in_.fail("a material no scene can hold");
+    }
+    p.attenuationDistance = in_.pod<double>();
+    if (!(p.attenuationDistance > 0)) in_.fail("a material no scene can hold");
+    const auto thin = in_.pod<uint8_t>();
+    if (thin > 1) in_.fail("a material no scene can hold");
+    p.thinWalled = thin == 1;
     return m;
   }
 

@@ -141,11 +141,11 @@ TEST(GltfMaps, MapsAndTangentsTravelInTheAssetPack) {
   EXPECT_EQ(linear, 3u);
   // A pack of the previous version is refused, as any other.
   std::vector<uint8_t> old = assets;
-  const uint32_t four = 4;
-  std::memcpy(old.data() + 4, &four, sizeof four);
+  const uint32_t five = 5;
+  std::memcpy(old.data() + 4, &five, sizeof five);
   try {
     unpackAssets(old);
-    ADD_FAILURE() << "a pack of version 4 was read";
+    ADD_FAILURE() << "a pack of version 5 was read";
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find("not assets of this version"), std::string::npos) << e.what();
   }

@@ -344,6 +344,16 @@ const tinygltf::Value* extension(const tinygltf::ExtensionMap& map, const std::s
 Vec3 vec3(const std::vector<double>& v, const Vec3& fallback) {
   return v.size() >= 3 ? Vec3(v[0], v[1], v[2]) : fallback;
 }
+// An extension's array of three numbers (a colour); `fallback` when it is not one.
+Vec3 vec3(const tinygltf::Value& v, const std::string& key, const Vec3& fallback) {
+  if (!v.IsObject() || !v.Has(key)) return fallback;
+  const tinygltf::Value& a = v.Get(key);
+  if (!a.IsArray() || a.ArrayLen() != 3) return fallback;
+  for (int i = 0; i < 3; ++i) {
+    if (!a.Get(i).IsNumber()) return fallback;
+  }
+  return {a.Get(0).GetNumberAsDouble(), a.Get(1).GetNumberAsDouble(), a.Get(2).GetNumberAsDouble()};
+}
 double degrees(double radians) { return radians * 180.0 / std::numbers::pi; }
 
 class GltfReader {
@@ -930,6 +940,12 @@ class GltfReader {
         in.transmissionTexture = textureRef(textureInfo(*e, "transmissionTexture"), name, true);
       }
       if (const auto* e = extension(m->extensions, "KHR_materials_ior")) in.ior = number(*e, "ior", 1.5);
+      if (const auto* e = extension(m->extensions, "KHR_materials_volume")) {
+        in.volume = true;
+        in.thickness = number(*e, "thicknessFactor", 0);
+        in.attenuationColor = vec3(*e, "attenuationColor", Color(1));
+        in.attenuationDistance = number(*e, "attenuationDistance", in.attenuationDistance);
+      }
       if (extension(m->extensions, "KHR_materials_unlit")) in.unlit = true;
       if (const auto* e = extension(m->extensions, "KHR_materials_pbrSpecularGlossiness")) {
         specularGlossiness(*e, in, name);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 #include "scene/value_reader.h"
 
@@ -32,6 +33,12 @@ Color emissionOf(const Color& c) {
 double iorOf(double ior) { return std::isfinite(ior) ? std::clamp(ior, 1.0, 10.0) : 1.5; }
 double emissiveStrengthOf(double s) { return std::isfinite(s) ? std::max(0.0, s) : 1.0; }
 double normalScaleOf(double s) { return std::isfinite(s) ? std::clamp(s, -1e6, 1e6) : 1.0; }
+// glTF asks for a thickness of at least 0 and a distance above 0 (infinite by default); a
+// distance that is not (or is not a number) is taken as the default, clear.
+double thicknessOf(double t) { return t > 0 ? t : 0.0; }
+double attenuationDistanceOf(double d) {
+  return d > 0 ? d : std::numeric_limits<double>::infinity();
+}
 
 // The Phong exponent whose lobe is about as wide as a GGX lobe of this roughness: Blinn-Phong's
 // 2 / alpha^2 - 2 with alpha = roughness^2 (Walter et al. 2007), a quarter of it for Phong's
@@ -98,6 +105,15 @@ Material mapPbrMaterial(const PbrMaterialInputs& in) {
   m.pbr.normalTexture = in.normalTexture;
   m.pbr.normalScale = normalScaleOf(in.normalScale);
   m.pbr.transmissionTexture = in.transmissionTexture;
+  m.pbr.thinWalled = in.volume && thicknessOf(in.thickness) == 0;
+  if (in.volume && !m.pbr.thinWalled) {
+    m.pbr.attenuationColor = clamp01(in.attenuationColor);
+    m.pbr.attenuationDistance = attenuationDistanceOf(in.attenuationDistance);
+  }
+  if (m.pbr.thinWalled && m.transmissivity > 0) {  // the paper's renderer: through it unbent
+    m.ior = 1;
+    m.translucencyDegrees = 0;
+  }
   m.diffuse = (1 - metallic) * (1 - transmission) * cover;
   m.ambient = m.diffuse;
   m.specular *= cover;
@@ -130,6 +146,13 @@ std::vector<std::string> pbrValuesOutOfRange(const PbrMaterialInputs& in) {
   check("emission green", asked.y, taken.y);
   check("emission blue", asked.z, taken.z);
   check("normal scale", in.normalScale, normalScaleOf(in.normalScale));
+  if (in.volume) {
+    check("thickness", in.thickness, thicknessOf(in.thickness));
+    unit("attenuation colour red", in.attenuationColor.x);
+    unit("attenuation colour green", in.attenuationColor.y);
+    unit("attenuation colour blue", in.attenuationColor.z);
+    check("attenuation distance", in.attenuationDistance, attenuationDistanceOf(in.attenuationDistance));
+  }
   return out;
 }
 

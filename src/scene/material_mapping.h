@@ -7,6 +7,7 @@
 // listed in `unused` by its callers and reported as one warning.
 // Pure functions; thread-safe.
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -31,6 +32,13 @@ struct PbrMaterialInputs {
   TextureRef emissiveTexture;
   double transmission = 0;  // KHR_materials_transmission
   double ior = 1.5;         // KHR_materials_ior
+  // KHR_materials_volume: `volume` when the material has it. Thickness 0 (the extension's
+  // default) makes the glass thin-walled; light inside a thick one falls to the attenuation
+  // colour over the attenuation distance (world units; infinite: clear).
+  bool volume = false;
+  double thickness = 0;
+  Color attenuationColor{1, 1, 1};
+  double attenuationDistance = std::numeric_limits<double>::infinity();
   enum class AlphaMode { opaque, mask, blend } alphaMode = AlphaMode::opaque;
   double alphaCutoff = 0.5;
   bool unlit = false;  // KHR_materials_unlit

@@ -65,6 +65,38 @@ TEST(MaterialMapping, TransmissionIsGlassWithItsIndexAndFresnelReflection) {
   EXPECT_EQ(m.diffuse, 0);
 }
 
+// KHR_materials_volume: a thick glass keeps its index and absorbs inside; one of thickness 0
+// (the extension's default) is a thin wall, through which both renderers see unbent. Without
+// the extension, glass is solid and clear (as Blender renders it).
+TEST(MaterialMapping, VolumeIsAbsorptionInsideOrAThinWall) {
+  PbrMaterialInputs in;
+  in.metallic = 0;
+  in.roughness = 0;
+  in.transmission = 1;
+  in.ior = 1.45;
+  const Material clear = mapPbrMaterial(in);
+  EXPECT_FALSE(clear.pbr.thinWalled);
+  EXPECT_TRUE(std::isinf(clear.pbr.attenuationDistance));
+  in.volume = true;
+  in.thickness = 0.2;
+  in.attenuationColor = Color(0.9, 0.5, 0.1);
+  in.attenuationDistance = 2;
+  const Material thick = mapPbrMaterial(in);
+  expectLawful(thick);
+  EXPECT_FALSE(thick.pbr.thinWalled);
+  EXPECT_EQ(thick.pbr.attenuationColor, Color(0.9, 0.5, 0.1));
+  EXPECT_EQ(thick.pbr.attenuationDistance, 2);
+  EXPECT_EQ(thick.ior, 1.45);
+  EXPECT_TRUE(pbrValuesOutOfRange(in).empty());
+  in.thickness = 0;
+  const Material thin = mapPbrMaterial(in);
+  expectLawful(thin);
+  EXPECT_TRUE(thin.pbr.thinWalled);
+  EXPECT_TRUE(std::isinf(thin.pbr.attenuationDistance));
+  EXPECT_EQ(thin.ior, 1);
+  EXPECT_EQ(thin.pbr.ior, 1.45);  // its reflection's Fresnel
+}
+
 TEST(MaterialMapping, AlphaBlendsByTransmissionWithoutRefractionAndMasksCutOut) {
   PbrMaterialInputs in;
   in.metallic = 0;

@@ -3,6 +3,7 @@
 // is written, while surfaces list only the fields that differ from Material's defaults.
 
 #include <bit>
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <type_traits>
@@ -112,6 +113,13 @@ std::string surfaceFields(const Material& material) {
     out.number("transmission", pbr.transmission);
     out.number("specular_level", pbr.specularLevel);
     out.number("coverage", pbr.coverage);
+    if (!sameBits(pbr.attenuationColor, defaults.pbr.attenuationColor)) {
+      out.vector("attenuation_color", pbr.attenuationColor);
+    }
+    if (std::isfinite(pbr.attenuationDistance)) {
+      out.number("attenuation_distance", pbr.attenuationDistance);
+    }
+    if (pbr.thinWalled) out.raw(" thin_walled");
   }
   // `ior` above sets both indices; the path tracer's own is written when it differs from what
   // reading that back gives.

@@ -153,6 +153,11 @@ TEST(SceneWriter, RoundTripsThePathTracersSettingsAndSurfaces) {
   m.pbr.ior = 1.45;
   m.pbr.specularLevel = 0.1;
   m.pbr.coverage = 0.5;
+  m.pbr.attenuationColor = Color(0.7, 1.0 / 3.0, 0);
+  m.pbr.attenuationDistance = 0.125;
+  Material& wall = scene.objects[0].material;
+  wall.pbr.given = true;
+  wall.pbr.thinWalled = true;
   const Scene back = roundTrip(scene);
   expectSameScene(back, scene);
   EXPECT_EQ(back.environment.integrator, Integrator::path);

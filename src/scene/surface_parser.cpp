@@ -30,7 +30,8 @@ void readSurfaceBlock(TokenStream& in, const Token& keyword, const std::string& 
   BlockReader block(in, keyword, title,
                     {"color", "ambient", "diffuse", "specular", "phong", "reflect", "transmit",
                      "ior", "gloss", "translucency", "metallic", "emission", "base_color",
-                     "roughness", "transmission", "pbr_ior", "specular_level", "coverage"});
+                     "roughness", "transmission", "pbr_ior", "specular_level", "coverage",
+                     "attenuation_color", "attenuation_distance", "thin_walled"});
   const Range weight = Range::closed(0, 1);
   while (const Token* param = block.next()) {
     const std::string& name = param->text;
@@ -49,6 +50,15 @@ void readSurfaceBlock(TokenStream& in, const Token& keyword, const std::string& 
       material.pbr.given = true;
     } else if (name == "coverage") {
       material.pbr.coverage = readNumber(in, name, weight);
+      material.pbr.given = true;
+    } else if (name == "attenuation_color") {
+      material.pbr.attenuationColor = readVector(in, name, weight);
+      material.pbr.given = true;
+    } else if (name == "attenuation_distance") {
+      material.pbr.attenuationDistance = readNumber(in, name, Range::above(0));
+      material.pbr.given = true;
+    } else if (name == "thin_walled") {  // a flag: no value
+      material.pbr.thinWalled = true;
       material.pbr.given = true;
     } else if (name == "ambient") {
       material.ambient = readNumber(in, name, weight);

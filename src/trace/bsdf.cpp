@@ -95,7 +95,8 @@ Bsdf::Bsdf(const BsdfInputs& in, const Vec3& n, const Vec3& wo, bool outward) : 
   const double roughness = std::clamp(in_.roughness, 0.0, 1.0);
   alpha_ = std::max(roughness * roughness, 1e-3);
   const double ior = std::clamp(in_.ior, 1.0, 10.0);
-  eta_ = outward ? ior : 1 / ior;
+  // A thin wall has air on both sides: its Fresnel is the index's whichever side wo is on.
+  eta_ = outward || in_.thinWalled ? ior : 1 / ior;
   const double metallic = std::clamp(in_.metallic, 0.0, 1.0);
   const double transmission = std::clamp(in_.transmission, 0.0, 1.0);
   const Color dielectric(0.08 * std::clamp(in_.specularLevel, 0.0, 1.0));
@@ -143,6 +144,12 @@ Color Bsdf::glassEval(const Vec3& wi) const {
     const double r = fresnelDielectric(dot(wo_, m), eta_);
     return Color(glassW_ * r * ggxD(m, alpha_) * ggxG2(wo_, wi, alpha_) / (4 * cosO_));
   }
+  if (in_.thinWalled) {  // the reflection's lobe mirrored through the wall, (1 - F) of it
+    const Vec3 r(wi.x, wi.y, -wi.z);
+    const Vec3 m = normalize(r + wo_);
+    const double t = 1 - fresnelDielectric(dot(wo_, m), eta_);
+    return (glassW_ * t * ggxD(m, alpha_) * ggxG2(wo_, r, alpha_) / (4 * cosO_)) * in_.base;
+  }
   Vec3 m = normalize(eta_ * wi + wo_);
   if (m.z < 0) m = -m;
   const double im = dot(wi, m), om = dot(wo_, m);
@@ -161,6 +168,12 @@ double Bsdf::glassPdf(const Vec3& wi) const {
     const double om = dot(wo_, m);
     if (om <= 0) return 0;
     return ggxVisible(wo_, m, alpha_) / (4 * om) * fresnelDielectric(om, eta_);
+  }
+  if (in_.thinWalled) {
+    const Vec3 m = normalize(Vec3(wi.x, wi.y, -wi.z) + wo_);
+    const double om = dot(wo_, m);
+    if (om <= 0) return 0;
+    return ggxVisible(wo_, m, alpha_) / (4 * om) * (1 - fresnelDielectric(om, eta_));
   }
   Vec3 m = normalize(eta_ * wi + wo_);
   if (m.z < 0) m = -m;
@@ -211,12 +224,23 @@ bool Bsdf::sample(double u0, double u1, double u2, BsdfSample& out) const {
     const double om = dot(wo_, m);
     const double r = fresnelDielectric(om, eta_);
     Vec3 wt;
-    const bool reflects = u < r || !refractThrough(wo_, m, eta_, wt);
-    wi = reflects ? 2 * om * m - wo_ : wt;
+    bool reflects;
+    if (in_.thinWalled) {  // through the wall unbent: the reflection mirrored to the far side
+      reflects = u < r;
+      const Vec3 wr = 2 * om * m - wo_;
+      if (!reflects && wr.z <= 0) return false;
+      wi = reflects ? wr : Vec3(wr.x, wr.y, -wr.z);
+    } else {
+      reflects = u < r || !refractThrough(wo_, m, eta_, wt);
+      wi = reflects ? 2 * om * m - wo_ : wt;
+    }
     if (glassDelta_) {
       out.wi = toWorld(wi);
-      out.weight = reflects ? Color(glassW_ / glassP_)
-                            : (glassW_ / (glassP_ * eta_ * eta_)) * in_.base;
+      // Radiance is compressed by 1 / eta^2 entering a denser medium; a thin wall's far side
+      // is the near side's air.
+      out.weight = reflects          ? Color(glassW_ / glassP_)
+                   : in_.thinWalled ? (glassW_ / glassP_) * in_.base
+                                    : (glassW_ / (glassP_ * eta_ * eta_)) * in_.base;
       out.pdf = 0;
       out.delta = true;
       out.transmitted = !reflects;

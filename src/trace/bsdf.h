@@ -31,6 +31,9 @@ inline constexpr double kSmoothRoughness = 0.0316;
 struct BsdfInputs {
   Color base{0.8, 0.8, 0.8};
   double metallic = 0, roughness = 0.5, transmission = 0, ior = 1.5, specularLevel = 0.5;
+  // KHR_materials_volume's thickness 0: the glass is a thin wall (a soap bubble, a window
+  // pane), air on both sides: light passes it unbent, reflected by the index's Fresnel.
+  bool thinWalled = false;
 };
 
 struct BsdfSample {

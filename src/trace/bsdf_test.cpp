@@ -22,7 +22,9 @@ std::vector<Case> roughCases() {
           {"rough gold", {Color(1, 0.78, 0.34), 1, 0.3, 0, 1.5, 0.5}},
           {"rough white metal", {Color(1), 1, 0.6, 0, 1.5, 0.5}},
           {"frosted glass", {Color(1), 0, 0.4, 1, 1.5, 0.5}},
-          {"half-frosted tinted glass", {Color(0.9, 1, 0.9), 0, 0.25, 0.5, 1.33, 0.5}}};
+          {"half-frosted tinted glass", {Color(0.9, 1, 0.9), 0, 0.25, 0.5, 1.33, 0.5}},
+          {"frosted thin wall", {Color(1), 0, 0.4, 1, 1.5, 0.5, true}},
+          {"half-frosted tinted thin wall", {Color(0.9, 1, 0.9), 0, 0.25, 0.5, 1.33, 0.5, true}}};
 }
 
 Vec3 outgoing(double cosine) { return Vec3(std::sqrt(1 - cosine * cosine), 0, cosine); }
@@ -128,6 +130,30 @@ TEST(BsdfTest, SmoothSurfacesAreDeltasThatLoseNothing) {
   EXPECT_NEAR(s.weight.x, 1 / (1.5 * 1.5), 1e-12);
   // Snell: sin t = sin i / 1.5.
   EXPECT_NEAR(std::sqrt(1 - s.wi.z * s.wi.z), 0.8 / 1.5, 1e-12);
+}
+
+// A smooth thin wall (KHR_materials_volume's thickness 0) lets light through unbent and
+// uncompressed, tinted by the base colour, and reflects the index's Fresnel share, from
+// either side alike: no total internal reflection, since both sides are air.
+TEST(BsdfTest, ASmoothThinWallPassesLightUnbent) {
+  const Color tint(0.9, 0.5, 0.2);
+  for (const bool outward : {true, false}) {
+    const Bsdf wall({tint, 0, 0, 1, 1.5, 0.5, true}, Vec3(0, 0, 1), outgoing(0.2), outward);
+    EXPECT_FALSE(wall.hasSmoothLobe());
+    const double r = fresnelDielectric(0.2, 1.5);
+    BsdfSample s;
+    ASSERT_TRUE(wall.sample(r + (1 - r) * 0.5, 0.5, 0.5, s));
+    EXPECT_TRUE(s.delta);
+    EXPECT_TRUE(s.transmitted);
+    const Vec3 straight = -outgoing(0.2);
+    EXPECT_NEAR(s.wi.x, straight.x, 1e-15);
+    EXPECT_NEAR(s.wi.z, straight.z, 1e-15);
+    EXPECT_NEAR(s.weight.x, tint.x, 1e-12);
+    EXPECT_NEAR(s.weight.z, tint.z, 1e-12);
+    ASSERT_TRUE(wall.sample(r * 0.5, 0.5, 0.5, s));
+    EXPECT_FALSE(s.transmitted);
+    EXPECT_NEAR(s.weight.x, 1.0, 1e-12);
+  }
 }
 
 TEST(BsdfTest, FresnelOfAnIndexOfOnePointFiveAtNormalIncidenceIsFourPerCent) {

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "core/portable_math.h"
 #include "trace/normal_map.h"
 
 namespace prt {
@@ -32,6 +33,20 @@ Color lookUp(const Scene& scene, const TextureRef& ref, const SurfaceAttributes&
 constexpr int kMostPassThroughs = 64;
 // Bounces after which Russian roulette may end a path.
 constexpr int kRouletteAfter = 3;
+
+// Beer and Lambert's coefficient per unit length: what falls to `color` over `distance`
+// (glTF's KHR_materials_volume: sigma = -ln(c) / d); a channel of colour 0 absorbs all.
+Color absorptionOf(const Color& color, double distance) {
+  auto sigma = [&](double c) {
+    return c > 0 ? -logPositive(std::min(c, 1.0)) / distance : std::numeric_limits<double>::infinity();
+  };
+  return {sigma(color.x), sigma(color.y), sigma(color.z)};
+}
+
+// What of the light is left after `t` through a medium of coefficients `sigma`.
+Color transmittance(const Color& sigma, double t) {
+  return {expOf(-sigma.x * t), expOf(-sigma.y * t), expOf(-sigma.z * t)};
+}
 
 }  // namespace
 
@@ -67,6 +82,11 @@ PathTracer::PathTracer(const World& world)
     s.bsdf.ior = p.ior;
     s.bsdf.specularLevel = p.specularLevel;
     s.coverage = p.coverage;
+    s.bsdf.thinWalled = p.thinWalled;
+    if (m.pbr.given && !p.thinWalled && p.transmission > 0 && std::isfinite(p.attenuationDistance)) {
+      s.absorption = absorptionOf(p.attenuationColor, p.attenuationDistance);
+      s.absorbs = maxComponent(s.absorption) > 0;
+    }
     const TriangleMesh* mesh = meshOf(o);
     const bool textured = m.colorTexture.texture >= 0 || m.emissionTexture.texture >= 0;
     const bool uvs = mesh != nullptr && !mesh->uvs.empty();
@@ -136,6 +156,10 @@ Color PathTracer::radiance(const Ray& cameraRay, const std::span<const uint32_t>
     Rng draws = rng.child(vertex);
     const Material& m = world_.material(hit.object);
     const Surface& surface = surfaces_[hit.object];
+    if (surface.absorbs && dot(ray.direction, hit.normal) > 0 && hit.t > 0) {
+      throughput = throughput * transmittance(surface.absorption, hit.t);  // through its inside
+      if (!(maxComponent(throughput) > 0)) break;
+    }
     const double eps = surfaceEpsilon(hit.point);
     if (surface.coverage < 1 && draws.uniform() >= surface.coverage) {
       // The transparent part: on along the same ray, no bounce taken.

@@ -20,6 +20,12 @@
 // ends the path and a light on the other side of the surface than of the tilted normal
 // lights nothing.
 //
+// Volumes (KHR_materials_volume): a path that meets a refracting surface from inside has
+// travelled through that object's medium, and its throughput is multiplied by the medium's
+// transmittance over the distance, exp(-sigma t) per channel. The medium is known by the
+// surface that ends the segment, which is exact for closed objects that do not nest or
+// overlap (a glass in a glass counts only the inner one's absorption inside both).
+//
 // Shadow rays are stopped by any surface but the transparent part of one (coverage < 1): the
 // glass of a path-traced scene lets light through by refraction alone, as a real one does.
 // Random numbers: one counter-based stream per sample (core/rng.h), a child stream per bounce,
@@ -65,6 +71,11 @@ class PathTracer {
     // glTF's data textures in use (the mesh has texture coordinates; and tangents for the
     // normal map).
     bool metallicRoughnessMap = false, transmissionMap = false, normalMap = false;
+    // KHR_materials_volume: the inside's absorption coefficient per unit length (Beer and
+    // Lambert: sigma = -ln(attenuation colour) / attenuation distance), applied to the path
+    // segment that ends on the surface from inside; `absorbs` when any is above 0.
+    Color absorption;
+    bool absorbs = false;
   };
   // Whether anything opaque lies between `origin` and `distance` along `direction`; returns the
   // share of light that gets through the transparent parts of what lies between.

@@ -44,7 +44,9 @@ double meanOfImage(const Image& image) {
 // disappears. A clear glass and a smooth white metal are deltas that lose nothing, so every
 // pixel is 1 up to rounding (and up to paths longer than max_bounces, which end black).
 TEST(PathTracerTest, WhiteFurnaceLosslessBallsVanish) {
-  for (const Material& m : {pbr(Color(1), 1, 0, 0), pbr(Color(1), 0, 0, 1)}) {
+  Material wall = pbr(Color(1), 0, 0, 1);
+  wall.pbr.thinWalled = true;
+  for (const Material& m : {pbr(Color(1), 1, 0, 0), pbr(Color(1), 0, 0, 1), wall}) {
     const World world(furnace(m));
     const Renderer renderer(world, RenderSettings{4, 1});
     const Image image = renderImage(renderer, 1);
@@ -65,13 +67,44 @@ TEST(PathTracerTest, WhiteFurnaceLosslessBallsVanish) {
 // light that would bounce between microfacets), a few per cent at these roughnesses: the
 // image stays within that of the environment and never above it.
 TEST(PathTracerTest, WhiteFurnaceRoughBallsLoseLittleAndGainNothing) {
-  for (const Material& m : {pbr(Color(1), 1, 0.3, 0), pbr(Color(1), 0, 0.3, 1)}) {
+  Material wall = pbr(Color(1), 0, 0.3, 1);
+  wall.pbr.thinWalled = true;
+  for (const Material& m : {pbr(Color(1), 1, 0.3, 0), pbr(Color(1), 0, 0.3, 1), wall}) {
     const World world(furnace(m));
     const Renderer renderer(world, RenderSettings{64, 1});
     const double mean = meanOfImage(renderImage(renderer, 2));
     EXPECT_LT(mean, 1.01);
     EXPECT_GT(mean, 0.93);
   }
+}
+
+// Beer and Lambert (KHR_materials_volume): a ray through the middle of a clear ball of index
+// 1 (no Fresnel reflection, no bending) travels its diameter inside and keeps
+// attenuationColor^(diameter / attenuationDistance) of the environment, per channel; a
+// thin-walled ball of the same medium has no inside and absorbs nothing.
+TEST(PathTracerTest, AVolumeAbsorbsAlongThePathInsideByBeerLambert) {
+  Material glass = pbr(Color(1), 0, 0, 1);
+  glass.pbr.ior = 1;
+  glass.pbr.attenuationColor = Color(0.5, 0.25, 1);
+  glass.pbr.attenuationDistance = 1;
+  for (const bool thin : {false, true}) {
+    glass.pbr.thinWalled = thin;
+    const World world(furnace(glass));
+    const PathTracer tracer(world);
+    uint64_t rays = 0;
+    const Color c = tracer.radiance(Ray{Vec3(0, 0, -4), Vec3(0, 0, 1)}, nullptr, Rng(5), rays);
+    const Color expected = thin ? Color(1) : Color(0.25, 0.0625, 1);  // 2 units inside
+    EXPECT_NEAR(c.x, expected.x, 1e-6) << thin;
+    EXPECT_NEAR(c.y, expected.y, 1e-6) << thin;
+    EXPECT_NEAR(c.z, expected.z, 1e-6) << thin;
+  }
+  // An absorbing glass in the furnace gives back less than the environment, never more.
+  glass.pbr.ior = 1.5;
+  glass.pbr.thinWalled = false;
+  const World world(furnace(glass));
+  const double mean = meanOfImage(renderImage(Renderer(world, RenderSettings{16, 1}), 2));
+  EXPECT_LT(mean, 0.9);
+  EXPECT_GT(mean, 0.2);
 }
 
 // A map of uniform radiance 1 is the world colour 1 by another road: next-event estimation

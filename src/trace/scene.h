@@ -3,6 +3,7 @@
 // sent to workers. No acceleration structures here: trace/ builds those from it.
 // Units: world units for positions and sizes, degrees for angles, linear RGB for colours.
 
+#include <limits>
 #include <memory>
 #include <string>
 #include <variant>
@@ -84,6 +85,13 @@ struct PbrSurface {
   TextureRef normalTexture;
   double normalScale = 1;  // in [-1e6, 1e6]
   TextureRef transmissionTexture;
+  // KHR_materials_volume: light inside a refracting object is absorbed by Beer and Lambert's
+  // law, falling to `attenuationColor` over `attenuationDistance` (world units; infinite:
+  // clear). A thin-walled glass (the extension's thickness 0) has no inside: light passes it
+  // unbent and unabsorbed.
+  Color attenuationColor{1, 1, 1};  // in [0, 1]
+  double attenuationDistance = std::numeric_limits<double>::infinity();  // > 0
+  bool thinWalled = false;
   bool operator==(const PbrSurface&) const = default;
 };
 
