@@ -19,6 +19,10 @@
   scenes/models/volume.glb             KHR_materials_volume: an amber glass ball and a blue
                                        glass block that absorb inside (the extension written
                                        into the exported file's JSON)
+  scenes/models/specular.glb           KHR_materials_specular: a glossy red ball reflecting
+                                       three times the default, a teal block a quarter of it
+  scenes/models/clearcoat.glb          KHR_materials_clearcoat: a red ball under a glossy coat,
+                                       a blue block under a smooth one
   tests/models/blender-tangents.glb    the normal-mapped ball alone, with the tangents Blender
                                        computes (MikkTSpace) written as TANGENT
 
@@ -26,7 +30,8 @@ Command (Blender 3.4.1 from Debian 12, whose glTF add-on also needs python3-nump
 
     blender -b --factory-startup --python scripts/make-path-scenes.py -- /work/main [maps ...]
 
-(the names after the root pick some of cornell, street, maps and volume; default all).
+(the names after the root pick some of cornell, street, maps, volume, specular and
+clearcoat; default all).
 
 Deterministic: every position, colour and strength is written here, the props are the
 committed files (scripts/make-models.py makes them), and the helpers are make-models.py's.
@@ -443,9 +448,10 @@ def patch_materials(path, extensions):
         f.write(out)
 
 
-def extension_stage(a, b):
+def extension_stage(a, b, lift=0.0):
     """The room of the extension scenes and its lights (after reset(160, 120), which the
-    materials a and b follow); a goes on a ball (left), b on a block (right)."""
+    materials a and b follow); a goes on a ball (left), b on a block (right) `lift` above the
+    floor."""
     floor = mm.material("Floor", base=(0.6, 0.55, 0.5), roughness=0.6)
     wall = mm.material("Wall", base=(0.3, 0.45, 0.7), roughness=0.8)
     bf = mm.Builder()
@@ -459,7 +465,7 @@ def extension_stage(a, b):
     mm.obj("Ball", bs.mesh("Ball", smooth=True), loc=(-0.75, 0.3, 0.6), mats=[a])
     bb = mm.Builder()
     bb.box((-0.45, -0.45, 0.0), (0.45, 0.45, 0.9), mat=0)
-    mm.obj("Block", bb.mesh("Block"), loc=(0.8, 0.2, 0.0), rot=(0, 0, 25), mats=[b])
+    mm.obj("Block", bb.mesh("Block"), loc=(0.8, 0.2, lift), rot=(0, 0, 25), mats=[b])
     perspective_camera("Camera", (0, -3.6, 1.9), (0, 0.3, 0.5), 40.0)
     sun = mm.light("Sun", 'SUN', 3.0, (0, 0, 5), colour=(1.0, 0.96, 0.9))
     mm.look_at(sun, (1.2, 2.5, 0))
@@ -467,12 +473,16 @@ def extension_stage(a, b):
 
 
 def make_volume(out):
-    """scenes/models/volume.glb: KHR_materials_volume, two absorbing glasses (thick: Blender
-    has no thin-walled glass to compare with), a smooth ball and a rough block."""
+    """scenes/models/volume.glb: KHR_materials_volume, two smooth absorbing glasses (thick:
+    Blender has no thin-walled glass to compare with), a ball and a block 2 mm above the floor
+    (standing on it, the block's bottom and the floor are one plane, and which of them a ray
+    meets first is the renderer's guess: Cycles' and PRT's differ). Smooth, so that the check
+    is of the absorption: a rough glass block differs from Cycles' by itself (22 dB at 80 x 60
+    without the extension)."""
     reset(160, 120)
     ball = mm.material("AmberGlass", base=(1, 1, 1), roughness=0.0, transmission=1.0, ior=1.5)
-    block = mm.material("BlueGlass", base=(1, 1, 1), roughness=0.15, transmission=1.0, ior=1.5)
-    extension_stage(ball, block)
+    block = mm.material("BlueGlass", base=(1, 1, 1), roughness=0.0, transmission=1.0, ior=1.5)
+    extension_stage(ball, block, lift=0.002)
     path = os.path.join(out, "volume.glb")
     mm.export_gltf(path)
     patch_materials(path, {
@@ -486,9 +496,48 @@ def make_volume(out):
                               if o.type == 'MESH')}
 
 
+def make_specular(out):
+    """scenes/models/specular.glb: KHR_materials_specular on two dark dielectrics, a glossy
+    ball reflecting three times glTF's default (specularColorFactor 3: F0 0.12) and a rougher
+    block a quarter of it (0.25: F0 0.01). Grey colours and a factor of 1: Blender's importer
+    turns the extension into the Principled BSDF's Specular (the colour's luminance times the
+    index's F0 over 0.08) and Specular Tint, and leaves the factor out."""
+    reset(160, 120)
+    ball = mm.material("ShinyRed", base=(0.3, 0.05, 0.05), roughness=0.15)
+    block = mm.material("DullTeal", base=(0.05, 0.2, 0.3), roughness=0.3)
+    extension_stage(ball, block)
+    path = os.path.join(out, "specular.glb")
+    mm.export_gltf(path)
+    patch_materials(path, {
+        "ShinyRed": {"KHR_materials_specular": {"specularFactor": 1.0,
+                                                "specularColorFactor": [3.0, 3.0, 3.0]}},
+        "DullTeal": {"KHR_materials_specular": {"specularFactor": 1.0,
+                                                "specularColorFactor": [0.25, 0.25, 0.25]}}})
+    return {"specular.glb": sum(mm.triangles(o.data) for o in bpy.context.scene.objects
+                                if o.type == 'MESH')}
+
+
+def make_clearcoat(out):
+    """scenes/models/clearcoat.glb: KHR_materials_clearcoat, a rough red ball under a glossy
+    coat (roughness 0.2) and a dull blue block under a smooth one, a mirror-like varnish."""
+    reset(160, 120)
+    ball = mm.material("CoatedRed", base=(0.5, 0.05, 0.05), roughness=0.6)
+    block = mm.material("VarnishedBlue", base=(0.05, 0.1, 0.3), roughness=0.8)
+    extension_stage(ball, block)
+    path = os.path.join(out, "clearcoat.glb")
+    mm.export_gltf(path)
+    patch_materials(path, {
+        "CoatedRed": {"KHR_materials_clearcoat": {"clearcoatFactor": 1.0,
+                                                  "clearcoatRoughnessFactor": 0.2}},
+        "VarnishedBlue": {"KHR_materials_clearcoat": {"clearcoatFactor": 1.0,
+                                                      "clearcoatRoughnessFactor": 0.0}}})
+    return {"clearcoat.glb": sum(mm.triangles(o.data) for o in bpy.context.scene.objects
+                                 if o.type == 'MESH')}
+
+
 def main():
     argv = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
-    makers = ("cornell", "street", "maps", "volume")
+    makers = ("cornell", "street", "maps", "volume", "specular", "clearcoat")
     if len(argv) < 1 or any(a not in makers for a in argv[1:]):
         raise SystemExit("usage: blender -b --factory-startup --python scripts/make-path-scenes.py -- "
                          "OUTROOT [%s ...] (default: all)" % " ".join(makers))
@@ -506,6 +555,10 @@ def main():
             tris.update(make_maps(scn, tmp, os.path.join(root, "tests", "models")))
     if "volume" in wanted:
         tris.update(make_volume(scn))
+    if "specular" in wanted:
+        tris.update(make_specular(scn))
+    if "clearcoat" in wanted:
+        tris.update(make_clearcoat(scn))
     for name, t in tris.items():
         print("TRIS %-28s blender-side triangles=%d" % (name, t))
         mm.summarise(os.path.join(scn, name), name)

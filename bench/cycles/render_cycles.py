@@ -21,8 +21,8 @@ why (docs/benchmarks.md, "PRT against Cycles"):
   - the pixel filter a box of one pixel (each pixel the mean over its own area);
   - a world of uniform grey --world (0.05: what PRT gives a model file without an
     environment), strength 1;
-  - KHR_materials_volume's absorption as glTF defines it (volumes_as_gltf: the importer's
-    mapping follows another law);
+  - KHR_materials_volume's absorption and KHR_materials_clearcoat's layer as glTF defines
+    them (volumes_as_gltf, clearcoats_as_gltf: the importer maps them onto other models);
   - view transform Standard, look None, exposure 0, gamma 1, film exposure 1: the file holds
     the linear render itself, written by way of a 32-bit OpenEXR and read back.
 
@@ -224,6 +224,53 @@ def volumes_as_gltf(doc):
     return changed
 
 
+def clearcoats_as_gltf(doc):
+    """KHR_materials_clearcoat as glTF defines it: the base attenuated by 1 - clearcoat Fc and
+    a GGX reflection of the coat's roughness, with no Fresnel factor of its own, weighted by
+    clearcoat Fc, where Fc = 0.04 + 0.96 (1 - |N.V|)^5. Blender's importer gives the factor to
+    the Principled BSDF's Clearcoat, Disney's coat (a GTR1 lobe at a quarter of the weight,
+    the base not attenuated), another model. Each such material's Principled Clearcoat is
+    set to 0 and its output mixed with a Glossy BSDF (GGX) by a Mix Shader whose factor is
+    clearcoat Fc, computed from a Layer Weight node's Facing (1 - |N.V| at blend 0.5).
+    Returns the materials changed."""
+    changed = []
+    for m in doc.get("materials", []):
+        c = m.get("extensions", {}).get("KHR_materials_clearcoat")
+        if c is None or not c.get("clearcoatFactor", 0) > 0:
+            continue
+        material = bpy.data.materials.get(m.get("name", ""))
+        if material is None or not material.use_nodes:
+            continue
+        nt = material.node_tree
+        principled = [n for n in nt.nodes if n.type == 'BSDF_PRINCIPLED']
+        outputs = [n for n in nt.nodes if n.type == 'OUTPUT_MATERIAL']
+        if len(principled) != 1 or not outputs:
+            fail("material %r: no single Principled BSDF to coat" % m.get("name"))
+        bsdf, output = principled[0], outputs[0]
+        bsdf.inputs["Clearcoat"].default_value = 0.0
+        glossy = nt.nodes.new("ShaderNodeBsdfGlossy")
+        glossy.distribution = 'GGX'
+        glossy.inputs["Color"].default_value = (1.0, 1.0, 1.0, 1.0)
+        glossy.inputs["Roughness"].default_value = float(c.get("clearcoatRoughnessFactor", 0))
+        layer = nt.nodes.new("ShaderNodeLayerWeight")
+        layer.inputs["Blend"].default_value = 0.5
+        value = layer.outputs["Facing"]
+        for operation, operand in (('POWER', 5.0), ('MULTIPLY', 0.96), ('ADD', 0.04),
+                                   ('MULTIPLY', float(c["clearcoatFactor"]))):
+            node = nt.nodes.new("ShaderNodeMath")
+            node.operation = operation
+            nt.links.new(value, node.inputs[0])
+            node.inputs[1].default_value = operand
+            value = node.outputs[0]
+        mix = nt.nodes.new("ShaderNodeMixShader")
+        nt.links.new(value, mix.inputs["Fac"])
+        nt.links.new(bsdf.outputs["BSDF"], mix.inputs[1])
+        nt.links.new(glossy.outputs["BSDF"], mix.inputs[2])
+        nt.links.new(mix.outputs["Shader"], output.inputs["Surface"])
+        changed.append(m.get("name", ""))
+    return changed
+
+
 def write_pfm(path, pixels, width, height):
     """pixels: Blender's RGBA floats, bottom row first, which is PFM's order too."""
     rgb = pixels.reshape(height, width, 4)[:, :, :3].astype("<f4")
@@ -249,6 +296,7 @@ def main():
     scene.camera = camera
     lights = configure(scene, a)
     volumes = volumes_as_gltf(doc)
+    clearcoats = clearcoats_as_gltf(doc)
 
     start = time.perf_counter()
     bpy.ops.render.render(write_still=False)
@@ -291,6 +339,8 @@ def main():
     }
     if volumes:
         report["volumes_as_gltf"] = volumes
+    if clearcoats:
+        report["clearcoats_as_gltf"] = clearcoats
     print("CYCLES_RESULT " + json.dumps(report, sort_keys=True))
     sys.stdout.flush()
 

@@ -54,6 +54,8 @@ SCENES = [
     ("street", "scenes/models/street.glb", 160, 120, 512),
     ("maps", "scenes/models/maps.glb", 160, 120, 512),
     ("volume", "scenes/models/volume.glb", 160, 120, 512),
+    ("specular", "scenes/models/specular.glb", 160, 120, 512),
+    ("clearcoat", "scenes/models/clearcoat.glb", 160, 120, 512),
 ]
 
 

@@ -9,13 +9,14 @@
 #include "core/byte_codec.h"
 #include "image/image.h"
 #include "scene/rig_pack.h"
+#include "trace/bsdf.h"
 
 namespace prt {
 namespace {
 
 constexpr uint32_t kTag = 0x41545250;  // "PRTA"
 // 2: the rig; 3: the path tracer's surface; 4: the map; 5: data textures and tangents;
-// 6: volumes
+// 6: volumes, KHR_materials_specular and _clearcoat
 constexpr uint32_t kVersion = 6;
 
 bool isShippedMeshBlock(const Object& object) {
@@ -57,6 +58,10 @@ void putMaterial(ByteWriter& w, const Material& m, int32_t textureOffset) {
     w.pod(v);  // the distance may be infinite: clear
   }
   w.pod(static_cast<uint8_t>(m.pbr.thinWalled));
+  for (const double v : {m.pbr.specularWeight, m.pbr.specularColor.x, m.pbr.specularColor.y,
+                         m.pbr.specularColor.z, m.pbr.clearcoat, m.pbr.clearcoatRoughness}) {
+    w.pod(v);
+  }
 }
 
 class Reader {
@@ -116,7 +121,7 @@ class Reader {
     }
     auto unit = [](double v) { return v >= 0 && v <= 1; };
     if (!unit(p.roughness) || !unit(p.transmission) || !(p.ior >= 1 && p.ior <= 10) ||
-        !unit(p.specularLevel) || !unit(p.coverage)) {
+        !(p.specularLevel >= 0 && p.specularLevel <= kMaxSpecularLevel) || !unit(p.coverage)) {
       in_.fail("a material no scene can hold");
     }
     p.metallicRoughnessTexture = textureRef(textures);
@@ -133,6 +138,15 @@ class Reader {
     const auto thin = in_.pod<uint8_t>();
     if (thin > 1) in_.fail("a material no scene can hold");
     p.thinWalled = thin == 1;
+    p.specularWeight = finite();
+    if (!unit(p.specularWeight)) in_.fail("a material no scene can hold");
+    for (double* f : {&p.specularColor.x, &p.specularColor.y, &p.specularColor.z}) {
+      *f = finite();
+      if (!(*f >= 0 && *f <= 1e6)) in_.fail("a material no scene can hold");
+    }
+    p.clearcoat = finite();
+    p.clearcoatRoughness = finite();
+    if (!unit(p.clearcoat) || !unit(p.clearcoatRoughness)) in_.fail("a material no scene can hold");
     return m;
   }
 

@@ -1,5 +1,5 @@
 // glTF's material extensions beyond the core model, read into the path tracer's surface
-// (trace/scene.h's PbrSurface): KHR_materials_volume. Each is checked on Blender's cube
+// (trace/scene.h's PbrSurface): KHR_materials_volume, _specular and _clearcoat. Each is checked on Blender's cube
 // (tests/models/blender-cube.gltf) with the extension written into its material, for the
 // values taken, the out-of-range warning, and the trip to a worker (scene text and asset pack).
 
@@ -28,13 +28,17 @@ const fs::path kCube = fs::path(PRT_SOURCE_DIR) / "tests" / "models" / "blender-
 // buffer and image as data: URIs).
 class CubeWithExtensions {
  public:
-  explicit CubeWithExtensions(const nlohmann::json& extensions) {
+  // `extensionsJson`: the material's "extensions" object, as JSON text.
+  explicit CubeWithExtensions(const std::string& extensionsJson) {
+    const nlohmann::json extensions = nlohmann::json::parse(extensionsJson);
     nlohmann::json doc;
     std::ifstream(kCube) >> doc;
     nlohmann::json& material = doc["materials"][0];
     material["extensions"] = extensions;
     for (const auto& [name, value] : extensions.items()) doc["extensionsUsed"].push_back(name);
-    path_ = fs::temp_directory_path() / ("prt-extensions-" + std::to_string(::getpid()) + ".gltf");
+    static int made = 0;
+    path_ = fs::temp_directory_path() / ("prt-extensions-" + std::to_string(::getpid()) + "-" +
+                                         std::to_string(++made) + ".gltf");
     std::ofstream(path_) << doc.dump();
   }
   ~CubeWithExtensions() {
@@ -74,11 +78,9 @@ void expectSameOnAWorker(const std::string& file) {
 }
 
 TEST(GltfMaterialExtensions, VolumeAbsorbsInsideAThickGlass) {
-  const CubeWithExtensions cube({{"KHR_materials_transmission", {{"transmissionFactor", 1}}},
-                                 {"KHR_materials_volume",
-                                  {{"thicknessFactor", 0.5},
-                                   {"attenuationColor", {0.8, 0.5, 0.25}},
-                                   {"attenuationDistance", 0.3}}}});
+  const CubeWithExtensions cube(R"({"KHR_materials_transmission": {"transmissionFactor": 1},
+      "KHR_materials_volume": {"thicknessFactor": 0.5, "attenuationColor": [0.8, 0.5, 0.25],
+                               "attenuationDistance": 0.3}})");
   const ImportedModel model = cube.read();
   const PbrSurface& p = surfaceOf(model);
   EXPECT_FALSE(p.thinWalled);
@@ -91,10 +93,8 @@ TEST(GltfMaterialExtensions, VolumeAbsorbsInsideAThickGlass) {
 // The extension's thickness is 0 unless given: a thin wall, which neither bends light (the
 // paper's renderer too: an index of 1) nor absorbs it.
 TEST(GltfMaterialExtensions, VolumeOfThicknessZeroIsAThinWall) {
-  const CubeWithExtensions cube({{"KHR_materials_transmission", {{"transmissionFactor", 1}}},
-                                 {"KHR_materials_volume",
-                                  {{"attenuationColor", {0.8, 0.5, 0.25}},
-                                   {"attenuationDistance", 0.3}}}});
+  const CubeWithExtensions cube(R"({"KHR_materials_transmission": {"transmissionFactor": 1},
+      "KHR_materials_volume": {"attenuationColor": [0.8, 0.5, 0.25], "attenuationDistance": 0.3}})");
   const ImportedModel model = cube.read();
   const Material& m = model.objects.at(0).material;
   EXPECT_TRUE(m.pbr.thinWalled);
@@ -106,11 +106,9 @@ TEST(GltfMaterialExtensions, VolumeOfThicknessZeroIsAThinWall) {
 
 // Values out of range are clamped as the others are, and named in the one warning.
 TEST(GltfMaterialExtensions, VolumeValuesOutOfRangeAreClampedAndNamed) {
-  const CubeWithExtensions cube({{"KHR_materials_transmission", {{"transmissionFactor", 1}}},
-                                 {"KHR_materials_volume",
-                                  {{"thicknessFactor", -2},
-                                   {"attenuationColor", {1.5, 0.5, -1}},
-                                   {"attenuationDistance", 0}}}});
+  const CubeWithExtensions cube(R"({"KHR_materials_transmission": {"transmissionFactor": 1},
+      "KHR_materials_volume": {"thicknessFactor": -2, "attenuationColor": [1.5, 0.5, -1],
+                               "attenuationDistance": 0}})");
   const ImportedModel model = cube.read();
   const std::string line = outOfRange(model);
   EXPECT_NE(line.find("'CubeGrid': thickness -2 (taken as 0)"), std::string::npos) << line;
@@ -118,6 +116,45 @@ TEST(GltfMaterialExtensions, VolumeValuesOutOfRangeAreClampedAndNamed) {
   EXPECT_NE(line.find("'CubeGrid': attenuation colour blue -1 (taken as 0)"), std::string::npos) << line;
   EXPECT_NE(line.find("'CubeGrid': attenuation distance 0 (taken as inf)"), std::string::npos) << line;
   EXPECT_TRUE(surfaceOf(model).thinWalled);
+}
+
+// KHR_materials_specular: the dielectric's F0 from the index (1.7 here) times the colour, and
+// the factor; the paper's renderer reflects the luminance of that.
+TEST(GltfMaterialExtensions, SpecularScalesAndColoursTheDielectricsReflection) {
+  const CubeWithExtensions cube(R"({"KHR_materials_ior": {"ior": 1.7},
+      "KHR_materials_specular": {"specularFactor": 0.5, "specularColorFactor": [1, 0.5, 2]}})");
+  const ImportedModel model = cube.read();
+  const PbrSurface& p = surfaceOf(model);
+  const double f0 = std::pow(0.7 / 2.7, 2);
+  EXPECT_NEAR(p.specularLevel, f0 / 0.08, 1e-12);
+  EXPECT_EQ(p.specularWeight, 0.5);
+  EXPECT_EQ(p.specularColor, Color(1, 0.5, 2));
+  EXPECT_EQ(outOfRange(model), "");
+  expectSameOnAWorker(cube.path());
+  // Out of range: clamped and named.
+  const CubeWithExtensions wrong(
+      R"({"KHR_materials_specular": {"specularFactor": 3, "specularColorFactor": [-1, 0.5, 2]}})");
+  const ImportedModel clamped = wrong.read();
+  const std::string line = outOfRange(clamped);
+  EXPECT_NE(line.find("'CubeGrid': specular factor 3 (taken as 1)"), std::string::npos) << line;
+  EXPECT_NE(line.find("'CubeGrid': specular colour red -1 (taken as 0)"), std::string::npos) << line;
+  EXPECT_EQ(surfaceOf(clamped).specularWeight, 1.0);
+}
+
+TEST(GltfMaterialExtensions, ClearcoatIsReadWithItsRoughness) {
+  const CubeWithExtensions cube(
+      R"({"KHR_materials_clearcoat": {"clearcoatFactor": 0.8, "clearcoatRoughnessFactor": 0.15}})");
+  const ImportedModel model = cube.read();
+  EXPECT_EQ(surfaceOf(model).clearcoat, 0.8);
+  EXPECT_EQ(surfaceOf(model).clearcoatRoughness, 0.15);
+  EXPECT_EQ(outOfRange(model), "");
+  expectSameOnAWorker(cube.path());
+  const CubeWithExtensions wrong(
+      R"({"KHR_materials_clearcoat": {"clearcoatFactor": 2, "clearcoatRoughnessFactor": -1}})");
+  const ImportedModel clamped = wrong.read();
+  const std::string line = outOfRange(clamped);
+  EXPECT_NE(line.find("'CubeGrid': clearcoat 2 (taken as 1)"), std::string::npos) << line;
+  EXPECT_NE(line.find("'CubeGrid': clearcoat roughness -1 (taken as 0)"), std::string::npos) << line;
 }
 
 }  // namespace

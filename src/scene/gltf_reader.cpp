@@ -469,7 +469,8 @@ class GltfReader {
     static const std::set<std::string> kUnderstood = {
         "KHR_lights_punctual",       "KHR_materials_emissive_strength", "KHR_materials_ior",
         "KHR_materials_transmission", "KHR_materials_unlit",            "KHR_materials_volume",
-        "KHR_texture_transform",     "KHR_mesh_quantization",           "KHR_materials_pbrSpecularGlossiness"};
+        "KHR_texture_transform",     "KHR_mesh_quantization",           "KHR_materials_pbrSpecularGlossiness",
+        "KHR_materials_specular", "KHR_materials_clearcoat"};
     if (!binary && (!ok || versionOne(model_.asset.version))) throwIfVersionOne(jsonText(head, binary));
     if (!ok) {
       // A file that needs an extension PRT does not read (Draco's compressed meshes, whose
@@ -946,12 +947,27 @@ class GltfReader {
         in.attenuationColor = vec3(*e, "attenuationColor", Color(1));
         in.attenuationDistance = number(*e, "attenuationDistance", in.attenuationDistance);
       }
+      if (const auto* e = extension(m->extensions, "KHR_materials_specular")) {
+        in.specular = true;
+        in.specularFactor = number(*e, "specularFactor", 1);
+        in.specularColorFactor = vec3(*e, "specularColorFactor", Color(1));
+        if (e->Has("specularTexture") || e->Has("specularColorTexture")) {
+          notes_.notUsed.insert("KHR_materials_specular's textures (" + name + ")");
+        }
+      }
       if (extension(m->extensions, "KHR_materials_unlit")) in.unlit = true;
       if (const auto* e = extension(m->extensions, "KHR_materials_pbrSpecularGlossiness")) {
         specularGlossiness(*e, in, name);
       }
-      for (const char* other : {"KHR_materials_clearcoat", "KHR_materials_sheen",
-                                "KHR_materials_specular", "KHR_materials_iridescence",
+      if (const auto* e = extension(m->extensions, "KHR_materials_clearcoat")) {
+        in.clearcoat = number(*e, "clearcoatFactor", 0);
+        in.clearcoatRoughness = number(*e, "clearcoatRoughnessFactor", 0);
+        for (const char* texture : {"clearcoatTexture", "clearcoatRoughnessTexture", "clearcoatNormalTexture"}) {
+          if (e->Has(texture)) notes_.notUsed.insert(std::string("KHR_materials_clearcoat's ") + texture + " (" + name + ")");
+        }
+      }
+      for (const char* other : {"KHR_materials_sheen",
+                                "KHR_materials_iridescence",
                                 "KHR_materials_anisotropy"}) {
         if (extension(m->extensions, other)) notes_.notUsed.insert(std::string(other) + " (" + name + ")");
       }

@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "scene/value_reader.h"
+#include "trace/bsdf.h"
 
 namespace prt {
 namespace {
@@ -39,6 +40,8 @@ double thicknessOf(double t) { return t > 0 ? t : 0.0; }
 double attenuationDistanceOf(double d) {
   return d > 0 ? d : std::numeric_limits<double>::infinity();
 }
+// A specular colour multiplies F0, which stays at most 1: no bound below the colours'.
+Color specularColorOf(const Color& c) { return emissionOf(c); }
 
 // The Phong exponent whose lobe is about as wide as a GGX lobe of this roughness: Blinn-Phong's
 // 2 / alpha^2 - 2 with alpha = roughness^2 (Walter et al. 2007), a quarter of it for Phong's
@@ -72,7 +75,12 @@ Material mapPbrMaterial(const PbrMaterialInputs& in) {
   // index of 1.5 (KHR_materials_ior changes both); a metal reflects its colour.
   const double ior = iorOf(in.ior);
   const double f0 = (ior - 1) / (ior + 1);
-  const double reflectance = f0 * f0 * (1 - metallic) + metallic;
+  double dielectric = f0 * f0;
+  if (in.specular) {  // KHR_materials_specular: its colour's luminance and its factor
+    dielectric = std::min(dielectric * luminance(specularColorOf(in.specularColorFactor)), 1.0) *
+                 clamp01(in.specularFactor);
+  }
+  const double reflectance = dielectric * (1 - metallic) + metallic;
   m.metallic = metallic;
   m.phongExponent = phongExponentFor(roughness);
   // The Phong lobe normalised as a BRDF peaks at (n + 2) / (2 pi) times the reflectance; with
@@ -105,6 +113,13 @@ Material mapPbrMaterial(const PbrMaterialInputs& in) {
   m.pbr.normalTexture = in.normalTexture;
   m.pbr.normalScale = normalScaleOf(in.normalScale);
   m.pbr.transmissionTexture = in.transmissionTexture;
+  if (in.specular) {  // F0 from the index, as glTF's specification has it
+    m.pbr.specularLevel = std::min(f0 * f0 / 0.08, kMaxSpecularLevel);
+    m.pbr.specularWeight = clamp01(in.specularFactor);
+    m.pbr.specularColor = specularColorOf(in.specularColorFactor);
+  }
+  m.pbr.clearcoat = clamp01(in.clearcoat);
+  m.pbr.clearcoatRoughness = clamp01(in.clearcoatRoughness);
   m.pbr.thinWalled = in.volume && thicknessOf(in.thickness) == 0;
   if (in.volume && !m.pbr.thinWalled) {
     m.pbr.attenuationColor = clamp01(in.attenuationColor);
@@ -146,6 +161,15 @@ std::vector<std::string> pbrValuesOutOfRange(const PbrMaterialInputs& in) {
   check("emission green", asked.y, taken.y);
   check("emission blue", asked.z, taken.z);
   check("normal scale", in.normalScale, normalScaleOf(in.normalScale));
+  if (in.specular) {
+    unit("specular factor", in.specularFactor);
+    const Color colour = specularColorOf(in.specularColorFactor);
+    check("specular colour red", in.specularColorFactor.x, colour.x);
+    check("specular colour green", in.specularColorFactor.y, colour.y);
+    check("specular colour blue", in.specularColorFactor.z, colour.z);
+  }
+  unit("clearcoat", in.clearcoat);
+  unit("clearcoat roughness", in.clearcoatRoughness);
   if (in.volume) {
     check("thickness", in.thickness, thicknessOf(in.thickness));
     unit("attenuation colour red", in.attenuationColor.x);

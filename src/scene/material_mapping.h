@@ -39,6 +39,13 @@ struct PbrMaterialInputs {
   double thickness = 0;
   Color attenuationColor{1, 1, 1};
   double attenuationDistance = std::numeric_limits<double>::infinity();
+  // KHR_materials_specular: `specular` when the material has it; the dielectric's F0 is then
+  // min(((ior - 1) / (ior + 1))^2 specularColorFactor, 1) specularFactor.
+  bool specular = false;
+  double specularFactor = 1;
+  Color specularColorFactor{1, 1, 1};
+  // KHR_materials_clearcoat (the path tracer's alone).
+  double clearcoat = 0, clearcoatRoughness = 0;
   enum class AlphaMode { opaque, mask, blend } alphaMode = AlphaMode::opaque;
   double alphaCutoff = 0.5;
   bool unlit = false;  // KHR_materials_unlit

@@ -120,6 +120,13 @@ std::string surfaceFields(const Material& material) {
       out.number("attenuation_distance", pbr.attenuationDistance);
     }
     if (pbr.thinWalled) out.raw(" thin_walled");
+    out.numberUnlessDefault("specular_weight", pbr.specularWeight, defaults.pbr.specularWeight);
+    if (!sameBits(pbr.specularColor, defaults.pbr.specularColor)) {
+      out.vector("specular_color", pbr.specularColor);
+    }
+    out.numberUnlessDefault("clearcoat", pbr.clearcoat, defaults.pbr.clearcoat);
+    out.numberUnlessDefault("clearcoat_roughness", pbr.clearcoatRoughness,
+                            defaults.pbr.clearcoatRoughness);
   }
   // `ior` above sets both indices; the path tracer's own is written when it differs from what
   // reading that back gives.

@@ -155,6 +155,11 @@ TEST(SceneWriter, RoundTripsThePathTracersSettingsAndSurfaces) {
   m.pbr.coverage = 0.5;
   m.pbr.attenuationColor = Color(0.7, 1.0 / 3.0, 0);
   m.pbr.attenuationDistance = 0.125;
+  m.pbr.specularLevel = 7.25;
+  m.pbr.specularWeight = 0.3;
+  m.pbr.specularColor = Color(2, 0.5, 1.0 / 3.0);
+  m.pbr.clearcoat = 0.75;
+  m.pbr.clearcoatRoughness = 0.1;
   Material& wall = scene.objects[0].material;
   wall.pbr.given = true;
   wall.pbr.thinWalled = true;

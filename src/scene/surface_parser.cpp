@@ -4,6 +4,7 @@
 #include "scene/keywords.h"
 #include "scene/number_text.h"
 #include "scene/value_reader.h"
+#include "trace/bsdf.h"
 
 namespace prt {
 namespace {
@@ -31,7 +32,8 @@ void readSurfaceBlock(TokenStream& in, const Token& keyword, const std::string& 
                     {"color", "ambient", "diffuse", "specular", "phong", "reflect", "transmit",
                      "ior", "gloss", "translucency", "metallic", "emission", "base_color",
                      "roughness", "transmission", "pbr_ior", "specular_level", "coverage",
-                     "attenuation_color", "attenuation_distance", "thin_walled"});
+                     "attenuation_color", "attenuation_distance", "thin_walled", "specular_weight",
+                     "specular_color", "clearcoat", "clearcoat_roughness"});
   const Range weight = Range::closed(0, 1);
   while (const Token* param = block.next()) {
     const std::string& name = param->text;
@@ -46,7 +48,8 @@ void readSurfaceBlock(TokenStream& in, const Token& keyword, const std::string& 
     } else if (name == "pbr_ior") {
       material.pbr.ior = readNumber(in, name, Range::closed(1, 10));
     } else if (name == "specular_level") {
-      material.pbr.specularLevel = readNumber(in, name, weight);
+      // Above 12.5 the reflectance at normal incidence would pass 1.
+      material.pbr.specularLevel = readNumber(in, name, Range::closed(0, kMaxSpecularLevel));
       material.pbr.given = true;
     } else if (name == "coverage") {
       material.pbr.coverage = readNumber(in, name, weight);
@@ -59,6 +62,18 @@ void readSurfaceBlock(TokenStream& in, const Token& keyword, const std::string& 
       material.pbr.given = true;
     } else if (name == "thin_walled") {  // a flag: no value
       material.pbr.thinWalled = true;
+      material.pbr.given = true;
+    } else if (name == "specular_weight") {
+      material.pbr.specularWeight = readNumber(in, name, weight);
+      material.pbr.given = true;
+    } else if (name == "specular_color") {
+      material.pbr.specularColor = readColor(in, name);
+      material.pbr.given = true;
+    } else if (name == "clearcoat") {
+      material.pbr.clearcoat = readNumber(in, name, weight);
+      material.pbr.given = true;
+    } else if (name == "clearcoat_roughness") {
+      material.pbr.clearcoatRoughness = readNumber(in, name, weight);
       material.pbr.given = true;
     } else if (name == "ambient") {
       material.ambient = readNumber(in, name, weight);

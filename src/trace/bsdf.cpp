@@ -16,9 +16,9 @@ double pow5(double x) {
   return x2 * x2 * x;
 }
 
-Color schlick(const Color& f0, double cosine) {
+Color schlick(const Color& f0, const Color& f90, double cosine) {
   const double w = pow5(std::clamp(1 - cosine, 0.0, 1.0));
-  return f0 + w * (Color(1) - f0);
+  return f0 + w * (f90 - f0);
 }
 
 // GGX in the local frame (z along the normal), alpha the width.
@@ -99,17 +99,55 @@ Bsdf::Bsdf(const BsdfInputs& in, const Vec3& n, const Vec3& wo, bool outward) : 
   eta_ = outward || in_.thinWalled ? ior : 1 / ior;
   const double metallic = std::clamp(in_.metallic, 0.0, 1.0);
   const double transmission = std::clamp(in_.transmission, 0.0, 1.0);
-  const Color dielectric(0.08 * std::clamp(in_.specularLevel, 0.0, 1.0));
+  Color dielectric(0.08 * std::clamp(in_.specularLevel, 0.0, kMaxSpecularLevel));
+  f90_ = Color(1);
+  if (in_.specularWeight != 1 || in_.specularColor != Color(1)) {
+    // KHR_materials_specular: F0 coloured (at most 1) and, with F90, weighted (the dielectric's
+    // part; a metal's is its base colour up to 1).
+    const double weight = std::clamp(in_.specularWeight, 0.0, 1.0);
+    const Color tinted = dielectric * in_.specularColor;
+    dielectric = weight * Color(std::min(tinted.x, 1.0), std::min(tinted.y, 1.0), std::min(tinted.z, 1.0));
+    f90_ = Color((1 - metallic) * weight + metallic);
+  }
   f0_ = (1 - metallic) * dielectric + metallic * in_.base;
   diffuseW_ = (1 - metallic) * (1 - transmission);
   glassW_ = (1 - metallic) * transmission;
   specularDelta_ = glassDelta_ = roughness < kSmoothRoughness;
   // The glass carries its own reflection: the specular layer covers the rest.
-  const double d = diffuseW_ * luminance(in_.base);
-  const double s = (1 - glassW_) * luminance(schlick(f0_, cosO_));
-  const double g = glassW_;
-  const double sum = d + s + g;
-  if (sum > 0) diffuseP_ = d / sum, specularP_ = s / sum, glassP_ = g / sum;
+  double d = diffuseW_ * luminance(in_.base);
+  double s = (1 - glassW_) * luminance(schlick(f0_, f90_, cosO_));
+  double g = glassW_;
+  if (in_.clearcoat > 0) setUpCoat(wo, d, s, g);
+  const double sum = d + s + g + coatP_;
+  if (sum > 0) diffuseP_ = d / sum, specularP_ = s / sum, glassP_ = g / sum, coatP_ = coatP_ / sum;
+}
+
+void Bsdf::setUpCoat(const Vec3& wo, double& d, double& s, double& g) {
+  coatN_ = in_.clearcoatNormal == Vec3() ? n_ : in_.clearcoatNormal;
+  if (!(dot(coatN_, wo) > 0)) coatN_ = n_;  // a coat normal facing away: the surface's
+  orthonormalBasis(coatN_, coatT_, coatB_);
+  coatWo_ = Vec3(dot(wo, coatT_), dot(wo, coatB_), std::max(dot(wo, coatN_), 1e-9));
+  const double roughness = std::clamp(in_.clearcoatRoughness, 0.0, 1.0);
+  coatAlpha_ = std::max(roughness * roughness, 1e-3);
+  coatDelta_ = roughness < kSmoothRoughness;
+  coatW_ = std::clamp(in_.clearcoat, 0.0, 1.0) * (0.04 + 0.96 * pow5(1 - coatWo_.z));
+  baseScale_ = 1 - coatW_;
+  d *= baseScale_, s *= baseScale_, g *= baseScale_;
+  coatP_ = coatW_;  // made a share by the caller
+}
+
+Color Bsdf::coatEval(const Vec3& w) const {
+  const Vec3 wi(dot(w, coatT_), dot(w, coatB_), dot(w, coatN_));
+  if (wi.z <= 0 || coatDelta_) return {};
+  const Vec3 h = normalize(wi + coatWo_);
+  return Color(coatW_ * ggxD(h, coatAlpha_) * ggxG2(coatWo_, wi, coatAlpha_) / (4 * coatWo_.z));
+}
+
+double Bsdf::coatPdf(const Vec3& w) const {
+  const Vec3 wi(dot(w, coatT_), dot(w, coatB_), dot(w, coatN_));
+  if (wi.z <= 0 || coatDelta_) return 0;
+  const Vec3 h = normalize(wi + coatWo_);
+  return ggxG1(coatWo_, coatAlpha_) * ggxD(h, coatAlpha_) / (4 * coatWo_.z);
 }
 
 Color Bsdf::diffuseEval(const Vec3& wi) const {
@@ -126,7 +164,7 @@ Color Bsdf::diffuseEval(const Vec3& wi) const {
 Color Bsdf::specularEval(const Vec3& wi) const {
   if (wi.z <= 0 || specularDelta_) return {};
   const Vec3 h = normalize(wi + wo_);
-  const Color f = schlick(f0_, dot(wo_, h));
+  const Color f = schlick(f0_, f90_, dot(wo_, h));
   const double weight = (1 - glassW_) * ggxD(h, alpha_) * ggxG2(wo_, wi, alpha_) / (4 * cosO_);
   return weight * f;
 }
@@ -186,7 +224,9 @@ double Bsdf::glassPdf(const Vec3& wi) const {
 
 Color Bsdf::evaluate(const Vec3& w) const {
   const Vec3 wi(dot(w, t_), dot(w, b_), dot(w, n_));
-  return diffuseEval(wi) + specularEval(wi) + glassEval(wi);
+  const Color below = diffuseEval(wi) + specularEval(wi) + glassEval(wi);
+  if (coatW_ > 0) return baseScale_ * below + coatEval(w);
+  return below;
 }
 
 double Bsdf::pdf(const Vec3& w) const {
@@ -195,6 +235,7 @@ double Bsdf::pdf(const Vec3& w) const {
   if (diffuseP_ > 0 && wi.z > 0) p += diffuseP_ * wi.z * kInvPi;
   if (specularP_ > 0) p += specularP_ * specularPdf(wi);
   if (glassP_ > 0) p += glassP_ * glassPdf(wi);
+  if (coatP_ > 0) p += coatP_ * coatPdf(w);
   return p;
 }
 
@@ -209,7 +250,8 @@ bool Bsdf::sample(double u0, double u1, double u2, BsdfSample& out) const {
   } else if (u0 < diffuseP_ + specularP_) {
     if (specularDelta_) {
       out.wi = toWorld(Vec3(-wo_.x, -wo_.y, wo_.z));
-      out.weight = ((1 - glassW_) / specularP_) * schlick(f0_, cosO_);
+      out.weight = ((1 - glassW_) / specularP_) * schlick(f0_, f90_, cosO_);
+      if (coatW_ > 0) out.weight = baseScale_ * out.weight;
       out.pdf = 0;
       out.delta = true;
       out.transmitted = false;
@@ -217,7 +259,7 @@ bool Bsdf::sample(double u0, double u1, double u2, BsdfSample& out) const {
     }
     const Vec3 h = sampleVisibleNormal(wo_, alpha_, u1, u2);
     wi = 2 * dot(wo_, h) * h - wo_;
-  } else if (glassP_ > 0) {
+  } else if (glassP_ > 0 && (coatP_ == 0 || u0 < diffuseP_ + specularP_ + glassP_)) {
     // Which of reflection and refraction: the rest of u0 within the glass's share.
     const double u = std::clamp((u0 - diffuseP_ - specularP_) / glassP_, 0.0, 1.0);
     const Vec3 m = glassDelta_ ? Vec3(0, 0, 1) : sampleVisibleNormal(wo_, alpha_, u1, u2);
@@ -228,7 +270,9 @@ bool Bsdf::sample(double u0, double u1, double u2, BsdfSample& out) const {
     if (in_.thinWalled) {  // through the wall unbent: the reflection mirrored to the far side
       reflects = u < r;
       const Vec3 wr = 2 * om * m - wo_;
-      if (!reflects && wr.z <= 0) return false;
+      // Reflected into the wall (either way): lost, as for the other lobes; kept, it would be
+      // taken for the other branch's direction and weighed by that branch's density alone.
+      if (wr.z <= 0) return false;
       wi = reflects ? wr : Vec3(wr.x, wr.y, -wr.z);
     } else {
       reflects = u < r || !refractThrough(wo_, m, eta_, wt);
@@ -241,11 +285,25 @@ bool Bsdf::sample(double u0, double u1, double u2, BsdfSample& out) const {
       out.weight = reflects          ? Color(glassW_ / glassP_)
                    : in_.thinWalled ? (glassW_ / glassP_) * in_.base
                                     : (glassW_ / (glassP_ * eta_ * eta_)) * in_.base;
+      if (coatW_ > 0) out.weight = baseScale_ * out.weight;
       out.pdf = 0;
       out.delta = true;
       out.transmitted = !reflects;
       return true;
     }
+  } else if (coatP_ > 0) {
+    const Vec3 h = coatDelta_ ? Vec3(0, 0, 1) : sampleVisibleNormal(coatWo_, coatAlpha_, u1, u2);
+    const Vec3 c = 2 * dot(coatWo_, h) * h - coatWo_;
+    const Vec3 w = c.x * coatT_ + c.y * coatB_ + c.z * coatN_;
+    if (coatDelta_) {
+      out.wi = w;
+      out.weight = Color(coatW_ / coatP_);
+      out.pdf = 0;
+      out.delta = true;
+      out.transmitted = dot(w, n_) < 0;
+      return true;
+    }
+    wi = Vec3(dot(w, t_), dot(w, b_), dot(w, n_));
   } else {
     return false;
   }

@@ -8,8 +8,14 @@
 // specular: the GGX (Trowbridge-Reitz) microfacet reflection with the height-correlated Smith
 //   masking-shadowing and Schlick's Fresnel from F0 = lerp(0.08 specularLevel, base, metallic)
 //   (0.04 at glTF's default, the reflectance of an index of 1.5) up to 1 at grazing angles;
+//   KHR_materials_specular scales the dielectric's: F0 = min(0.08 specularLevel
+//   specularColor, 1) specularWeight, F90 = specularWeight;
 // glass: the rough dielectric of Walter et al. 2007 (GGX, exact Fresnel for the index,
 //   refraction tinted by the base colour), both sides of the surface.
+// KHR_materials_clearcoat lays a second GGX reflection over all of it, as the extension
+// defines it: f = (1 - clearcoat Fc) f_base + clearcoat Fc f_coat, Fc = 0.04 + 0.96 (1 -
+//   |n_c . wo|)^5 (Schlick's for an index of 1.5 on the coat's normal n_c), f_coat the
+//   microfacet reflection of roughness clearcoatRoughness without a Fresnel factor.
 // Directions are sampled from the visible normals (Heitz 2018) for the microfacet lobes and
 // cosine-weighted for the diffuse one; a lobe is chosen by its estimated weight and the pdf is
 // the mixture's, so that next-event estimation and BSDF sampling can be weighed by multiple
@@ -34,7 +40,18 @@ struct BsdfInputs {
   // KHR_materials_volume's thickness 0: the glass is a thin wall (a soap bubble, a window
   // pane), air on both sides: light passes it unbent, reflected by the index's Fresnel.
   bool thinWalled = false;
+  // KHR_materials_specular: the dielectric reflection's strength (specularFactor, in [0, 1])
+  // and colour (specularColorFactor, multiplying its F0, which stays at most 1).
+  double specularWeight = 1;
+  Color specularColor{1, 1, 1};
+  // KHR_materials_clearcoat: the coat's strength (in [0, 1]), its roughness and its normal
+  // (world space, unit; zero: the BSDF's normal).
+  double clearcoat = 0, clearcoatRoughness = 0;
+  Vec3 clearcoatNormal{0, 0, 0};
 };
+
+// The largest specularLevel: an F0 of 1.
+inline constexpr double kMaxSpecularLevel = 12.5;
 
 struct BsdfSample {
   Vec3 wi;
@@ -57,7 +74,9 @@ class Bsdf {
   bool sample(double u0, double u1, double u2, BsdfSample& out) const;
   // Whether next-event estimation can find anything: a lobe that is not delta.
   bool hasSmoothLobe() const {
-    return diffuseP_ + (specularDelta_ ? 0 : specularP_) + (glassDelta_ ? 0 : glassP_) > 0;
+    return diffuseP_ + (specularDelta_ ? 0 : specularP_) + (glassDelta_ ? 0 : glassP_) +
+               (coatDelta_ ? 0 : coatP_) >
+           0;
   }
 
  private:
@@ -66,6 +85,12 @@ class Bsdf {
   double specularPdf(const Vec3& wi) const;
   Color glassEval(const Vec3& wi) const;
   double glassPdf(const Vec3& wi) const;
+  // Sets the coat up and scales the lobe weights below it (diffuse, specular, glass) by what
+  // it leaves them.
+  void setUpCoat(const Vec3& wo, double& d, double& s, double& g);
+  // The coat's, for a world-space direction.
+  Color coatEval(const Vec3& w) const;
+  double coatPdf(const Vec3& w) const;
 
   BsdfInputs in_;
   Vec3 n_, t_, b_;  // shading frame
@@ -73,10 +98,15 @@ class Bsdf {
   double cosO_;
   double alpha_;      // GGX's, roughness squared
   double eta_;        // index on the far side over the index on wo's side
-  Color f0_;          // the specular lobe's reflectance at normal incidence
+  Color f0_, f90_;    // the specular lobe's reflectance at normal and grazing incidence
   double diffuseW_, glassW_;
   double diffuseP_ = 0, specularP_ = 0, glassP_ = 0;  // lobe choice, summing to 1
   bool specularDelta_, glassDelta_;
+  // The clearcoat: its frame, wo in it, its alpha, its weight clearcoat Fc (0: none), the
+  // share left to the layers below (1 - coatW_) and its lobe's choice.
+  Vec3 coatN_, coatT_, coatB_, coatWo_;
+  double coatAlpha_ = 1, coatW_ = 0, baseScale_ = 1, coatP_ = 0;
+  bool coatDelta_ = false;
 };
 
 // Dielectric Fresnel reflectance for a cosine of incidence on wo's side and the relative

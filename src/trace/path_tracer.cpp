@@ -1,6 +1,7 @@
 #include "trace/path_tracer.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -31,6 +32,8 @@ Color lookUp(const Scene& scene, const TextureRef& ref, const SurfaceAttributes&
 
 // Maximum surfaces a ray passes through where they are transparent before it counts as lost.
 constexpr int kMostPassThroughs = 64;
+// Media a path can be inside at once (a liquid in a glass in a glass...).
+constexpr int kMostMedia = 8;
 // Bounces after which Russian roulette may end a path.
 constexpr int kRouletteAfter = 3;
 
@@ -83,7 +86,12 @@ PathTracer::PathTracer(const World& world)
     s.bsdf.specularLevel = p.specularLevel;
     s.coverage = p.coverage;
     s.bsdf.thinWalled = p.thinWalled;
-    if (m.pbr.given && !p.thinWalled && p.transmission > 0 && std::isfinite(p.attenuationDistance)) {
+    s.bsdf.specularWeight = p.specularWeight;
+    s.bsdf.specularColor = p.specularColor;
+    s.bsdf.clearcoat = p.clearcoat;
+    s.bsdf.clearcoatRoughness = p.clearcoatRoughness;
+    s.medium = m.pbr.given && !p.thinWalled && p.transmission > 0;
+    if (s.medium && std::isfinite(p.attenuationDistance)) {
       s.absorption = absorptionOf(p.attenuationColor, p.attenuationDistance);
       s.absorbs = maxComponent(s.absorption) > 0;
     }
@@ -138,6 +146,10 @@ Color PathTracer::radiance(const Ray& cameraRay, const std::span<const uint32_t>
   double lastPdf = 0;
   Vec3 lastPoint;
   int bounce = 0, passes = 0;
+  // The objects whose insides the path is in, innermost last (those past kMostMedia deep are
+  // not counted).
+  std::array<uint32_t, kMostMedia> media{};
+  int mediaCount = 0;
   for (uint64_t vertex = 0;; ++vertex) {
     ++rays;
     Hit hit;
@@ -156,9 +168,12 @@ Color PathTracer::radiance(const Ray& cameraRay, const std::span<const uint32_t>
     Rng draws = rng.child(vertex);
     const Material& m = world_.material(hit.object);
     const Surface& surface = surfaces_[hit.object];
-    if (surface.absorbs && dot(ray.direction, hit.normal) > 0 && hit.t > 0) {
-      throughput = throughput * transmittance(surface.absorption, hit.t);  // through its inside
-      if (!(maxComponent(throughput) > 0)) break;
+    if (mediaCount > 0 && hit.t > 0) {
+      const Surface& medium = surfaces_[media[mediaCount - 1]];
+      if (medium.absorbs) {
+        throughput = throughput * transmittance(medium.absorption, hit.t);
+        if (!(maxComponent(throughput) > 0)) break;
+      }
     }
     const double eps = surfaceEpsilon(hit.point);
     if (surface.coverage < 1 && draws.uniform() >= surface.coverage) {
@@ -204,6 +219,9 @@ Color PathTracer::radiance(const Ray& cameraRay, const std::span<const uint32_t>
     const bool bumped = mapped != hit.normal;
     const Vec3 shading = bumped ? keepReflectionAbove(n, -ray.direction, outside ? mapped : -mapped) : n;
     inputs.base = base;
+    // A clearcoat lies on the surface as it is, not on the base's normal map (glTF: the
+    // coat has a normal texture of its own).
+    if (bumped && inputs.clearcoat > 0) inputs.clearcoatNormal = n;
     const Bsdf bsdf(inputs, shading, -ray.direction, outside);
     const Vec3 above = hit.point + eps * n, below = hit.point - eps * n;
 
@@ -258,6 +276,19 @@ Color PathTracer::radiance(const Ray& cameraRay, const std::span<const uint32_t>
     }
     throughput = throughput * next.weight;
     if (!(maxComponent(throughput) > 0) || !isFinite(throughput)) break;
+    if (surface.medium && dot(next.wi, n) < 0) {  // through the surface: into it or out of it
+      if (outside) {
+        if (mediaCount < kMostMedia) media[static_cast<size_t>(mediaCount++)] = hit.object;
+      } else {
+        for (int k = mediaCount; k-- > 0;) {
+          if (media[static_cast<size_t>(k)] == hit.object) {
+            for (int j = k; j + 1 < mediaCount; ++j) media[static_cast<size_t>(j)] = media[static_cast<size_t>(j) + 1];
+            --mediaCount;
+            break;
+          }
+        }
+      }
+    }
     lastDelta = next.delta;
     lastPdf = next.pdf;
     lastPoint = hit.point;

@@ -20,11 +20,14 @@
 // ends the path and a light on the other side of the surface than of the tilted normal
 // lights nothing.
 //
-// Volumes (KHR_materials_volume): a path that meets a refracting surface from inside has
-// travelled through that object's medium, and its throughput is multiplied by the medium's
-// transmittance over the distance, exp(-sigma t) per channel. The medium is known by the
-// surface that ends the segment, which is exact for closed objects that do not nest or
-// overlap (a glass in a glass counts only the inner one's absorption inside both).
+// Volumes (KHR_materials_volume): a path keeps the media it is in, as Cycles keeps its volume
+// stack: a bounce through a refracting, not thin-walled surface from outside enters that
+// object's medium, one from inside leaves it. Every segment travelled inside a medium (the
+// innermost: a liquid in a glass is the liquid's, an ice cube in it clear) multiplies the
+// throughput by the medium's transmittance over its length, exp(-sigma t) per channel, whatever
+// surface ends it: a glass standing on a table whose floor the path meets from inside it
+// still absorbs on the way there. Closed objects are assumed: a path that leaves the scene
+// from inside one is not absorbed on its way out (its length is infinite).
 //
 // Shadow rays are stopped by any surface but the transparent part of one (coverage < 1): the
 // glass of a path-traced scene lets light through by refraction alone, as a real one does.
@@ -71,9 +74,10 @@ class PathTracer {
     // glTF's data textures in use (the mesh has texture coordinates; and tangents for the
     // normal map).
     bool metallicRoughnessMap = false, transmissionMap = false, normalMap = false;
-    // KHR_materials_volume: the inside's absorption coefficient per unit length (Beer and
-    // Lambert: sigma = -ln(attenuation colour) / attenuation distance), applied to the path
-    // segment that ends on the surface from inside; `absorbs` when any is above 0.
+    // KHR_materials_volume: `medium` when the inside is one (refracting, not thin-walled);
+    // its absorption coefficient per unit length (Beer and Lambert: sigma = -ln(attenuation
+    // colour) / attenuation distance), `absorbs` when any is above 0.
+    bool medium = false;
     Color absorption;
     bool absorbs = false;
   };

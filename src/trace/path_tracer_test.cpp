@@ -46,7 +46,9 @@ double meanOfImage(const Image& image) {
 TEST(PathTracerTest, WhiteFurnaceLosslessBallsVanish) {
   Material wall = pbr(Color(1), 0, 0, 1);
   wall.pbr.thinWalled = true;
-  for (const Material& m : {pbr(Color(1), 1, 0, 0), pbr(Color(1), 0, 0, 1), wall}) {
+  Material coated = pbr(Color(1), 1, 0, 0);  // a mirror under a clear coat: still all of it
+  coated.pbr.clearcoat = 1;
+  for (const Material& m : {pbr(Color(1), 1, 0, 0), pbr(Color(1), 0, 0, 1), wall, coated}) {
     const World world(furnace(m));
     const Renderer renderer(world, RenderSettings{4, 1});
     const Image image = renderImage(renderer, 1);
@@ -69,7 +71,10 @@ TEST(PathTracerTest, WhiteFurnaceLosslessBallsVanish) {
 TEST(PathTracerTest, WhiteFurnaceRoughBallsLoseLittleAndGainNothing) {
   Material wall = pbr(Color(1), 0, 0.3, 1);
   wall.pbr.thinWalled = true;
-  for (const Material& m : {pbr(Color(1), 1, 0.3, 0), pbr(Color(1), 0, 0.3, 1), wall}) {
+  Material coated = pbr(Color(1), 1, 0.3, 0);
+  coated.pbr.clearcoat = 1;
+  coated.pbr.clearcoatRoughness = 0.2;
+  for (const Material& m : {pbr(Color(1), 1, 0.3, 0), pbr(Color(1), 0, 0.3, 1), wall, coated}) {
     const World world(furnace(m));
     const Renderer renderer(world, RenderSettings{64, 1});
     const double mean = meanOfImage(renderImage(renderer, 2));
@@ -105,6 +110,28 @@ TEST(PathTracerTest, AVolumeAbsorbsAlongThePathInsideByBeerLambert) {
   const double mean = meanOfImage(renderImage(Renderer(world, RenderSettings{16, 1}), 2));
   EXPECT_LT(mean, 0.9);
   EXPECT_GT(mean, 0.2);
+}
+
+// The medium is the path's, not the surface's that ends a segment: a glowing ball inside an
+// absorbing clear one (index 1) is seen through half a unit of the medium, though the segment
+// ends on the glowing ball's outside.
+TEST(PathTracerTest, APathInsideAMediumIsAbsorbedWhateverItMeets) {
+  Material glass = pbr(Color(1), 0, 0, 1);
+  glass.pbr.ior = 1;
+  glass.pbr.attenuationColor = Color(0.5, 0.25, 1);
+  glass.pbr.attenuationDistance = 1;
+  Material glow = pbr(Color(0), 0, 1, 0);
+  glow.emission = Color(1);
+  Scene scene = furnace(glass);
+  scene.environment.background = Color(0);
+  scene.objects.push_back({SphereShape{{0, 0, 0}, 0.5}, glow});
+  const World world(scene);
+  const PathTracer tracer(world);
+  uint64_t rays = 0;
+  const Color c = tracer.radiance(Ray{Vec3(0, 0, -4), Vec3(0, 0, 1)}, nullptr, Rng(5), rays);
+  EXPECT_NEAR(c.x, std::sqrt(0.5), 1e-6);
+  EXPECT_NEAR(c.y, 0.5, 1e-6);
+  EXPECT_NEAR(c.z, 1, 1e-6);
 }
 
 // A map of uniform radiance 1 is the world colour 1 by another road: next-event estimation

@@ -75,7 +75,8 @@ struct PbrSurface {
   double roughness = 0.5;     // in [0, 1]
   double transmission = 0;    // share that is glass, in [0, 1]
   double ior = 1.5;           // in [1, 10]
-  double specularLevel = 0.5;  // Blender's "specular": F0 = 0.08 * level for dielectrics
+  double specularLevel = 0.5;  // Blender's "specular": F0 = 0.08 * level for dielectrics, in
+                               // [0, 12.5]
   double coverage = 1;        // alpha: 0 absent (rays pass straight through) to 1, in [0, 1]
   // glTF's data textures (linear Textures), which only the path tracer reads: metallic (B)
   // and roughness (G) multiplying the material's `metallic` and `roughness`; a tangent-space
@@ -92,6 +93,13 @@ struct PbrSurface {
   Color attenuationColor{1, 1, 1};  // in [0, 1]
   double attenuationDistance = std::numeric_limits<double>::infinity();  // > 0
   bool thinWalled = false;
+  // KHR_materials_specular: the dielectric's F0 becomes min(0.08 specularLevel specularColor,
+  // 1) specularWeight and its F90 specularWeight (trace/bsdf.h).
+  double specularWeight = 1;      // in [0, 1]
+  Color specularColor{1, 1, 1};  // in [0, 1e6]
+  // KHR_materials_clearcoat: a clear GGX layer of index 1.5 over the rest (trace/bsdf.h).
+  double clearcoat = 0;           // in [0, 1]
+  double clearcoatRoughness = 0;  // in [0, 1]
   bool operator==(const PbrSurface&) const = default;
 };
 
