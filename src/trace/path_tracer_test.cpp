@@ -165,7 +165,15 @@ TEST(PathTracerTest, PixelsDoNotDependOnThreadsOrOrder) {
   Scene scene = furnace(pbr(Color(0.8, 0.3, 0.2), 0, 0.5, 0));
   scene.environment.background = Color(0.2, 0.3, 0.4);
   Material floor = pbr(Color(0.5), 0, 0.8, 0);
+  floor.pbr.clearcoat = 0.7;  // and glTF's extensions: a coat, a coloured specular, a volume
+  floor.pbr.clearcoatRoughness = 0.1;
   scene.objects.push_back({PlaneShape{{0, -1, 0}, {0, 1, 0}}, floor});
+  scene.objects[0].material.pbr.specularColor = Color(2, 1, 0.5);
+  scene.objects[0].material.pbr.specularWeight = 0.8;
+  Material amber = pbr(Color(1), 0, 0.1, 1);
+  amber.pbr.attenuationColor = Color(0.9, 0.5, 0.2);
+  amber.pbr.attenuationDistance = 0.3;
+  scene.objects.push_back({SphereShape{{1.2, -0.6, -0.5}, 0.4}, amber});
   Light sun;
   sun.shape = DirectionalLight{normalize(Vec3(1, -2, 1))};
   scene.lights.push_back(sun);
