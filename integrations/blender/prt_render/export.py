@@ -1,0 +1,99 @@
+"""The scene, written for prt by Blender's own glTF exporter (io_scene_gltf2)."""
+import contextlib
+import io
+import os
+
+import bpy
+
+from . import commands
+
+
+def _numpy_bool_workaround():
+    """Blender 3.4's glTF exporter calls np.bool, which NumPy 1.24 removed (Debian 12's
+    Blender uses the system's NumPy). Set it only where it is missing, so that a Blender that
+    ships its own, older NumPy is left as it is."""
+    try:
+        import numpy as np
+    except ImportError:
+        return
+    if "bool" not in vars(np):
+        np.bool = bool
+
+
+def camera_name(scene):
+    """The glTF name of the scene's camera (the exporter names a glTF camera after the camera
+    data), for prt's --camera; empty when the scene has none."""
+    return scene.camera.data.name if scene.camera is not None else ""
+
+
+def export_gltf(scene, path, animation):
+    """Writes SCENE to PATH (.glb) with its cameras, lights, materials and textures, modifiers
+    applied; ANIMATION: with the frame range's animation sampled at every frame (the exporter
+    writes frame N at N / fps seconds), else as it is at the current frame. Returns the
+    exporter's warning lines. Raises RuntimeError with the exporter's message on failure."""
+    _numpy_bool_workaround()
+    if not hasattr(bpy.ops.export_scene, "gltf"):
+        import addon_utils
+        addon_utils.enable("io_scene_gltf2", default_set=True)
+    out = io.StringIO()
+    window = bpy.context.window_manager.windows[0] if bpy.context.window_manager and \
+        bpy.context.window_manager.windows else None
+    override = {"scene": scene}
+    if window is not None:
+        override["window"] = window
+    with contextlib.redirect_stdout(out):
+        try:
+            with bpy.context.temp_override(**override):
+                result = bpy.ops.export_scene.gltf(
+                    filepath=path, export_format='GLB', use_active_scene=True,
+                    use_renderable=True, export_cameras=True, export_lights=True,
+                    export_apply=True, export_materials='EXPORT', export_image_format='AUTO',
+                    export_animations=animation, export_frame_range=True,
+                    export_force_sampling=True, export_frame_step=1,
+                    export_current_frame=not animation, export_nla_strips=False,
+                    export_extras=False, will_save_settings=False)
+        except Exception as e:  # the exporter's own errors arrive as RuntimeError
+            raise RuntimeError("the glTF export failed: %s" % str(e).strip()) from None
+    if 'FINISHED' not in result or not os.path.isfile(path):
+        raise RuntimeError("the glTF export wrote nothing (%s)" % ", ".join(sorted(result)))
+    return [l for l in out.getvalue().splitlines() if commands.is_warning(l)]
+
+
+def unexported_warnings(scene):
+    """What the glTF exporter leaves out of SCENE without a word, named here instead."""
+    warnings = []
+    world = scene.world
+    if world is not None:
+        colour = None
+        if world.use_nodes and world.node_tree is not None:
+            background = world.node_tree.nodes.get("Background")
+            if background is not None:
+                if background.inputs["Color"].is_linked:
+                    warnings.append("the world's node setup is not exported: PRT lights the "
+                                    "scene with its own grey world (0.05)")
+                else:
+                    c = background.inputs["Color"].default_value
+                    s = background.inputs["Strength"].default_value
+                    colour = (c[0] * s, c[1] * s, c[2] * s)
+        else:
+            colour = tuple(world.color)
+        if colour is not None and max(abs(v - 0.05) for v in colour) > 0.002:
+            warnings.append("the world colour (%.3g, %.3g, %.3g) is not exported: PRT lights "
+                            "the scene with its own grey world (0.05)" % colour)
+    for o in scene.objects:
+        if o.hide_render:
+            continue
+        if o.type == 'VOLUME' or any(m.type == 'PARTICLE_SYSTEM' for m in getattr(o, "modifiers", [])):
+            warnings.append("object '%s': volumes, hair and particles are not exported" % o.name)
+        elif o.type in ('CURVE', 'FONT', 'SURFACE', 'META'):
+            pass  # the exporter turns these into meshes
+        elif o.type == 'MESH':
+            for slot in o.material_slots:
+                m = slot.material
+                if m is not None and m.use_nodes and m.node_tree is not None and any(
+                        n.type in ('VOLUME_PRINCIPLED', 'VOLUME_ABSORPTION', 'VOLUME_SCATTER')
+                        for n in m.node_tree.nodes):
+                    warnings.append("material '%s': its volume shader is not exported" % m.name)
+    if scene.camera is None:
+        warnings.append("the scene has no camera: PRT frames the scene with a camera of its own")
+    return warnings
