@@ -1,0 +1,127 @@
+#!/usr/bin/env python3
+"""The Blender add-on, tested in Blender headless (label blender):
+
+    addon_test.py --root REPO --prt PRT --case CASE --out DIR [--blender blender]
+
+Builds the add-on's zip with scripts/package-blender-addon.sh, then runs
+tests/blender/addon_cases.py inside `blender -b --factory-startup` with a fresh
+BLENDER_USER_SCRIPTS (the zip is installed there, not in the user's Blender) and a TMPDIR of
+its own, so that it can check afterwards that the engine left no temporary folder behind and
+no process that names it (prt runs on the scene exported there). Exits 77 (CTest's
+SKIP_RETURN_CODE), saying why, when Blender or its Python's NumPy is missing: Blender is a tool
+for these tests, never a dependency of prt.
+"""
+import argparse
+import os
+import shutil
+import subprocess
+import sys
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+
+
+def processes_naming(text):
+    """The processes whose command line contains TEXT (pid, command line)."""
+    found = []
+    for pid in os.listdir("/proc"):
+        if not pid.isdigit() or int(pid) == os.getpid():
+            continue
+        try:
+            with open("/proc/%s/cmdline" % pid, "rb") as f:
+                line = f.read().replace(b"\0", b" ").decode("utf-8", "replace")
+        except OSError:
+            continue
+        if text in line and "addon_test.py" not in line:
+            found.append((int(pid), line.strip()))
+    return found
+
+
+def main():
+    p = argparse.ArgumentParser()
+    p.add_argument("--root", required=True)
+    p.add_argument("--prt", required=True)
+    p.add_argument("--case", required=True)
+    p.add_argument("--out", required=True)
+    p.add_argument("--blender", default="blender")
+    a = p.parse_args()
+    blender = shutil.which(a.blender)
+    if blender is None:
+        print("SKIP: Blender is not installed (apt-get install blender python3-numpy)")
+        return 77
+    # Blender's Python finds its modules (NumPy) by the python3 first on PATH: Debian's, beside
+    # Blender, not one of a Python version manager's that runs this script.
+    base_env = dict(os.environ, PATH=os.path.dirname(blender) + os.pathsep +
+                    os.environ.get("PATH", ""))
+    check = subprocess.run([blender, "-b", "--factory-startup", "--python-expr",
+                            "import numpy; print('NUMPY_OK')"], capture_output=True, text=True,
+                           timeout=120, env=base_env)
+    if "NUMPY_OK" not in check.stdout:
+        print("SKIP: Blender's Python has no NumPy (apt-get install python3-numpy)")
+        return 77
+
+    shutil.rmtree(a.out, ignore_errors=True)
+    user_scripts = os.path.join(a.out, "user-scripts")
+    tmp = os.path.join(a.out, "tmp")
+    results = os.path.join(a.out, "results")
+    for d in (user_scripts, tmp, results):
+        os.makedirs(d)
+    zip_path = os.path.join(a.out, "prt_render.zip")
+    subprocess.run(["sh", os.path.join(a.root, "scripts", "package-blender-addon.sh"), zip_path],
+                   check=True)
+
+    prt, expect = os.path.abspath(a.prt), ""
+    env = dict(base_env, BLENDER_USER_SCRIPTS=user_scripts, TMPDIR=tmp)
+    env.pop("PRT_BLENDER_TEST_BREAK_AFTER_POLLS", None)
+    if a.case == "missing-prt":
+        prt = os.path.join(a.out, "no-such-folder", "prt")
+        expect = "does not exist or cannot be run"
+    elif a.case == "failed-prt":
+        prt = os.path.join(a.out, "failing-prt")
+        with open(prt, "w") as f:
+            f.write("#!/bin/sh\necho 'scene.glb:1:1: error: this prt fails on purpose' >&2\n"
+                    "exit 2\n")
+        os.chmod(prt, 0o755)
+        expect = "this prt fails on purpose"
+    elif a.case == "cancel":
+        env["PRT_BLENDER_TEST_BREAK_AFTER_POLLS"] = "4"
+
+    cmd = ["nice", "-n", "10", blender, "-b", "--factory-startup", "--python-exit-code", "3",
+           "--python", os.path.join(HERE, "addon_cases.py"), "--", "--case", a.case,
+           "--zip", zip_path, "--prt", prt, "--out", results, "--expect", expect]
+    started = time.monotonic()
+    run = subprocess.run(cmd, env=env, capture_output=True, text=True, timeout=600)
+    seconds = time.monotonic() - started
+    output = run.stdout + run.stderr
+    print(output)
+    print("blender ran %.1f s, exit code %d" % (seconds, run.returncode))
+    if "Traceback" in output:
+        print("FAIL: a Python traceback in Blender's output")
+        return 1
+    if run.returncode != 0 or "\nPASS " not in "\n" + run.stdout:
+        print("FAIL: the case did not pass")
+        return 1
+    # Nothing left behind: no process running on what the engine exported, no temporary folder.
+    deadline = time.monotonic() + 5
+    while processes_naming(tmp) and time.monotonic() < deadline:
+        time.sleep(0.1)
+    left = processes_naming(tmp)
+    if left:
+        print("FAIL: processes left behind: %s" % left)
+        for pid, _ in left:
+            try:
+                os.kill(pid, 9)
+            except OSError:
+                pass
+        return 1
+    # (Blender's own blender_* folder stays there: the case ends with os._exit.)
+    leftovers = [n for n in os.listdir(tmp) if n.startswith("prt-blender-")]
+    if leftovers:
+        print("FAIL: temporary files left behind in %s: %s" % (tmp, leftovers))
+        return 1
+    print("pass: %s" % a.case)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
