@@ -174,6 +174,38 @@ def case_still(a):
                                          int((step > 0).sum()), step.size))
 
 
+def case_interactive(a):
+    """F12 in Blender's window (under Xvfb): the render runs on a job thread, the export is
+    handed to the main thread; the result must be prt's pixels as in the foreground case."""
+    install(a.zip)
+    scene, _ = make_scene(64, 48, 8, a.prt)
+    bpy.context.preferences.view.render_display_type = 'NONE'
+    state = {"finished": False, "started": time.monotonic()}
+    bpy.app.handlers.render_complete.append(lambda *_: state.update(finished=True))
+    bpy.app.handlers.render_cancel.append(lambda *_: fail("the render was cancelled"))
+
+    def step():
+        if "invoked" not in state:
+            state["invoked"] = bpy.ops.render.render('INVOKE_DEFAULT')
+            if 'RUNNING_MODAL' not in state["invoked"]:
+                fail("F12 did not start a render job: %s" % state["invoked"])
+            return 0.2
+        if not state["finished"]:
+            if time.monotonic() - state["started"] > 60:
+                fail("the render job did not finish within 60 s")
+            return 0.2
+        exr = os.path.join(a.out, "engine.exr")
+        save_render(exr, 'OPEN_EXR')
+        prt_render_of(scene, a.out, [os.path.join(a.out, "prt.pfm")])
+        engine_linear, _ = load_pixels(exr)
+        if not np.array_equal(engine_linear, read_pfm(os.path.join(a.out, "prt.pfm"))):
+            fail("the render result of F12 differs from prt's pixels")
+        done("F12 on a job thread in %.2f s: pixels bit-identical to prt's"
+             % (time.monotonic() - state["started"]))
+
+    bpy.app.timers.register(step, first_interval=0.5)
+
+
 def case_animation(a):
     install(a.zip)
     scene, cube = make_scene(64, 48, 4, a.prt)
@@ -251,7 +283,7 @@ def main():
     a = p.parse_args(argv)
     os.makedirs(a.out, exist_ok=True)
     cases = {"install": case_install, "still": case_still, "animation": case_animation,
-             "cancel": case_cancel}
+             "cancel": case_cancel, "interactive": case_interactive}
     try:
         if a.case in ("missing-prt", "failed-prt"):
             case_error(a, a.expect)

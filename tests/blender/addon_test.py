@@ -86,7 +86,16 @@ def main():
     elif a.case == "cancel":
         env["PRT_BLENDER_TEST_BREAK_AFTER_POLLS"] = "4"
 
-    cmd = ["nice", "-n", "10", blender, "-b", "--factory-startup", "--python-exit-code", "3",
+    window = []
+    if a.case == "interactive":  # Blender with its window, on a virtual X server
+        xvfb = shutil.which("xvfb-run")
+        if xvfb is None:
+            print("SKIP: no xvfb-run (apt-get install xvfb) to run Blender with a window")
+            return 77
+        window = [xvfb, "-a", "-s", "-screen 0 1024x768x24"]
+    background = [] if window else ["-b"]
+    cmd = ["nice", "-n", "10"] + window + [blender] + background + [
+           "--factory-startup", "--python-exit-code", "3",
            "--python", os.path.join(HERE, "addon_cases.py"), "--", "--case", a.case,
            "--zip", zip_path, "--prt", prt, "--out", results, "--expect", expect]
     started = time.monotonic()

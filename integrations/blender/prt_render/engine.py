@@ -29,6 +29,10 @@ class RenderFailed(Exception):
     """A failure told to the user in Blender's info area; never a traceback."""
 
 
+class Stopped(Exception):
+    """Esc before prt started: nothing to tell."""
+
+
 def _resolve_executable(path, what):
     path = bpy.path.abspath(path.strip()) if path.strip() else ""
     if not path:
@@ -247,6 +251,8 @@ class PRTRenderEngine(bpy.types.RenderEngine):
         except RenderFailed as e:
             _Sequence.close()
             self.report({'ERROR'}, "PRT: %s" % e)
+        except Stopped:
+            _Sequence.close()
 
     # --- a still (or one frame, rendered on its own) -----------------------------------------
 
@@ -254,10 +260,14 @@ class PRTRenderEngine(bpy.types.RenderEngine):
         for w in export.unexported_warnings(scene):
             self.report({'WARNING'}, "PRT: " + w)
         self.update_stats("", "PRT: exporting the scene (glTF)")
+        path = os.path.join(folder, "scene.glb")
         try:
-            warnings = export.export_gltf(scene, os.path.join(folder, "scene.glb"), animation)
+            warnings = export.on_main_thread(
+                lambda: export.export_gltf(scene, path, animation), self._break)
         except RuntimeError as e:
             raise RenderFailed(str(e)) from None
+        if warnings is None:  # Esc during the export
+            raise Stopped()
         for w in warnings:
             self.report({'WARNING'}, "PRT: glTF export: " + w.split("|", 1)[-1].strip())
 

@@ -2,6 +2,8 @@
 import contextlib
 import io
 import os
+import threading
+import time
 
 import bpy
 
@@ -97,3 +99,45 @@ def unexported_warnings(scene):
     if scene.camera is None:
         warnings.append("the scene has no camera: PRT frames the scene with a camera of its own")
     return warnings
+
+
+class NotOnMainThread(RuntimeError):
+    pass
+
+
+def on_main_thread(function, should_stop, timeout=300.0):
+    """FUNCTION() run on Blender's main thread, its result returned (its exception raised).
+
+    F12 in Blender's window renders on a job thread, where an operator (the glTF exporter)
+    must not run: it evaluates and changes the scene, which the main thread owns (Blender
+    3.4 crashes in the exporter's first import). From there the call is handed to the main
+    thread with a timer, while the render thread waits; a render in the foreground (blender
+    -b, bpy.ops.render.render() from a script) is on the main thread already and calls it
+    directly. SHOULD_STOP() (Esc) ends the wait; the main thread then finishes the call
+    alone. Raises NotOnMainThread when the main thread did not take the call within TIMEOUT
+    seconds."""
+    if threading.current_thread() is threading.main_thread():
+        return function()
+    outcome = {}
+    finished = threading.Event()
+
+    def call():
+        outcome["started"] = True
+        try:
+            outcome["value"] = function()
+        except BaseException as e:  # handed to the waiting render thread
+            outcome["error"] = e
+        finished.set()
+        return None  # once
+
+    bpy.app.timers.register(call, first_interval=0.0)
+    deadline = time.monotonic() + timeout
+    while not finished.wait(0.1):
+        if should_stop():
+            return None
+        if time.monotonic() > deadline and "started" not in outcome:
+            raise NotOnMainThread("Blender's main thread did not take the export within %d s "
+                                  "(is Render > Lock Interface on?)" % timeout)
+    if "error" in outcome:
+        raise outcome["error"]
+    return outcome.get("value")
