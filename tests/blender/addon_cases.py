@@ -137,6 +137,33 @@ def case_install(a):
     done("installed into %s, registered, disabled and enabled again" % installed)
 
 
+def case_elsewhere(a):
+    """MPI hosts or a Slurm cluster (the driver brings up the hosts and passes their
+    settings): the same pixels as `prt render` on this machine, bit for bit."""
+    install(a.zip)
+    scene, _ = make_scene(64, 48, 8, a.prt)
+    s = scene.prt
+    if a.case == "mpi":
+        s.where, s.hostfile, s.workers, s.mpirun = 'MPI', a.hostfile, 2, a.mpirun
+    else:
+        s.where, s.submit_folder, s.nodes, s.sbatch_script = 'SLURM', a.out, 2, a.sbatch_script
+    started = time.monotonic()
+    try:
+        bpy.ops.render.render()
+    except RuntimeError as e:
+        fail("the render failed: %s" % e)
+    seconds = time.monotonic() - started
+    exr = os.path.join(a.out, "engine.exr")
+    save_render(exr, 'OPEN_EXR')
+    s.where = 'LOCAL'
+    argv = prt_render_of(scene, a.out, [os.path.join(a.out, "prt.pfm")])
+    engine_linear, _ = load_pixels(exr)
+    if not np.array_equal(engine_linear, read_pfm(os.path.join(a.out, "prt.pfm"))):
+        fail("the render result differs from prt's pixels")
+    done("%s, 64x48, 8 spp in %.2f s: pixels bit-identical to `%s`" % (a.case, seconds,
+                                                                      " ".join(argv)))
+
+
 def case_still(a):
     install(a.zip)
     scene, _ = make_scene(64, 48, 8, a.prt)
@@ -280,10 +307,14 @@ def main():
     p.add_argument("--prt", required=True)
     p.add_argument("--out", required=True)
     p.add_argument("--expect", default="")
+    p.add_argument("--hostfile", default="")
+    p.add_argument("--mpirun", default="")
+    p.add_argument("--sbatch-script", default="")
     a = p.parse_args(argv)
     os.makedirs(a.out, exist_ok=True)
     cases = {"install": case_install, "still": case_still, "animation": case_animation,
-             "cancel": case_cancel, "interactive": case_interactive}
+             "cancel": case_cancel, "interactive": case_interactive, "mpi": case_elsewhere,
+             "slurm": case_elsewhere}
     try:
         if a.case in ("missing-prt", "failed-prt"):
             case_error(a, a.expect)

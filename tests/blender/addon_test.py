@@ -45,6 +45,7 @@ def main():
     p.add_argument("--out", required=True)
     p.add_argument("--blender", default="blender")
     a = p.parse_args()
+    a.root = os.path.abspath(a.root)
     blender = shutil.which(a.blender)
     if blender is None:
         print("SKIP: Blender is not installed (apt-get install blender python3-numpy)")
@@ -85,7 +86,51 @@ def main():
         expect = "this prt fails on purpose"
     elif a.case == "cancel":
         env["PRT_BLENDER_TEST_BREAK_AFTER_POLLS"] = "4"
+    extra = []
+    if a.case == "mpi":
+        if shutil.which("mpirun") is None:
+            print("SKIP: no mpirun (Open MPI)")
+            return 77
+        hostfile = os.path.join(a.out, "hostfile")
+        with open(hostfile, "w") as f:
+            f.write("localhost slots=3\n")  # rank 0, the master, and two workers here
+        extra = ["--hostfile", hostfile, "--mpirun",
+                 os.path.join(a.root, "scripts", "prt-mpirun")]
+        env.update(OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
+                   OMPI_MCA_btl="self,tcp", OMPI_MCA_btl_tcp_if_include="lo",
+                   OMPI_MCA_oob_tcp_if_include="lo")
+    cluster = None
+    if a.case == "slurm":
+        if os.getuid() != 0:
+            print("SKIP: a Slurm cluster of network namespaces needs root")
+            return 77
+        for tool in ("ip", "unshare", "nsenter", "slurmctld", "slurmd", "munged", "sbatch",
+                     "mpirun"):
+            if shutil.which(tool) is None:
+                print("SKIP: no %s (scripts/install-deps.sh installs Slurm)" % tool)
+                return 77
+        cluster = os.path.join(a.out, "cluster")
+        script = os.path.join(a.root, "scripts", "slurm-cluster.sh")
+        up = subprocess.run(["bash", script, "up", "3", cluster], capture_output=True, text=True)
+        if up.returncode != 0:
+            print(up.stdout + up.stderr)
+            print("FAIL: the Slurm cluster did not come up")
+            return 1
+        env.update(SLURM_CONF=os.path.join(cluster, "slurm.conf"),
+                   OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
+                   OMPI_MCA_btl="tcp,self", OMPI_MCA_btl_tcp_if_include="10.232.0.0/24",
+                   OMPI_MCA_oob_tcp_if_include="10.232.0.0/24",
+                   PRT_MPIRUN=os.path.join(a.root, "scripts", "prt-mpirun"))
+        extra = ["--sbatch-script", os.path.join(a.root, "examples", "slurm", "render.sbatch")]
+    try:
+        return run_case(a, blender, env, zip_path, prt, expect, extra, tmp, results)
+    finally:
+        if cluster is not None:
+            subprocess.run(["bash", os.path.join(a.root, "scripts", "slurm-cluster.sh"), "down",
+                            cluster], capture_output=True)
 
+
+def run_case(a, blender, env, zip_path, prt, expect, extra, tmp, results):
     window = []
     if a.case == "interactive":  # Blender with its window, on a virtual X server
         xvfb = shutil.which("xvfb-run")
@@ -97,7 +142,7 @@ def main():
     cmd = ["nice", "-n", "10"] + window + [blender] + background + [
            "--factory-startup", "--python-exit-code", "3",
            "--python", os.path.join(HERE, "addon_cases.py"), "--", "--case", a.case,
-           "--zip", zip_path, "--prt", prt, "--out", results, "--expect", expect]
+           "--zip", zip_path, "--prt", prt, "--out", results, "--expect", expect] + extra
     started = time.monotonic()
     run = subprocess.run(cmd, env=env, capture_output=True, text=True, timeout=600)
     seconds = time.monotonic() - started
@@ -111,10 +156,11 @@ def main():
         print("FAIL: the case did not pass")
         return 1
     # Nothing left behind: no process running on what the engine exported, no temporary folder.
+    # (A Slurm render's folder is made in its submit folder, the results.)
     deadline = time.monotonic() + 5
-    while processes_naming(tmp) and time.monotonic() < deadline:
+    while processes_naming(tmp) + processes_naming(results) and time.monotonic() < deadline:
         time.sleep(0.1)
-    left = processes_naming(tmp)
+    left = processes_naming(tmp) + processes_naming(results)
     if left:
         print("FAIL: processes left behind: %s" % left)
         for pid, _ in left:
@@ -124,7 +170,7 @@ def main():
                 pass
         return 1
     # (Blender's own blender_* folder stays there: the case ends with os._exit.)
-    leftovers = [n for n in os.listdir(tmp) if n.startswith("prt-blender-")]
+    leftovers = [n for d in (tmp, results) for n in os.listdir(d) if n.startswith("prt-blender-")]
     if leftovers:
         print("FAIL: temporary files left behind in %s: %s" % (tmp, leftovers))
         return 1

@@ -39,7 +39,7 @@ def _resolve_executable(path, what):
         raise RenderFailed("no %s executable is set (Render properties > PRT)" % what)
     if os.sep in path:
         if os.path.isfile(path) and os.access(path, os.X_OK):
-            return path
+            return os.path.abspath(path)  # prt runs in the render's folder
         raise RenderFailed("the %s executable '%s' does not exist or cannot be run: set its path "
                            "in Render properties > PRT" % (what, path))
     found = shutil.which(path)
@@ -67,7 +67,7 @@ def _sbatch_script(settings, prt):
 
 
 def _resolve_file(path, what):
-    path = bpy.path.abspath(path)
+    path = os.path.abspath(bpy.path.abspath(path))
     if not os.path.isfile(path):
         raise RenderFailed("%s '%s' does not exist" % (what, path))
     return path
@@ -96,7 +96,7 @@ def make_job(scene, folder, output, frames):
         job.nodes = s.nodes
         job.partition = s.partition.strip()
     elif s.where == commands.JOINABLE:
-        job.accept_file = bpy.path.abspath(s.accept_file)
+        job.accept_file = os.path.abspath(bpy.path.abspath(s.accept_file))
     try:
         commands.validate(job)
     except commands.JobError as e:
