@@ -80,8 +80,8 @@ def main():
     elif a.case == "failed-prt":
         prt = os.path.join(a.out, "failing-prt")
         with open(prt, "w") as f:
-            f.write("#!/bin/sh\necho 'scene.glb:1:1: error: this prt fails on purpose' >&2\n"
-                    "exit 2\n")
+            f.write("#!/bin/sh\necho 'warning: model file \"scene.glb\": a warning on purpose' >&2\n"
+                    "echo 'scene.glb:1:1: error: this prt fails on purpose' >&2\nexit 2\n")
         os.chmod(prt, 0o755)
         expect = "this prt fails on purpose"
     elif a.case == "cancel":
@@ -154,6 +154,13 @@ def run_case(a, blender, env, zip_path, prt, expect, extra, tmp, results):
         return 1
     if run.returncode != 0 or "\nPASS " not in "\n" + run.stdout:
         print("FAIL: the case did not pass")
+        return 1
+    # What the exporter leaves out, and prt's warnings, reach Blender's info area.
+    shown = {"still": "Warning: PRT: the world colour (0.2, 0.2, 0.2) is not exported",
+             "failed-prt": 'Warning: prt: warning: model file "scene.glb": a warning on '
+                           'purpose'}.get(a.case)
+    if shown is not None and shown not in output:
+        print("FAIL: Blender's output lacks the warning %r" % shown)
         return 1
     # Nothing left behind: no process running on what the engine exported, no temporary folder.
     # (A Slurm render's folder is made in its submit folder, the results.)

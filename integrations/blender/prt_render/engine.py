@@ -288,8 +288,8 @@ class PRTRenderEngine(bpy.types.RenderEngine):
                         return
                     run.poll(self, result)
                     time.sleep(POLL_SECONDS)
+                code = run.returncode()  # (its output read to the end)
                 run.poll(self, None)
-                code = run.returncode()
                 if code != 0:
                     raise RenderFailed(run.failure(code))
                 _load_final(result, job.output, width, height)
@@ -329,8 +329,8 @@ class PRTRenderEngine(bpy.types.RenderEngine):
                     _Sequence.close()
                     return
                 if not run.running():
-                    run.poll(self, None)
                     code = run.returncode()
+                    run.poll(self, None)
                     if not os.path.exists(path):
                         raise RenderFailed(run.failure(code) if code != 0 else
                                            "prt ended without writing frame %d" % frame)
