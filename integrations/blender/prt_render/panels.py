@@ -71,7 +71,7 @@ def _compatible_panels():
                  "RENDER_PT_encoding_audio", "RENDER_PT_stamp", "RENDER_PT_post_processing",
                  "RENDER_PT_output_views", "RENDER_PT_format_presets", "DATA_PT_lens",
                  "DATA_PT_camera", "DATA_PT_camera_display", "DATA_PT_light", "DATA_PT_context_light",
-                 "DATA_PT_context_camera", "MATERIAL_PT_preview", "EEVEE_MATERIAL_PT_surface",
+                 "DATA_PT_EEVEE_light", "DATA_PT_context_camera", "EEVEE_MATERIAL_PT_surface",
                  "EEVEE_MATERIAL_PT_context_material"):
         panel = getattr(bpy.types, name, None)
         if panel is not None and hasattr(panel, "COMPAT_ENGINES"):
