@@ -13,6 +13,8 @@ import argparse
 import os
 import subprocess
 import sys
+import tempfile
+import threading
 import time
 
 import numpy as np
@@ -143,8 +145,28 @@ def case_elsewhere(a):
     install(a.zip)
     scene, _ = make_scene(64, 48, 8, a.prt)
     s = scene.prt
+    joiner = {}
     if a.case == "mpi":
         s.where, s.hostfile, s.workers, s.mpirun = 'MPI', a.hostfile, 2, a.mpirun
+    elif a.case == "joinable":
+        # One local worker; another machine (here a second prt) joins with the invitation the
+        # render writes in its folder, as the info area tells a user to.
+        s.where, s.workers = 'JOINABLE', 1
+        scene.prt.samples = 4096  # about 2 s: time for the joiner to arrive
+
+        def join():
+            import glob
+            deadline = time.monotonic() + 30
+            while time.monotonic() < deadline:
+                found = glob.glob(os.path.join(tempfile.gettempdir(), "prt-blender-*",
+                                               "invitation"))
+                if found:
+                    joiner["run"] = subprocess.run([a.prt, "join", found[0]],
+                                                   capture_output=True, text=True, timeout=60)
+                    return
+                time.sleep(0.02)
+        thread = threading.Thread(target=join, daemon=True)
+        thread.start()
     else:
         s.where, s.submit_folder, s.nodes, s.sbatch_script = 'SLURM', a.out, 2, a.sbatch_script
     started = time.monotonic()
@@ -153,6 +175,12 @@ def case_elsewhere(a):
     except RuntimeError as e:
         fail("the render failed: %s" % e)
     seconds = time.monotonic() - started
+    if a.case == "joinable":
+        thread.join(60)
+        run = joiner.get("run")
+        if run is None or run.returncode != 0:
+            fail("the joining prt did not end well: %s" % (run and run.stderr))
+        print("the joiner said: " + (run.stdout + run.stderr).strip().replace("\n", " | "))
     exr = os.path.join(a.out, "engine.exr")
     save_render(exr, 'OPEN_EXR')
     s.where = 'LOCAL'
@@ -160,7 +188,7 @@ def case_elsewhere(a):
     engine_linear, _ = load_pixels(exr)
     if not np.array_equal(engine_linear, read_pfm(os.path.join(a.out, "prt.pfm"))):
         fail("the render result differs from prt's pixels")
-    done("%s, 64x48, 8 spp in %.2f s: pixels bit-identical to `%s`" % (a.case, seconds,
+    done("%s, 64x48, %d spp in %.2f s: pixels bit-identical to `%s`" % (a.case, s.samples, seconds,
                                                                       " ".join(argv)))
 
 
@@ -319,7 +347,7 @@ def main():
     os.makedirs(a.out, exist_ok=True)
     cases = {"install": case_install, "still": case_still, "animation": case_animation,
              "cancel": case_cancel, "interactive": case_interactive, "mpi": case_elsewhere,
-             "slurm": case_elsewhere}
+             "slurm": case_elsewhere, "joinable": case_elsewhere}
     try:
         if a.case in ("missing-prt", "failed-prt"):
             case_error(a, a.expect)

@@ -228,7 +228,8 @@ def status_text(status):
     workers = status.get("workers") or []
     if workers:
         working = sum(1 for w in workers if w.get("state") == "working")
-        parts.append("%d workers (%d working)" % (len(workers), working))
+        parts.append("%d worker%s (%d working)" % (len(workers), "s" if len(workers) > 1 else "",
+                                                   working))
     return ", ".join(parts)
 
 

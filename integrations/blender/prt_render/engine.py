@@ -96,7 +96,8 @@ def make_job(scene, folder, output, frames):
         job.nodes = s.nodes
         job.partition = s.partition.strip()
     elif s.where == commands.JOINABLE:
-        job.accept_file = os.path.abspath(bpy.path.abspath(s.accept_file))
+        job.accept_file = os.path.abspath(bpy.path.abspath(s.accept_file)) \
+            if s.accept_file.strip() else os.path.join(folder, "invitation")
     try:
         commands.validate(job)
     except commands.JobError as e:
@@ -333,7 +334,8 @@ class PRTRenderEngine(bpy.types.RenderEngine):
                     run.poll(self, None)
                     if not os.path.exists(path):
                         raise RenderFailed(run.failure(code) if code != 0 else
-                                           "prt ended without writing frame %d" % frame)
+                                           "prt ended without writing frame %d:\n%s"
+                                           % (frame, run.proc.tail()))
                     break
                 run.poll(self, result)
                 time.sleep(POLL_SECONDS)

@@ -71,9 +71,10 @@ class PRTRenderSettings(bpy.types.PropertyGroup):
     partition: bpy.props.StringProperty(name="Partition", default="",
                                         description="Empty: the cluster's default")
     accept_file: bpy.props.StringProperty(
-        name="Invitation file", default="//prt-invitation", subtype='FILE_PATH',
+        name="Invitation file", default="", subtype='FILE_PATH',
         description="prt render --accept-workers FILE: copy it to a machine and run `prt join "
-                    "FILE` there to add it")
+                    "FILE` there to add it. Empty: in the render's temporary folder (its path "
+                    "is shown in the info area)")
 
 
 def register():
