@@ -314,7 +314,17 @@ def case_cancel(a):
     # Uninterrupted, 160x120 at 4,096 samples takes minutes on two cores.
     if seconds > 30:
         fail("the cancelled render took %.1f s" % seconds)
-    done("stopped after %.2f s" % seconds)
+    # An animation's one job, stopped at its first frame (and, since the forced break does not
+    # stop Blender's loop as Esc does, again at the second, which starts a job of its own).
+    scene.frame_start, scene.frame_end = 1, 2
+    scene.render.filepath = os.path.join(a.out, "frame_")
+    started = time.monotonic()
+    bpy.ops.render.render(animation=True)
+    animation_seconds = time.monotonic() - started
+    if animation_seconds > 30:
+        fail("the cancelled animation took %.1f s" % animation_seconds)
+    done("a still stopped after %.2f s, an animation's job after %.2f s"
+         % (seconds, animation_seconds))
 
 
 def case_error(a, expected):
