@@ -105,11 +105,15 @@ def load_pixels(path):
 
 
 def read_pfm(path):
-    from prt_render import pfm
+    """prt's PFM as linear RGB rows, bottom first (Blender's order), read here rather than
+    by the add-on's reader, which is under test."""
     with open(path, "rb") as f:
-        header = f.read(64).split(b"\n")
-    width, height = (int(v) for v in header[1].split())
-    return pfm.read_rgba(path, width, height).reshape(height, width, 4)[:, :, :3]
+        data = f.read()
+    magic, size, scale, pixels = data.split(b"\n", 3)
+    width, height = (int(v) for v in size.split())
+    if magic != b"PF" or float(scale) >= 0:
+        fail("%s: not a little-endian colour PFM" % path)
+    return np.frombuffer(pixels, dtype="<f4", count=width * height * 3).reshape(height, width, 3)
 
 
 def prt_render_of(scene, out_dir, outputs):
