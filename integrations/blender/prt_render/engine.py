@@ -21,6 +21,9 @@ from . import pfm
 from . import process
 
 POLL_SECONDS = 0.25
+# The image so far is fetched at most this often: prt encodes a PNG for each request, on
+# cores that render otherwise (a 1920x1080 PNG costs tens of milliseconds).
+IMAGE_SECONDS = 1.0
 # For the tests: the engine's break check becomes true after this many polls, as Esc would.
 TEST_BREAK_ENV = "PRT_BLENDER_TEST_BREAK_AFTER_POLLS"
 
@@ -137,6 +140,7 @@ class Run:
         self.page = None
         self.version = None
         self.live_png = os.path.join(folder, "live.png")
+        self.image_at = 0.0
         argv = commands.command(job)
         env = commands.environment(job, os.environ)
         try:
@@ -165,9 +169,12 @@ class Run:
             fraction = status.get("done_fraction") or 0.0
             engine.update_progress(min(1.0, max(0.0, fraction)))
             engine.update_stats("", commands.status_text(status))
+            now = time.monotonic()
             if result is not None and status.get("version") != self.version and \
-                    status.get("pixels_done", 0) > 0 and self.page.image(self.live_png):
+                    status.get("pixels_done", 0) > 0 and now - self.image_at >= IMAGE_SECONDS \
+                    and self.page.image(self.live_png):
                 self.version = status.get("version")
+                self.image_at = now
                 try:
                     result.layers[0].load_from_file(self.live_png)
                     engine.update_result(result)
